@@ -1,0 +1,205 @@
+/* app.c: the steps of a render from the command line to the image file, shared by every part. */
+#include "app.h"
+
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <unistd.h>
+
+#include "image.h"
+#include "outfile.h"
+#include "stop.h"
+
+enum { EXIT_USAGE = 2 };
+
+/* Tells the user, once, which parts of the scene this part of the course does not use. */
+static void note_ignored(const Program *program, const Scene *scene)
+{
+    unsigned ignored = scene_features(scene) & ~program->features;
+    if (ignored == 0)
+        return;
+    char list[512] = "";
+    for (int k = 0; k < FEATURE_COUNT; k++)
+        if (ignored & (1u << k)) {
+            ignored &= ~(1u << k);
+            size_t used = strlen(list);
+            snprintf(list + used, sizeof list - used, "%s%s",
+                     used == 0      ? ""
+                     : ignored == 0 ? " and "
+                                    : ", ",
+                     scene_feature_name(1u << k));
+        }
+    fprintf(stderr,
+            "raytra: note: part %s does not use this scene's %s (read and checked, "
+            "but ignored)\n",
+            program->cli.part, list);
+}
+
+/* Multiplies the camera's pixel counts by opts->scale; false (reported) when too large. */
+static bool apply_scale(Scene *scene, const Options *opts)
+{
+    CameraSpec *c = &scene->camera;
+    if (opts->scale != 1.0) {
+        double nx = fmax(1.0, round(c->nx * opts->scale));
+        double ny = fmax(1.0, round(c->ny * opts->scale));
+        if (!image_size_ok(nx > IMAGE_MAX_SIDE ? IMAGE_MAX_SIDE + 1L : (long)nx,
+                           ny > IMAGE_MAX_SIDE ? IMAGE_MAX_SIDE + 1L : (long)ny)) {
+            fprintf(stderr, "raytra: --scale %g makes the image %.0f x %.0f pixels: too large\n",
+                    opts->scale, nx, ny);
+            return false;
+        }
+        c->nx = (int)nx;
+        c->ny = (int)ny;
+    }
+    return true;
+}
+
+/* Writes img to path through a temporary file, unless a stop was requested meanwhile. */
+static bool write_image(const Image *img, const char *path, const Options *opts)
+{
+    Error err;
+    PngEncoding enc = opts->linear ? PNG_ENCODING_LINEAR : PNG_ENCODING_SRGB;
+    if (!image_write(img, path, enc, &err)) {
+        if (stop_requested())
+            return false;
+        fprintf(stderr, "raytra: cannot write '%s': %s\n", path, err.text);
+        return false;
+    }
+    return true;
+}
+
+/* Prints "raytra: wrote out.png (640 x 480) in 1.2 s with 2 threads: 307200 rays, 256 k rays/s". */
+static void print_summary(const char *path, const Image *img, const Options *opts,
+                          const RenderResult *r)
+{
+    unsigned long long total = render_total_rays(&r->stats);
+    fprintf(stderr, "raytra: wrote %s (%d x %d) in %.2f s with %d thread%s: %llu rays", path,
+            img->width, img->height, r->seconds, opts->threads, opts->threads == 1 ? "" : "s",
+            total);
+    if (total != r->stats.rays[RAY_PRIMARY]) {
+        const char *sep = " (";
+        for (int k = 0; k < RAY_KIND_COUNT; k++)
+            if (r->stats.rays[k] > 0) {
+                fprintf(stderr, "%s%llu %s", sep, r->stats.rays[k],
+                        render_ray_kind_name((RayKind)k));
+                sep = ", ";
+            }
+        fputc(')', stderr);
+    }
+    if (r->seconds > 0)
+        fprintf(stderr, ", %.3g M rays/s", (double)total / r->seconds / 1e6);
+    fputc('\n', stderr);
+}
+
+/* Loads the scene and prints what it holds: raytra --check. */
+static bool check_scene(const Program *program, const Options *opts)
+{
+    Scene scene;
+    SceneLoadOptions load = {opts->convention, opts->convention_given, stderr};
+    if (!scene_load(&scene, opts->scene, &load))
+        return false;
+    const CameraSpec *c = &scene.camera;
+#define COUNT(n) (n), (n) == 1 ? "" : "s"
+    printf("%s: %d x %d pixels; %d sphere%s, %d plane%s, %d triangle%s (from %d mesh%s and "
+           "t lines), %d light%s%s, %d material%s; convention %s\n",
+           opts->scene, c->nx, c->ny, COUNT(scene.sphere_count), COUNT(scene.plane_count),
+           COUNT(scene.triangle_count), scene.mesh_count, scene.mesh_count == 1 ? "" : "es",
+           COUNT(scene.light_count), color_is_black(scene.ambient) ? "" : " and ambient light",
+           COUNT(scene.material_count), convention_name(scene.convention));
+#undef COUNT
+    note_ignored(program, &scene);
+    scene_free(&scene);
+    return true;
+}
+
+/* Renders the scene with the part's pixel function into img; false when stopped. */
+static bool render(const Program *program, void *ctx, const Options *opts, Image *img,
+                   RenderResult *result)
+{
+    RenderJob job = {
+        .pixel = program->pixel,
+        .ctx = ctx,
+        .threads = opts->threads,
+        .progress = !opts->quiet && isatty(STDERR_FILENO),
+    };
+    render_image(img, &job, result);
+    if (result->stopped)
+        return false;
+    if (result->nonfinite > 0)
+        fprintf(stderr,
+                "raytra: warning: %ld pixels came out NaN or infinite and were written black "
+                "(the first at column %d, row %d from the top): a bug, please report it\n",
+                result->nonfinite, result->first_nonfinite_x, result->first_nonfinite_y);
+    return true;
+}
+
+/* Runs a part's program: parse, load, check the output, render, write, summarise. */
+int app_main(const Program *program, int argc, char **argv)
+{
+    Options opts;
+    CliResult cli = cli_parse(&program->cli, argc, argv, &opts);
+    if (cli != CLI_RUN)
+        return cli == CLI_DONE ? EXIT_SUCCESS : EXIT_USAGE;
+
+    char *output = opts.output ? strdup(opts.output) : cli_default_output(opts.scene);
+    if (output == NULL) {
+        fprintf(stderr, "raytra: out of memory\n");
+        return EXIT_FAILURE;
+    }
+    int status = EXIT_FAILURE;
+    Error err;
+    Scene scene;
+    bool loaded = false;
+    void *ctx = NULL;
+    Image img = {0};
+    if (opts.check_only) {
+        status = check_scene(program, &opts) ? EXIT_SUCCESS : EXIT_FAILURE;
+        goto done;
+    }
+    if (image_format_for_path(output) == IMAGE_FORMAT_UNKNOWN) {
+        fprintf(stderr, "raytra: cannot write '%s': unknown image format (use .png or .pfm)\n",
+                output);
+        status = EXIT_USAGE;
+        goto done;
+    }
+    /* Find out now, not after a long render, that the image cannot be written. */
+    if (!outfile_check(output, &err)) {
+        fprintf(stderr, "raytra: cannot write '%s': %s\n", output, err.text);
+        goto done;
+    }
+    stop_install();
+    SceneLoadOptions load = {opts.convention, opts.convention_given, stderr};
+    loaded = scene_load(&scene, opts.scene, &load);
+    if (!loaded || !apply_scale(&scene, &opts))
+        goto done;
+    note_ignored(program, &scene);
+    if (program->setup != NULL && !program->setup(&scene, &ctx))
+        goto done;
+    if (!image_init(&img, scene.camera.nx, scene.camera.ny)) {
+        fprintf(stderr, "raytra: not enough memory for a %d x %d image\n", scene.camera.nx,
+                scene.camera.ny);
+        goto done;
+    }
+    RenderResult result;
+    if (render(program, ctx, &opts, &img, &result) && write_image(&img, output, &opts)) {
+        status = EXIT_SUCCESS;
+        if (!opts.quiet) {
+            print_summary(output, &img, &opts, &result);
+            if (program->report != NULL)
+                program->report(ctx, &result);
+        }
+    }
+done:
+    if (stop_requested()) {
+        fprintf(stderr, "raytra: interrupted; '%s' was not written\n", output);
+        status = 128 + stop_signal();
+    }
+    image_free(&img);
+    if (program->cleanup != NULL && ctx != NULL)
+        program->cleanup(ctx);
+    if (loaded)
+        scene_free(&scene);
+    free(output);
+    return status;
+}

@@ -1,0 +1,25 @@
+/* app.h: the program every part builds: command line, scene, render, image file, summary. */
+#ifndef RAYTRA_APP_H
+#define RAYTRA_APP_H
+
+#include <stdbool.h>
+
+#include "cli.h"
+#include "render.h"
+#include "scene.h"
+
+/* What a part plugs into the shared program. */
+typedef struct {
+    CliSpec cli;
+    unsigned features; /* FEATURE_ bits the part renders; the rest is reported as ignored */
+    /* Builds the state pixel reads from the loaded scene; false (reported) on failure. */
+    bool (*setup)(const Scene *scene, void **ctx);
+    PixelFn pixel;
+    /* Prints part-specific figures after the summary line; may be NULL. */
+    void (*report)(const void *ctx, const RenderResult *result);
+    void (*cleanup)(void *ctx);
+} Program;
+
+int app_main(const Program *program, int argc, char **argv);
+
+#endif

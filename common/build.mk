@@ -1,0 +1,60 @@
+# build.mk: compiler settings and rules shared by every Makefile of raytra.
+#
+# Variables a caller may set on the command line or in the environment:
+#   WERROR=1    treat warnings as errors (CI does)
+#   SANITIZE=1  build with AddressSanitizer and UndefinedBehaviorSanitizer,
+#               into build-sanitize/ so that normal objects stay untouched
+#   CC, OPT, CFLAGS, LDFLAGS   compiler, optimisation and extra flags
+
+TOP := $(abspath $(dir $(lastword $(MAKEFILE_LIST)))..)
+
+OPT ?= -O2 -g
+
+WARNINGS := -Wall -Wextra -Wpedantic -Wshadow -Wstrict-prototypes \
+            -Wmissing-prototypes
+ifeq ($(WERROR),1)
+WARNINGS += -Werror
+endif
+
+ifeq ($(SANITIZE),1)
+BUILD    := build-sanitize
+SANFLAGS := -fsanitize=address,undefined -fno-sanitize-recover=all \
+            -fno-omit-frame-pointer
+else
+BUILD    := build
+SANFLAGS :=
+endif
+
+# pkg-config is asked once, and only when a recipe needs the answer, so that
+# the deps step can install a missing pkg-config first (see tools/deps.sh).
+lazy = $(eval $1 := $$(shell $2))$($1)
+PNG_CFLAGS   = $(call lazy,PNG_CFLAGS,pkg-config --cflags libpng 2>/dev/null)
+PNG_LIBS     = $(call lazy,PNG_LIBS,pkg-config --libs libpng 2>/dev/null || echo -lpng -lz)
+CHECK_CFLAGS = $(call lazy,CHECK_CFLAGS,pkg-config --cflags check 2>/dev/null)
+CHECK_LIBS   = $(call lazy,CHECK_LIBS,pkg-config --libs check 2>/dev/null || echo -lcheck -lsubunit -lm)
+
+ALL_CPPFLAGS = -D_XOPEN_SOURCE=700 -MMD -MP $(INCLUDES) $(CPPFLAGS)
+ALL_CFLAGS   = -std=c11 $(OPT) $(WARNINGS) $(SANFLAGS) -pthread $(CFLAGS)
+ALL_LDFLAGS  = $(SANFLAGS) -pthread $(LDFLAGS)
+
+COMMON_DIR := $(TOP)/common
+COMMON_LIB := $(COMMON_DIR)/$(BUILD)/libraytra.a
+TOOLS_DIR  := $(TOP)/tools
+IMGDIFF    := $(TOOLS_DIR)/$(BUILD)/imgdiff
+
+# The deps step installs (or names) missing packages once per top-level make;
+# sub-makes started through $(SUBMAKE) skip it.
+ifdef RAYTRA_DEPS_OK
+DEPS_STEP = @true
+else
+DEPS_STEP = @$(TOP)/tools/deps.sh
+endif
+SUBMAKE = $(MAKE) --no-print-directory RAYTRA_DEPS_OK=1
+
+# Check stops a test after 4 s by default: too short under the sanitizers or valgrind.
+export CK_DEFAULT_TIMEOUT ?= 300
+
+# Compiling one C file into the build folder.
+$(BUILD)/%.o: %.c
+	@mkdir -p $(dir $@)
+	$(CC) $(ALL_CPPFLAGS) $(ALL_CFLAGS) -c $< -o $@

@@ -1,0 +1,210 @@
+#!/bin/sh
+# imgdiff.sh: tests imgdiff on small PFM images made here, byte by byte, and on its heat maps.
+#
+# Usage: tests/imgdiff.sh IMGDIFF   (make -C tools test runs it)
+#
+# The images are 4 x 3 PFMs, grey (0.25, 0.5, 1) but for a few pixels, written with
+# printf so that every value is known exactly. Exit status 0 when every check passes.
+set -u
+[ $# -eq 1 ] || { echo "usage: $0 IMGDIFF" >&2; exit 2; }
+imgdiff=$1
+case $imgdiff in /*) ;; *) imgdiff=$(pwd)/$imgdiff ;; esac
+tmp=$(mktemp -d)
+trap 'rm -rf "$tmp"' EXIT
+trap 'exit 130' INT TERM
+cd "$tmp" || exit 2
+
+checks=0
+failures=0
+command=""
+
+# Reports a failed check.
+fail() {
+    failures=$((failures + 1))
+    echo "FAIL: $command: $1"
+    sed 's/^/    | /' out.txt err.txt
+}
+
+# Prints the four bytes of a float, little-endian; only the values the tests use.
+f32() {
+    case $1 in
+    0) printf '\000\000\000\000' ;;
+    0.0078125) printf '\000\000\000\074' ;; # 2^-7 = 1.99/255
+    0.015625) printf '\000\000\200\074' ;;  # 2^-6 = 3.98/255
+    0.25) printf '\000\000\200\076' ;;
+    0.5) printf '\000\000\000\077' ;;
+    0.5078125) printf '\000\000\002\077' ;; # 0.5 + 2^-7
+    0.75) printf '\000\000\100\077' ;;
+    1) printf '\000\000\200\077' ;;
+    *) echo "imgdiff.sh: no bytes for $1" >&2; exit 2 ;;
+    esac
+}
+
+# Writes a W x H PFM: every pixel BASE (R,G,B) but those given as x,y=R,G,B, y from
+# the top. PFM stores the bottom row first.
+pfm() {
+    file=$1 w=$2 h=$3 base=$4
+    shift 4
+    {
+        printf 'PF\n%s %s\n-1.0\n' "$w" "$h"
+        y=$((h - 1))
+        while [ $y -ge 0 ]; do
+            x=0
+            while [ $x -lt "$w" ]; do
+                rgb=$base
+                for p in "$@"; do
+                    case $p in "$x,$y="*) rgb=${p#*=} ;; esac
+                done
+                for v in $(echo "$rgb" | tr , ' '); do f32 "$v"; done
+                x=$((x + 1))
+            done
+            y=$((y - 1))
+        done
+    } >"$file"
+}
+
+# Runs imgdiff with the arguments after the exit status it should give.
+run() {
+    expected=$1
+    shift
+    command="imgdiff $*"
+    checks=$((checks + 1))
+    "$imgdiff" "$@" >out.txt 2>err.txt
+    status=$?
+    [ "$status" -eq "$expected" ] || fail "exit status $status, expected $expected"
+}
+
+# Checks that the last run printed the line (on stdout or stderr).
+has() {
+    grep -qxF -- "$1" out.txt err.txt || fail "no line '$1'"
+}
+
+# Checks that the last run printed text somewhere (on stdout or stderr).
+says() {
+    grep -qF -- "$1" out.txt err.txt || fail "no '$1'"
+}
+
+grey=0.25,0.5,1
+pfm a.pfm 4 3 $grey
+pfm same.pfm 4 3 $grey
+pfm one.pfm 4 3 $grey 2,1=0.75,0.5,1
+pfm two.pfm 4 3 $grey 2,1=0.75,0.5,1 0,0=0.5,0.5,1
+pfm small.pfm 4 3 $grey 1,2=0.25,0.5078125,1
+pfm step2.pfm 4 3 0,0,0 3,0=0,0,0.0078125
+pfm step4.pfm 4 3 0,0,0 3,0=0,0,0.015625
+pfm black.pfm 4 3 0,0,0
+pfm tall.pfm 3 4 $grey
+
+# Identical images.
+run 0 a.pfm same.pfm
+has "size: 4 x 3 pixels"
+has "largest difference: R 0 (0.0/255), G 0 (0.0/255), B 0 (0.0/255)"
+has "PSNR: inf dB"
+has "differing pixels: 0 of 12 (0%) differ by more than 0.007843 (2.0/255)"
+has "PASS: the images are identical"
+
+# One pixel off by 0.5 in red: 1 of 12 pixels is 8.3%, more than the 0.1% allowed.
+# Mean = 0.5 / 36 channels = 0.01389; RMSE = sqrt(0.25 / 36) = 1/12; PSNR = 20 log10 12.
+run 1 a.pfm one.pfm
+has "largest difference: R 0.5 (127.5/255), G 0 (0.0/255), B 0 (0.0/255)"
+has "mean absolute difference: 0.01389 (3.54/255)"
+has "RMSE: 0.08333"
+has "PSNR: 21.58 dB"
+has "differing pixels: 1 of 12 (8.333%) differ by more than 0.007843 (2.0/255)"
+has "differing region: (2,1)-(2,1), y from the top"
+has "FAIL: 8.333% of the pixels differ by more than 0.007843 (2.0/255), more than the 0.1% allowed"
+run 1 --allow 0 one.pfm a.pfm
+run 0 --allow 0.1 a.pfm one.pfm
+has "PASS: 8.333% of the pixels differ by more than 0.007843 (2.0/255), within the 10% allowed"
+run 0 --allow=1/12 a.pfm one.pfm
+
+# Two pixels: the box spans both.
+run 1 a.pfm two.pfm
+has "differing pixels: 2 of 12 (16.67%) differ by more than 0.007843 (2.0/255)"
+has "differing region: (0,0)-(2,1), y from the top"
+
+# The threshold: 2^-7 = 1.99/255 is within 2/255, 2^-6 = 3.98/255 is not; a fraction
+# and a decimal say the same.
+run 0 --allow 0 a.pfm small.pfm
+has "PASS: no pixel differs by more than 0.007843 (2.0/255)"
+run 0 --allow 0 black.pfm step2.pfm
+run 1 --allow 0 black.pfm step4.pfm
+has "differing region: (3,0)-(3,0), y from the top"
+run 1 --allow 0 --threshold 1/255 black.pfm step2.pfm
+has "differing pixels: 1 of 12 (8.333%) differ by more than 0.003922 (1.0/255)"
+run 0 --allow 0 --threshold 0.0078125 black.pfm step2.pfm
+run 0 --allow 0 --threshold=4/255 black.pfm step4.pfm
+
+# Quiet: the verdict alone.
+run 1 -q a.pfm one.pfm
+lines=$(($(wc -l <out.txt)))
+if [ "$lines" -ne 1 ] || [ -s err.txt ]; then fail "more than the verdict"; fi
+has "FAIL: 8.333% of the pixels differ by more than 0.007843 (2.0/255), more than the 0.1% allowed"
+
+# Trouble: sizes, missing and unreadable files.
+run 2 a.pfm tall.pfm
+has "imgdiff: sizes differ: a.pfm is 4 x 3, tall.pfm is 3 x 4"
+run 2 a.pfm missing.png
+has "imgdiff: cannot read 'missing.png': No such file or directory"
+printf 'hello\n' >text.png
+run 2 text.png a.pfm
+has "imgdiff: cannot read 'text.png': not a PNG or PFM image"
+dd if=a.pfm of=cut.pfm bs=1 count=30 2>/dev/null
+run 2 a.pfm cut.pfm
+has "imgdiff: cannot read 'cut.pfm': truncated: expected 144 bytes of pixels, found 18"
+
+# The heat map of two.pfm: (2,1) differs most (0.5), so it is white; (0,0) differs
+# by 0.25, half way up the ramp of five colours, so red; equal pixels are black.
+run 1 --diff heat.png a.pfm two.pfm
+has "heat map: black = 0, white = 0.5 (127.5/255), written to heat.png"
+pfm expected.pfm 4 3 0,0,0 2,1=1,1,1 0,0=1,0,0
+run 0 --threshold 0 --allow 0 heat.png expected.pfm
+has "note: comparing a PNG's stored values with a PFM's linear ones"
+has "PASS: the images are identical"
+# With --scale 1, 0.5 is red and 0.25 purple (0.5, 0, 0.75): stored as 128/255 and
+# 191/255, within 1/255 of them.
+run 1 --diff heat2.png --scale 1 a.pfm two.pfm
+has "heat map: black = 0, white = 1 (255.0/255), written to heat2.png"
+pfm expected2.pfm 4 3 0,0,0 2,1=1,0,0 0,0=0.5,0,0.75
+run 0 --threshold 1/255 --allow 0 heat2.png expected2.pfm
+# Identical images make an all-black map, and a PNG compared with itself is identical.
+run 0 --diff heat3.png a.pfm same.pfm
+run 0 --threshold 0 --allow 0 heat3.png black.pfm
+run 0 heat.png heat.png
+has "PASS: the images are identical"
+# A heat map that cannot be written is refused before any work.
+run 2 --diff heat.jpg a.pfm two.pfm
+has "imgdiff: cannot write 'heat.jpg': unknown image format (use .png or .pfm)"
+run 2 --diff nowhere/heat.png a.pfm two.pfm
+has "imgdiff: cannot write 'nowhere/heat.png': folder 'nowhere' does not exist"
+run 2 --diff a.pfm a.pfm two.pfm
+says "would overwrite"
+
+# The command line.
+run 0 --help
+says "Usage: imgdiff [options] A B"
+says "(default 2/255:"
+says "(default 0.001, that is 0.1%)"
+run 2 a.pfm
+has "imgdiff: give two images to compare (imgdiff --help shows how)"
+run 2 a.pfm same.pfm one.pfm
+has "imgdiff: unexpected argument 'one.pfm': give two images"
+run 2 --frobnicate a.pfm same.pfm
+has "imgdiff: unknown option '--frobnicate' (imgdiff --help lists them)"
+run 2 --threshold abc a.pfm same.pfm
+has "imgdiff: --threshold takes a number from 0 up, or a fraction such as 2/255, got 'abc'"
+run 2 --threshold 2/0 a.pfm same.pfm
+run 2 --threshold -1 a.pfm same.pfm
+run 2 --allow 2 a.pfm same.pfm
+has "imgdiff: --allow takes a fraction from 0 to 1, got '2'"
+run 2 --scale 0 a.pfm same.pfm
+run 2 a.pfm same.pfm --threshold
+has "imgdiff: --threshold needs a value"
+run 0 -- a.pfm same.pfm
+
+if [ $failures -eq 0 ]; then
+    echo "imgdiff.sh: all $checks runs of imgdiff passed their checks"
+else
+    echo "imgdiff.sh: $failures failed checks in $checks runs of imgdiff"
+    exit 1
+fi

@@ -1,0 +1,68 @@
+#!/bin/sh
+# regress.sh: renders a part's reference scenes and compares them with the committed images.
+#
+# Usage: tests/regress.sh check|update RAYTRA IMGDIFF REFDIR
+#
+# REFDIR holds the reference images and renders.txt, which says how each was made,
+# one image a line:   IMAGE  SCENE  [raytra options...]
+# with SCENE relative to the top of the repository.
+#   check   renders each scene with 2 threads and compares it with IMAGE, using
+#           imgdiff's default tolerances; renders it again with 1 thread and checks
+#           that the two files are byte for byte the same.
+#   update  renders each scene, prints imgdiff's comparison with the current image,
+#           then replaces it (make references).
+set -u
+[ $# -eq 4 ] || { echo "usage: $0 check|update RAYTRA IMGDIFF REFDIR" >&2; exit 2; }
+mode=$1 raytra=$2 imgdiff=$3 refdir=$4
+top=$(cd "$(dirname "$0")/.." && pwd)
+list=$refdir/renders.txt
+[ -f "$list" ] || { echo "regress.sh: no $list" >&2; exit 2; }
+tmp=$(mktemp -d)
+trap 'rm -rf "$tmp"' EXIT
+trap 'exit 130' INT TERM
+
+failed=0
+count=0
+while read -r image scene options; do
+    case $image in '' | '#'*) continue ;; esac
+    count=$((count + 1))
+    two=$tmp/two-$image
+    one=$tmp/one-$image
+    # shellcheck disable=SC2086 # options are words by design
+    if ! "$raytra" -q -j 2 $options "$top/$scene" "$two" 2>"$tmp/err"; then
+        echo "FAIL $image: raytra failed on $scene:"
+        sed 's/^/    /' "$tmp/err"
+        failed=$((failed + 1))
+        continue
+    fi
+    if [ "$mode" = update ]; then
+        if [ -f "$refdir/$image" ]; then
+            echo "== $image: the new render against the old one"
+            "$imgdiff" "$refdir/$image" "$two" | sed 's/^/    /'
+        else
+            echo "== $image: new"
+        fi
+        cp "$two" "$refdir/$image"
+        continue
+    fi
+    # shellcheck disable=SC2086
+    "$raytra" -q -j 1 $options "$top/$scene" "$one" 2>/dev/null
+    if ! cmp -s "$one" "$two"; then
+        echo "FAIL $image: 1 and 2 threads give different files"
+        failed=$((failed + 1))
+    elif [ ! -f "$refdir/$image" ]; then
+        echo "FAIL $image: no reference image (make references creates it)"
+        failed=$((failed + 1))
+    elif ! "$imgdiff" "$refdir/$image" "$two" >"$tmp/diff" 2>&1; then
+        echo "FAIL $image: differs from the reference:"
+        sed 's/^/    /' "$tmp/diff"
+        failed=$((failed + 1))
+    else
+        echo "ok   $image"
+    fi
+done <"$list"
+
+if [ "$mode" = check ]; then
+    echo "$((count - failed)) of $count reference images match"
+    [ "$failed" -eq 0 ]
+fi

@@ -1,0 +1,160 @@
+/* test_cli.c: the shared command line: positional arguments, options, a part's own, errors. */
+#include <stdarg.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "cli.h"
+#include "testing.h"
+
+static int depth = 20;
+static bool two_sided;
+static int mode = 3;
+
+static const CliOption part_options[] = {
+    {"max-depth", 0, OPTION_INT, "N", "reflection depth", &depth, 0, 100},
+    {"two-sided", 0, OPTION_FLAG, NULL, "shade back faces", &two_sided, 0, 0},
+    {0},
+};
+static const CliOption part_arguments[] = {
+    {"MODE", 0, OPTION_INT, NULL, "what to draw", &mode, 0, 3},
+    {0},
+};
+static const CliSpec spec = {"9.9-test", "testing", part_options, part_arguments};
+
+/* Parses the words of a command line (ended by NULL) into opts. */
+static CliResult parse(Options *opts, ...)
+{
+    char *argv[32] = {"raytra"};
+    int argc = 1;
+    va_list ap;
+    va_start(ap, opts);
+    for (char *a; (a = va_arg(ap, char *)) != NULL;)
+        argv[argc++] = a;
+    va_end(ap);
+    return cli_parse(&spec, argc, argv, opts);
+}
+
+START_TEST(scene_and_output)
+{
+    Options o;
+    ck_assert_int_eq(parse(&o, "s.scn", "out.png", NULL), CLI_RUN);
+    ck_assert_str_eq(o.scene, "s.scn");
+    ck_assert_str_eq(o.output, "out.png");
+    ck_assert_int_ge(o.threads, 1);
+    ck_assert(!o.quiet && !o.linear && !o.convention_given);
+    ck_assert_int_eq(o.convention, CONVENTION_LECTURE);
+    ck_assert_double_eq(o.scale, 1);
+}
+END_TEST
+
+START_TEST(shared_options)
+{
+    Options o;
+    ck_assert_int_eq(parse(&o, "-j", "3", "-q", "--convention", "fall2016", "s.scn", "-oout.pfm",
+                           "--scale=0.5", "--linear", NULL),
+                     CLI_RUN);
+    ck_assert_int_eq(o.threads, 3);
+    ck_assert(o.quiet && o.linear && o.convention_given);
+    ck_assert_int_eq(o.convention, CONVENTION_FALL2016);
+    ck_assert_str_eq(o.output, "out.pfm");
+    ck_assert_double_eq(o.scale, 0.5);
+    ck_assert_int_eq(parse(&o, "--threads=2", "--output", "x.png", "--", "-odd.scn", NULL),
+                     CLI_RUN);
+    ck_assert_int_eq(o.threads, 2);
+    ck_assert_str_eq(o.scene, "-odd.scn");
+}
+END_TEST
+
+START_TEST(part_options_and_arguments)
+{
+    Options o;
+    ck_assert_int_eq(parse(&o, "--max-depth", "5", "--two-sided", "s.scn", "o.png", "2", NULL),
+                     CLI_RUN);
+    ck_assert_int_eq(depth, 5);
+    ck_assert(two_sided);
+    ck_assert_int_eq(mode, 2);
+}
+END_TEST
+
+START_TEST(usage_errors)
+{
+    Options o;
+    ck_assert_int_eq(parse(&o, NULL), CLI_BAD_USAGE);
+    ck_assert_int_eq(parse(&o, "--nope", "s.scn", NULL), CLI_BAD_USAGE);
+    ck_assert_int_eq(parse(&o, "-j", "0", "s.scn", NULL), CLI_BAD_USAGE);
+    ck_assert_int_eq(parse(&o, "-j", "two", "s.scn", NULL), CLI_BAD_USAGE);
+    ck_assert_int_eq(parse(&o, "s.scn", "-j", NULL), CLI_BAD_USAGE);
+    ck_assert_int_eq(parse(&o, "--quiet=yes", "s.scn", NULL), CLI_BAD_USAGE);
+    ck_assert_int_eq(parse(&o, "--convention", "spring", "s.scn", NULL), CLI_BAD_USAGE);
+    ck_assert_int_eq(parse(&o, "--scale", "0", "s.scn", NULL), CLI_BAD_USAGE);
+    ck_assert_int_eq(parse(&o, "-o", "a.png", "s.scn", "b.png", NULL), CLI_BAD_USAGE);
+    ck_assert_int_eq(parse(&o, "s.scn", "o.png", "4", NULL), CLI_BAD_USAGE);
+    ck_assert_int_eq(parse(&o, "s.scn", "o.png", "1", "extra", NULL), CLI_BAD_USAGE);
+}
+END_TEST
+
+START_TEST(help_and_version)
+{
+    Options o;
+    ck_assert_ptr_nonnull(freopen("/dev/null", "w", stdout));
+    ck_assert_int_eq(parse(&o, "--help", NULL), CLI_DONE);
+    ck_assert_int_eq(parse(&o, "s.scn", "-h", NULL), CLI_DONE);
+    ck_assert_int_eq(parse(&o, "--version", NULL), CLI_DONE);
+}
+END_TEST
+
+START_TEST(help_lists_every_option)
+{
+    char *text;
+    size_t size;
+    FILE *f = open_memstream(&text, &size);
+    cli_print_help(&spec, f);
+    fclose(f);
+    const char *expected[] = {"usage: raytra SCENE [OUTPUT] [MODE] [options]",
+                              "--output FILE",
+                              "-j, --threads N",
+                              "--convention NAME",
+                              "--scale F",
+                              "--linear",
+                              "--max-depth N",
+                              "--two-sided",
+                              "MODE",
+                              "exit status"};
+    for (size_t k = 0; k < sizeof expected / sizeof *expected; k++)
+        ck_assert_msg(strstr(text, expected[k]) != NULL, "'%s' missing from:\n%s", expected[k],
+                      text);
+    free(text);
+}
+END_TEST
+
+START_TEST(default_output)
+{
+    char *name = cli_default_output("scenes/spheres-three.scn");
+    ck_assert_str_eq(name, "spheres-three.png");
+    free(name);
+    name = cli_default_output("noext");
+    ck_assert_str_eq(name, "noext.png");
+    free(name);
+    name = cli_default_output("../a.b/.hidden");
+    ck_assert_str_eq(name, ".hidden.png");
+    free(name);
+}
+END_TEST
+
+/* The command line's tests. */
+static Suite *cli_suite(void)
+{
+    Suite *s = suite_create("cli");
+    TCase *tc = tcase_create("cli");
+    tcase_add_test(tc, scene_and_output);
+    tcase_add_test(tc, shared_options);
+    tcase_add_test(tc, part_options_and_arguments);
+    tcase_add_test(tc, usage_errors);
+    tcase_add_test(tc, help_and_version);
+    tcase_add_test(tc, help_lists_every_option);
+    tcase_add_test(tc, default_output);
+    suite_add_tcase(s, tc);
+    return s;
+}
+
+TEST_MAIN(cli_suite)

@@ -1,0 +1,50 @@
+#!/bin/sh
+# deps.sh: makes sure the packages raytra builds with are installed.
+#
+# Usage: tools/deps.sh [build|test]
+#   build  needs a C compiler, make, pkg-config and libpng's headers;
+#   test   needs, in addition, the Check unit-test framework.
+#
+# On Debian and Ubuntu it installs what is missing with apt-get when it may
+# (as root, or through sudo without a password); otherwise it names the exact
+# command to run and fails.
+
+set -u
+need_check=no
+[ "${1:-build}" = test ] && need_check=yes
+
+missing=""
+command -v cc >/dev/null 2>&1 || missing="$missing gcc"
+command -v pkg-config >/dev/null 2>&1 || missing="$missing pkg-config"
+if ! pkg-config --exists libpng 2>/dev/null && [ ! -f /usr/include/png.h ]; then
+    missing="$missing libpng-dev"
+fi
+if [ $need_check = yes ] && ! pkg-config --exists check 2>/dev/null; then
+    missing="$missing check"
+fi
+[ -z "$missing" ] && exit 0
+
+if ! command -v apt-get >/dev/null 2>&1; then
+    echo "raytra needs these packages (Debian names):$missing" >&2
+    echo "Install them with your system's package manager, then run make again." >&2
+    exit 1
+fi
+
+if [ "$(id -u)" -eq 0 ]; then
+    as_root=""
+elif command -v sudo >/dev/null 2>&1 && sudo -n true 2>/dev/null; then
+    as_root="sudo"
+else
+    echo "raytra needs these packages:$missing" >&2
+    echo "Install them with:  sudo apt-get install -y$missing" >&2
+    exit 1
+fi
+
+echo "raytra: installing$missing (apt-get)" >&2
+export DEBIAN_FRONTEND=noninteractive
+$as_root apt-get update -qq >/dev/null &&
+    $as_root apt-get install -y -qq --no-install-recommends $missing >/dev/null || {
+    echo "raytra: apt-get could not install$missing" >&2
+    echo "Install them with:  sudo apt-get install -y$missing" >&2
+    exit 1
+}

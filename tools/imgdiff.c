@@ -1,0 +1,401 @@
+/* imgdiff.c: compares two images, PNG or PFM, and tells whether they match. */
+#include <math.h>
+#include <stdbool.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "image.h"
+#include "imgdiff.h"
+#include "outfile.h"
+
+enum { EXIT_MATCH = 0, EXIT_DIFFER = 1, EXIT_TROUBLE = 2 };
+
+/* What the command line asks for. */
+typedef struct {
+    const char *paths[2];
+    int path_count;
+    double threshold; /* a pixel differs when its largest channel difference exceeds this */
+    double allow;     /* the fraction of the pixels that may differ */
+    double scale;     /* the difference shown white in the heat map; 0: the largest found */
+    const char *diff_path;
+    bool quiet, help;
+} DiffOptions;
+
+/* How two images of the same size differ. */
+typedef struct {
+    double max[3];           /* the largest difference in R, G and B */
+    double largest_finite;   /* the largest finite difference in any channel */
+    double sum, sum_squares; /* of the differences of every channel of every pixel */
+    long differing;          /* pixels with a channel difference above the threshold */
+    int x0, y0, x1, y1;      /* the box around those pixels, y from the top */
+} Diff;
+
+/* The heat map's colours, evenly spread from the smallest difference to the scale's top. */
+static const Color ramp[] = {
+    {0.0, 0.0, 0.35}, /* dark blue: the smallest difference, still unlike black */
+    {0.5, 0.0, 0.75}, /* purple */
+    {1.0, 0.0, 0.0},  /* red */
+    {1.0, 1.0, 0.0},  /* yellow */
+    {1.0, 1.0, 1.0},  /* white: the top of the scale, and above */
+};
+#define RAMP_STOPS ((int)(sizeof ramp / sizeof ramp[0]))
+
+/* Prints the usage, the options and their defaults. */
+static void print_help(FILE *f)
+{
+    fprintf(f,
+            "Usage: imgdiff [options] A B\n"
+            "Compares two images of the same size, each a PNG (8 or 16 bits, any colour\n"
+            "type) or a PFM, and tells whether they match.\n"
+            "\n"
+            "Values are compared on a scale of 0 to 1 as the files hold them: a PNG's\n"
+            "as stored (raytra writes them sRGB-encoded unless given --linear), a PFM's\n"
+            "linear; so compare a PFM with a PFM, or with a PNG written with --linear.\n"
+            "Transparent PNG pixels are taken as drawn over black.\n"
+            "\n"
+            "Options:\n"
+            "  --threshold T  a pixel differs when one of its channels differs by more\n"
+            "                 than T, a number or a fraction such as 2/255 (default %s:\n"
+            "                 more than 2 steps of 8 bits)\n"
+            "  --allow F      the images match when at most the fraction F of the pixels\n"
+            "                 differ (default %s, that is %g%%)\n"
+            "  --diff FILE    write a heat map of the differences to FILE (.png or .pfm):\n"
+            "                 black where a pixel is exactly equal; any difference, even\n"
+            "                 one within the threshold, is at least dark blue, then the\n"
+            "                 colours run through purple, red and yellow to white\n"
+            "  --scale S      the difference that is white in the heat map, larger ones\n"
+            "                 too (default: the largest difference found)\n"
+            "  -q, --quiet    print only the verdict\n"
+            "  -h, --help     show this help and exit\n"
+            "\n"
+            "The report gives the largest difference in each channel (also in steps of\n"
+            "8 bits, x/255), the mean absolute difference, the RMSE, the PSNR (peak 1),\n"
+            "the pixels that differ and the box around them (x0,y0)-(x1,y1), y from\n"
+            "the top, and the verdict, PASS or FAIL.\n"
+            "\n"
+            "Exit status: 0 when the images match, 1 when they do not, 2 on trouble (a\n"
+            "missing or unreadable file, different sizes, a bad option). The defaults\n"
+            "are those of raytra's image-regression tests (tools/imgdiff.h).\n",
+            IMGDIFF_THRESHOLD_TEXT, IMGDIFF_ALLOW_TEXT, IMGDIFF_ALLOW * 100);
+}
+
+/* Reads a number, a decimal or a fraction N/D (2/255); false when it is neither. */
+static bool parse_number(const char *text, double *value)
+{
+    char *end;
+    double v = strtod(text, &end);
+    if (end == text)
+        return false;
+    if (*end == '/') {
+        const char *denominator = end + 1;
+        double d = strtod(denominator, &end);
+        if (end == denominator || d == 0)
+            return false;
+        v /= d;
+    }
+    if (*end != '\0' || !isfinite(v))
+        return false;
+    *value = v;
+    return true;
+}
+
+/* Stores the value of option --name; false (reported) when it is not a valid one. */
+static bool set_value(DiffOptions *o, const char *name, const char *value)
+{
+    if (strcmp(name, "diff") == 0) {
+        o->diff_path = value;
+        return true;
+    }
+    double v = 0;
+    bool number = parse_number(value, &v);
+    if (strcmp(name, "threshold") == 0 && number && v >= 0)
+        o->threshold = v;
+    else if (strcmp(name, "allow") == 0 && number && v >= 0 && v <= 1)
+        o->allow = v;
+    else if (strcmp(name, "scale") == 0 && number && v > 0)
+        o->scale = v;
+    else {
+        const char *wanted = strcmp(name, "allow") == 0 ? "a fraction from 0 to 1"
+                             : strcmp(name, "scale") == 0
+                                 ? "a number above 0, or a fraction such as 8/255"
+                                 : "a number from 0 up, or a fraction such as 2/255";
+        fprintf(stderr, "imgdiff: --%s takes %s, got '%s'\n", name, wanted, value);
+        return false;
+    }
+    return true;
+}
+
+/* Handles the option argv[*i], taking its value from the next word when it needs one. */
+static bool parse_option(DiffOptions *o, int argc, char **argv, int *i)
+{
+    const char *arg = argv[*i];
+    if (strcmp(arg, "-q") == 0 || strcmp(arg, "--quiet") == 0) {
+        o->quiet = true;
+        return true;
+    }
+    if (strcmp(arg, "-h") == 0 || strcmp(arg, "--help") == 0) {
+        o->help = true;
+        return true;
+    }
+    /* The other options take a value: --name VALUE or --name=VALUE. */
+    static const char *const with_value[] = {"threshold", "allow", "scale", "diff"};
+    const char *eq = strchr(arg, '=');
+    size_t len = eq != NULL ? (size_t)(eq - arg) : strlen(arg);
+    for (size_t k = 0; k < sizeof with_value / sizeof with_value[0]; k++) {
+        const char *name = with_value[k];
+        if (strncmp(arg, "--", 2) != 0 || len != 2 + strlen(name) ||
+            strncmp(arg + 2, name, len - 2) != 0)
+            continue;
+        if (eq != NULL)
+            return set_value(o, name, eq + 1);
+        if (*i + 1 >= argc) {
+            fprintf(stderr, "imgdiff: --%s needs a value\n", name);
+            return false;
+        }
+        return set_value(o, name, argv[++*i]);
+    }
+    fprintf(stderr, "imgdiff: unknown option '%s' (imgdiff --help lists them)\n", arg);
+    return false;
+}
+
+/* Reads the command line into o; false (reported) when it is not a valid one. */
+static bool parse_args(int argc, char **argv, DiffOptions *o)
+{
+    *o = (DiffOptions){.threshold = IMGDIFF_THRESHOLD, .allow = IMGDIFF_ALLOW};
+    bool only_paths = false;
+    for (int i = 1; i < argc; i++) {
+        const char *arg = argv[i];
+        if (!only_paths && strcmp(arg, "--") == 0) {
+            only_paths = true;
+        } else if (!only_paths && arg[0] == '-' && arg[1] != '\0') {
+            if (!parse_option(o, argc, argv, &i))
+                return false;
+        } else if (o->path_count == 2) {
+            fprintf(stderr, "imgdiff: unexpected argument '%s': give two images\n", arg);
+            return false;
+        } else {
+            o->paths[o->path_count++] = arg;
+        }
+    }
+    if (!o->help && o->path_count < 2) {
+        fprintf(stderr, "imgdiff: give two images to compare (imgdiff --help shows how)\n");
+        return false;
+    }
+    return true;
+}
+
+/* Tells, before any work, whether the heat map can be written; reports why not. */
+static bool check_diff_path(const DiffOptions *o)
+{
+    const char *path = o->diff_path;
+    Error err;
+    if (strcmp(path, o->paths[0]) == 0 || strcmp(path, o->paths[1]) == 0) {
+        fprintf(stderr, "imgdiff: --diff %s would overwrite an image being compared\n", path);
+        return false;
+    }
+    if (image_format_for_path(path) == IMAGE_FORMAT_UNKNOWN) {
+        fprintf(stderr, "imgdiff: cannot write '%s': unknown image format (use .png or .pfm)\n",
+                path);
+        return false;
+    }
+    if (!outfile_check(path, &err)) {
+        fprintf(stderr, "imgdiff: cannot write '%s': %s\n", path, err.text);
+        return false;
+    }
+    return true;
+}
+
+/* Tells whether the file at path is a PFM, for the note on comparing one with a PNG. */
+static bool is_pfm(const char *path)
+{
+    char magic[2];
+    FILE *f = fopen(path, "rb");
+    bool pfm = f != NULL && fread(magic, 1, 2, f) == 2 && magic[0] == 'P' &&
+               (magic[1] == 'F' || magic[1] == 'f');
+    if (f != NULL)
+        fclose(f);
+    return pfm;
+}
+
+/* Returns the difference of two channel values; NaN against anything but NaN counts
+ * as infinite, so that it can never pass as a small difference. */
+static double channel_diff(float a, float b)
+{
+    if (a == b || (isnan(a) && isnan(b)))
+        return 0;
+    double d = fabs((double)a - (double)b);
+    return isnan(d) ? INFINITY : d;
+}
+
+/* Returns the largest difference between the channels of pixel k of a and of b. */
+static double pixel_diff(const Image *a, const Image *b, long k)
+{
+    double largest = 0;
+    for (int c = 0; c < 3; c++)
+        largest = fmax(largest, channel_diff(a->pixels[3 * k + c], b->pixels[3 * k + c]));
+    return largest;
+}
+
+/* Measures how a and b, of the same size, differ, counting the pixels beyond threshold. */
+static Diff diff_images(const Image *a, const Image *b, double threshold)
+{
+    Diff d = {.x0 = a->width, .y0 = a->height, .x1 = -1, .y1 = -1};
+    for (int y = 0; y < a->height; y++)
+        for (int x = 0; x < a->width; x++) {
+            long k = (long)y * a->width + x;
+            double largest = 0;
+            for (int c = 0; c < 3; c++) {
+                double e = channel_diff(a->pixels[3 * k + c], b->pixels[3 * k + c]);
+                d.max[c] = fmax(d.max[c], e);
+                d.sum += e;
+                d.sum_squares += e * e;
+                largest = fmax(largest, e);
+                if (isfinite(e))
+                    d.largest_finite = fmax(d.largest_finite, e);
+            }
+            if (largest > threshold) {
+                d.differing++;
+                d.x0 = x < d.x0 ? x : d.x0;
+                d.y0 = y < d.y0 ? y : d.y0;
+                d.x1 = x > d.x1 ? x : d.x1;
+                d.y1 = y > d.y1 ? y : d.y1;
+            }
+        }
+    return d;
+}
+
+/* Returns the heat map's colour for difference e on a scale whose top is top: black
+ * for an exactly equal pixel, at least dark blue for any difference at all. */
+static Color heat_color(double e, double top)
+{
+    if (e == 0)
+        return color(0, 0, 0);
+    double t = fmin(e / top, 1.0) * (RAMP_STOPS - 1);
+    int k = (int)t;
+    if (k >= RAMP_STOPS - 1)
+        return ramp[RAMP_STOPS - 1];
+    double f = t - k;
+    return color_add(color_scale(ramp[k], 1 - f), color_scale(ramp[k + 1], f));
+}
+
+/* Writes the heat map of a against b to path, linear so that the ramp's colours are
+ * stored as chosen; false (reported) when it cannot. */
+static bool write_heat_map(const Image *a, const Image *b, double top, const char *path)
+{
+    Image map;
+    if (!image_init(&map, a->width, a->height)) {
+        fprintf(stderr, "imgdiff: not enough memory for the heat map\n");
+        return false;
+    }
+    for (int y = 0; y < a->height; y++)
+        for (int x = 0; x < a->width; x++)
+            image_set(&map, x, y, heat_color(pixel_diff(a, b, (long)y * a->width + x), top));
+    Error err;
+    bool ok = image_write(&map, path, PNG_ENCODING_LINEAR, &err);
+    if (!ok)
+        fprintf(stderr, "imgdiff: cannot write '%s': %s\n", path, err.text);
+    image_free(&map);
+    return ok;
+}
+
+/* Prints the measures of d for images of width x height pixels. */
+static void print_report(const Diff *d, int width, int height, double threshold)
+{
+    double samples = 3.0 * width * height;
+    double rmse = sqrt(d->sum_squares / samples);
+    printf("size: %d x %d pixels\n", width, height);
+    printf("largest difference: R %.4g (%.1f/255), G %.4g (%.1f/255), B %.4g (%.1f/255)\n",
+           d->max[0], d->max[0] * 255, d->max[1], d->max[1] * 255, d->max[2], d->max[2] * 255);
+    printf("mean absolute difference: %.4g (%.2f/255)\n", d->sum / samples, d->sum / samples * 255);
+    printf("RMSE: %.4g\n", rmse);
+    /* PSNR = 10 log10(peak^2 / MSE) with peak 1: equal images have no noise at all. */
+    if (rmse == 0)
+        printf("PSNR: inf dB\n");
+    else
+        printf("PSNR: %.2f dB\n", -20 * log10(rmse));
+    printf("differing pixels: %ld of %ld (%.4g%%) differ by more than %.4g (%.1f/255)\n",
+           d->differing, (long)width * height, 100.0 * d->differing / ((double)width * height),
+           threshold, threshold * 255);
+    if (d->differing > 0)
+        printf("differing region: (%d,%d)-(%d,%d), y from the top\n", d->x0, d->y0, d->x1, d->y1);
+}
+
+/* Prints the verdict line; returns the exit status it means. */
+static int print_verdict(const Diff *d, long pixels, const DiffOptions *o)
+{
+    double percent = 100.0 * d->differing / pixels;
+    bool equal = d->max[0] == 0 && d->max[1] == 0 && d->max[2] == 0;
+    bool pass = (double)d->differing <= o->allow * pixels;
+    if (equal)
+        printf("PASS: the images are identical\n");
+    else if (d->differing == 0)
+        printf("PASS: no pixel differs by more than %.4g (%.1f/255)\n", o->threshold,
+               o->threshold * 255);
+    else
+        printf("%s: %.4g%% of the pixels differ by more than %.4g (%.1f/255), %s the %.4g%% "
+               "allowed\n",
+               pass ? "PASS" : "FAIL", percent, o->threshold, o->threshold * 255,
+               pass ? "within" : "more than", o->allow * 100);
+    return pass ? EXIT_MATCH : EXIT_DIFFER;
+}
+
+/* Compares a and b, reports, writes the heat map if asked; returns the exit status. */
+static int compare(const Image *a, const Image *b, const DiffOptions *o)
+{
+    if (a->width != b->width || a->height != b->height) {
+        fprintf(stderr, "imgdiff: sizes differ: %s is %d x %d, %s is %d x %d\n", o->paths[0],
+                a->width, a->height, o->paths[1], b->width, b->height);
+        return EXIT_TROUBLE;
+    }
+    Diff d = diff_images(a, b, o->threshold);
+    if (!o->quiet) {
+        if (is_pfm(o->paths[0]) != is_pfm(o->paths[1]))
+            printf("note: comparing a PNG's stored values with a PFM's linear ones\n");
+        print_report(&d, a->width, a->height, o->threshold);
+    }
+    if (o->diff_path != NULL) {
+        /* Equal images get an all-black map; the scale then only needs to be positive. */
+        double top = o->scale > 0 ? o->scale : d.largest_finite > 0 ? d.largest_finite : 1.0 / 255;
+        if (!write_heat_map(a, b, top, o->diff_path))
+            return EXIT_TROUBLE;
+        if (!o->quiet)
+            printf("heat map: black = 0, white = %.4g (%.1f/255), written to %s\n", top, top * 255,
+                   o->diff_path);
+    }
+    return print_verdict(&d, (long)a->width * a->height, o);
+}
+
+/* Reads the image at path into img; false (reported) when it cannot. */
+static bool read_image(Image *img, const char *path)
+{
+    Error err;
+    if (image_read(img, path, &err))
+        return true;
+    fprintf(stderr, "imgdiff: cannot read '%s': %s\n", path, err.text);
+    return false;
+}
+
+/* Runs imgdiff: exit status 0 when the images match, 1 when not, 2 on trouble. */
+int main(int argc, char **argv)
+{
+    DiffOptions o;
+    if (!parse_args(argc, argv, &o))
+        return EXIT_TROUBLE;
+    if (o.help) {
+        print_help(stdout);
+        return EXIT_MATCH;
+    }
+    if (o.diff_path != NULL && !check_diff_path(&o))
+        return EXIT_TROUBLE;
+    Image a, b;
+    if (!read_image(&a, o.paths[0]))
+        return EXIT_TROUBLE;
+    int status = EXIT_TROUBLE;
+    if (read_image(&b, o.paths[1])) {
+        status = compare(&a, &b, &o);
+        image_free(&b);
+    }
+    image_free(&a);
+    return status;
+}
