@@ -44,24 +44,37 @@ $(PROGRAM): $(BUILD)/raytra.o $(LINK_LIBS)
 
 $(BUILD)/tests/%: $(BUILD)/tests/%.o $(LINK_LIBS)
 	$(CC) $(ALL_LDFLAGS) -o $@ $< $(LINK_LIBS) $(CHECK_LIBS) $(PNG_LIBS) -lm
-$(BUILD)/tests/%.o: INCLUDES += -I$(TOP)/tests $(CHECK_CFLAGS) -DPART_DIR='"$(CURDIR)"' -DTOP_DIR='"$(TOP)"'
+$(BUILD)/tests/%.o: INCLUDES += -I$(TOP)/tests $(CHECK_CFLAGS) -DPART_DIR='"$(CURDIR)"' \
+                                 -DTOP_DIR='"$(TOP)"' -DRAYTRA='"$(CURDIR)/$(PROGRAM)"'
 
 test: unit-test image-test
 
+# Unit tests may run the part's program on a scene, so it is built first; each test
+# runs in a scratch folder of its own, removed when it passes.
 unit-test:
 	$(DEPS_STEP) test
-	@$(SUBMAKE) test-programs
-	@set -e; for t in $(TEST_PROGS); do echo "== $(PART): $$t"; ./$$t; done
+	@$(SUBMAKE) test-programs $(PROGRAM)
+	@for t in $(TEST_PROGS); do \
+	    echo "== $(PART): $$t"; scratch=$$(mktemp -d); \
+	    (cd $$scratch && $(CURDIR)/$$t) || { echo "FAILED: $$t (scratch kept in $$scratch)"; exit 1; }; \
+	    rm -rf $$scratch; \
+	done
 
 # Renders every reference scene, compares it with the committed image and checks
-# that 1 and 2 threads give the same bytes (tests/regress.sh).
+# that 1 and 2 threads give the same bytes (tests/regress.sh); the same for the
+# figures of the part's chapter, in docs/figures/<part>/, when it has some.
+FIGURES    := $(wildcard $(TOP)/docs/figures/$(PART)/renders.txt)
+IMAGE_SETS := references $(FIGURES:%/renders.txt=%)
+
 image-test: $(PROGRAM)
 	@$(SUBMAKE) -C $(TOOLS_DIR) imgdiff
-	@$(TOP)/tests/regress.sh check $(CURDIR)/$(PROGRAM) $(IMGDIFF) references
+	@for set in $(IMAGE_SETS); do \
+	    $(TOP)/tests/regress.sh check $(CURDIR)/$(PROGRAM) $(IMGDIFF) $$set || exit 1; done
 
 references: $(PROGRAM)
 	@$(SUBMAKE) -C $(TOOLS_DIR) imgdiff
-	@$(TOP)/tests/regress.sh update $(CURDIR)/$(PROGRAM) $(IMGDIFF) references
+	@for set in $(IMAGE_SETS); do \
+	    $(TOP)/tests/regress.sh update $(CURDIR)/$(PROGRAM) $(IMGDIFF) $$set || exit 1; done
 
 clean:
 	rm -rf build build-sanitize raytra

@@ -3,26 +3,8 @@
 #include <stdlib.h>
 
 #include "app.h"
-#include "camera.h"
 #include "sphere.h"
-
-/* What every pixel reads: the camera and the scene's spheres. */
-typedef struct {
-    Camera camera;
-    const Scene *scene;
-} View;
-
-/* Builds the camera of the scene. */
-static bool setup(const Scene *scene, void **ctx)
-{
-    View *view = malloc(sizeof *view);
-    if (view == NULL)
-        return false;
-    view->camera = camera_make(&scene->camera);
-    view->scene = scene;
-    *ctx = view;
-    return true;
-}
+#include "view.h"
 
 /* excerpt: red-or-black */
 /* The rule of part 1.1: red where the primary ray hits any sphere at t > 0. */
@@ -43,7 +25,7 @@ static const Program program = {
     .cli = {.part = "1.1-spheres-red",
             .purpose = "a pixel is red where its primary ray hits a sphere, black elsewhere"},
     .features = FEATURE_SPHERES,
-    .setup = setup,
+    .setup = view_setup,
     .pixel = red_or_black,
     .cleanup = free,
 };

@@ -1,0 +1,62 @@
+/* shade.c: the Blinn-Phong model, summed over the lights of the scene (no shadows yet). */
+#include "shade.h"
+
+#include <math.h>
+
+/* excerpt: blinn-phong */
+/* Returns the light reflected towards v from what one light sends along in->dir, by
+ * Blinn-Phong: I (.) (kd max(0, n.l) + ks max(0, n.h)^p) with h = normalize(l + v).
+ * n, v and l are unit vectors; v points from the surface to the eye. */
+Color shade_blinn_phong(const Material *m, Vec3 n, Vec3 v, const Incident *in)
+{
+    Vec3 l = in->dir;
+    double n_dot_l = vec3_dot(n, l);
+    /* A light behind the surface (or exactly in its plane) adds nothing, highlight
+     * included: seen from the light, this side of the surface is in its own shadow. */
+    if (n_dot_l <= 0)
+        return color(0, 0, 0);
+    /* Diffuse (Lambert): light spread over an area 1/cos(theta) larger. */
+    Color reflected = color_scale(m->diffuse, n_dot_l);
+    /* Specular: the half vector h lies halfway between l and v; it lines up with n
+     * exactly when v is the mirror image of l, where the highlight peaks. */
+    Vec3 h = vec3_normalize(vec3_add(l, v));
+    double n_dot_h = fmax(0, vec3_dot(n, h));
+    reflected = color_add(reflected, color_scale(m->specular, pow(n_dot_h, m->phong)));
+    return color_mul(in->radiance, reflected);
+}
+/* end excerpt: blinn-phong */
+
+/* excerpt: shade-normal */
+/* Returns the normal to shade with: the geometric normal turned to face the ray, so
+ * that the side the ray sees is lit as a front (the back of a triangle in
+ * --two-sided mode, the inside of a sphere seen from within). */
+Vec3 shade_normal(const Hit *hit)
+{
+    return hit->back_face ? vec3_neg(hit->normal) : hit->normal;
+}
+
+/* Tells whether the ray hit the back of a triangle or plane, which the course shows
+ * flat yellow; a sphere seen from inside is not a wrongly wound surface. */
+bool shade_shows_back_face(const Hit *hit)
+{
+    return hit->back_face && hit->kind != SURFACE_SPHERE;
+}
+/* end excerpt: shade-normal */
+
+/* excerpt: shade-lights */
+/* Returns the light that hit's surface reflects back along ray r, summed over the
+ * scene's point, directional and area lights, without shadows; the ambient light
+ * comes in part 1.3. */
+Color shade_lights(const Scene *scene, const Hit *hit, Ray r)
+{
+    const Material *m = &scene->materials[hit->material];
+    Vec3 n = shade_normal(hit);
+    Vec3 v = vec3_neg(r.dir);
+    Color sum = color(0, 0, 0);
+    for (int k = 0; k < scene->light_count; k++) {
+        Incident in = light_incident(&scene->lights[k], hit->point, scene_light_falls_off(scene));
+        sum = color_add(sum, shade_blinn_phong(m, n, v, &in));
+    }
+    return sum;
+}
+/* end excerpt: shade-lights */

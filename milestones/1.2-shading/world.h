@@ -1,0 +1,14 @@
+/* world.h: the closest hit of a ray among all the surfaces of a scene. */
+#ifndef RAYTRA_WORLD_H
+#define RAYTRA_WORLD_H
+
+#include <stdbool.h>
+
+#include "hit.h"
+#include "ray.h"
+#include "scene.h"
+
+bool world_hit(const Scene *scene, Ray r, double tmin, double tmax, Hit *hit);
+void world_complete_hit(const Scene *scene, Ray r, Hit *hit);
+
+#endif
