@@ -1,0 +1,16 @@
+/* direct.h: the light a surface point receives straight from the lights, shadows included. */
+#ifndef RAYTRA_DIRECT_H
+#define RAYTRA_DIRECT_H
+
+#include <stdbool.h>
+
+#include "color.h"
+#include "hit.h"
+#include "light.h"
+#include "render.h"
+#include "trace.h"
+
+bool direct_in_shadow(const Tracer *tr, const Hit *hit, Ray r, const Incident *in, RayStats *stats);
+Color direct_radiance(const Tracer *tr, const Hit *hit, Ray r, RayStats *stats);
+
+#endif

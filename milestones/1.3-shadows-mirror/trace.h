@@ -1,0 +1,29 @@
+/* trace.h: the radiance along a ray, by recursive ray tracing (slide 12, textbook chapter 4). */
+#ifndef RAYTRA_TRACE_H
+#define RAYTRA_TRACE_H
+
+#include <stdbool.h>
+
+#include "color.h"
+#include "ray.h"
+#include "render.h"
+#include "scene.h"
+#include "surfaces.h"
+
+/* The default of --max-depth: how many mirror bounces a path may take. */
+#define TRACE_MAX_DEPTH 20
+
+/* excerpt: tracer-struct */
+/* Everything a traced ray needs besides the ray, shared by every thread: read only. */
+typedef struct {
+    const Scene *scene;
+    Surfaces surfaces; /* how a ray finds what it hits */
+    int max_depth;     /* reflected rays a path may take */
+    bool two_sided;    /* shade back faces instead of showing them yellow */
+    double offset;     /* where secondary rays start: see secondary_ray */
+} Tracer;
+/* end excerpt: tracer-struct */
+
+Color trace_radiance(const Tracer *tr, Ray r, int depth, RayStats *stats);
+
+#endif
