@@ -141,6 +141,29 @@ lines=$(($(wc -l <out.txt)))
 if [ "$lines" -ne 1 ] || [ -s err.txt ]; then fail "more than the verdict"; fi
 has "FAIL: 8.333% of the pixels differ by more than 0.007843 (2.0/255), more than the 0.1% allowed"
 
+# Machine-readable figures, for tools/grade: every value, with enough digits.
+run 1 --machine --diff heatm.png a.pfm two.pfm
+has "threshold 0.00784313725"
+has "allow 0.001"
+has "size 4 3"
+has "max 0.5 0 0"
+has "mean 0.0208333333"
+has "rmse 0.0931694991"
+has "differing 2 12"
+has "box 0 0 2 1"
+has "heat_scale 0.5"
+has "verdict FAIL"
+lines=$(($(wc -l <out.txt)))
+[ "$lines" -eq 11 ] || fail "11 lines expected, got $lines"
+run 0 --machine a.pfm same.pfm
+has "psnr inf"
+has "differing 0 12"
+has "verdict PASS"
+grep -q '^box\|^heat_scale' out.txt && fail "a box or a heat scale for equal images"
+run 2 --machine a.pfm tall.pfm
+has "sizes 4 3 3 4"
+has "imgdiff: sizes differ: a.pfm is 4 x 3, tall.pfm is 3 x 4"
+
 # Trouble: sizes, missing and unreadable files.
 run 2 a.pfm tall.pfm
 has "imgdiff: sizes differ: a.pfm is 4 x 3, tall.pfm is 3 x 4"

@@ -4,8 +4,9 @@
 # Usage: tests/regress.sh check|update RAYTRA IMGDIFF REFDIR
 #
 # REFDIR holds the reference images and renders.txt, which says how each was made,
-# one image a line:   IMAGE  SCENE  [raytra options...]
-# with SCENE relative to the top of the repository.
+# one image a line:   IMAGE  SCENE  [arguments...]
+# with SCENE relative to the top of the repository; the arguments (a part's own
+# positional arguments, then raytra options) follow SCENE and OUTPUT on the command line.
 #   check   renders each scene with 2 threads and compares it with IMAGE, using
 #           imgdiff's default tolerances; renders it again with 1 thread and checks
 #           that the two files are byte for byte the same.
@@ -29,7 +30,7 @@ while read -r image scene options; do
     two=$tmp/two-$image
     one=$tmp/one-$image
     # shellcheck disable=SC2086 # options are words by design
-    if ! "$raytra" -q -j 2 $options "$top/$scene" "$two" 2>"$tmp/err"; then
+    if ! "$raytra" -q -j 2 "$top/$scene" "$two" $options 2>"$tmp/err"; then
         echo "FAIL $image: raytra failed on $scene:"
         sed 's/^/    /' "$tmp/err"
         failed=$((failed + 1))
@@ -46,7 +47,7 @@ while read -r image scene options; do
         continue
     fi
     # shellcheck disable=SC2086
-    "$raytra" -q -j 1 $options "$top/$scene" "$one" 2>/dev/null
+    "$raytra" -q -j 1 "$top/$scene" "$one" $options 2>/dev/null
     if ! cmp -s "$one" "$two"; then
         echo "FAIL $image: 1 and 2 threads give different files"
         failed=$((failed + 1))

@@ -1,0 +1,828 @@
+/* grade.c: grades a class's submissions for one part of the course against its reference images. */
+#include "grade.h"
+
+#include <dirent.h>
+#include <errno.h>
+#include <limits.h>
+#include <math.h>
+#include <stdarg.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/stat.h>
+#include <time.h>
+#include <unistd.h>
+
+#include "grade_report.h"
+#include "grade_run.h"
+#include "grade_submission.h"
+#include "grade_thumb.h"
+#include "imgdiff.h"
+#include "stop.h"
+
+enum { EXIT_REPORTED = 0, EXIT_TROUBLE = 2, EXIT_INTERRUPTED = 130 };
+
+/* What the command line asks for. */
+typedef struct {
+    const char *part, *submissions, *out;
+    const char *threshold, *allow;
+    double time_limit, build_time_limit;
+    long long memory_limit;
+    bool quiet, help;
+} GradeOptions;
+
+/* Prints the usage, the options and their defaults. */
+static void print_help(FILE *f)
+{
+    fprintf(f,
+            "Usage: grade [options] PART SUBMISSIONS\n"
+            "Grades every submission in the folder SUBMISSIONS against the reference images\n"
+            "of PART and writes a report (report.html) and a table (grades.csv).\n"
+            "\n"
+            "PART is a part of the course: its folder's name (1.1-spheres-red), the start\n"
+            "of it (1.1), or the path of its folder. Its references/renders.txt lists the\n"
+            "reference images and the scenes they were rendered from.\n"
+            "\n"
+            "SUBMISSIONS holds a folder a student, either\n"
+            "  - images named as the references (spheres-three.png; a .pfm is accepted too),\n"
+            "  - or sources with a Makefile: make, run in a copy, must build an executable\n"
+            "    raytra beside it, which is run as  raytra SCENE OUTPUT [arguments]  for\n"
+            "    every scene, in a scratch folder, under the limits below.\n"
+            "\n"
+            "Options:\n"
+            "  --out DIR               write report.html, grades.csv and the work files\n"
+            "                          (work/) into DIR (default: grading-PART)\n"
+            "  --time-limit S          seconds a student's program may take for one scene\n"
+            "                          (default 60; 0: no limit)\n"
+            "  --build-time-limit S    seconds make may take (default 300; 0: no limit)\n"
+            "  --memory-limit M        address space a student's make or program may use:\n"
+            "                          bytes, or with K, M or G (default 2G; 0: no limit)\n"
+            "  --threshold T           imgdiff's: a pixel differs when one of its channels\n"
+            "                          differs by more than T (default %s)\n"
+            "  --allow F               imgdiff's: an image passes when at most the fraction\n"
+            "                          F of its pixels differ (default %s)\n"
+            "  -q, --quiet             no progress lines\n"
+            "  -h, --help              show this help and exit\n"
+            "\n"
+            "Exit status: 0 when the report was written, whatever the verdicts; 2 when\n"
+            "grading could not be done; 130 when interrupted. See docs/grading.md.\n",
+            IMGDIFF_THRESHOLD_TEXT, IMGDIFF_ALLOW_TEXT);
+}
+
+/* Returns zeroed memory; ends the grader when there is none, as it cannot go on. */
+void *grade_alloc(size_t size)
+{
+    void *p = calloc(1, size > 0 ? size : 1);
+    if (p == NULL) {
+        fprintf(stderr, "grade: out of memory\n");
+        exit(EXIT_TROUBLE);
+    }
+    return p;
+}
+
+/* Returns a new string made as printf makes it. */
+char *grade_format(const char *fmt, ...)
+{
+    va_list ap;
+    va_start(ap, fmt);
+    int len = vsnprintf(NULL, 0, fmt, ap);
+    va_end(ap);
+    char *s = grade_alloc((size_t)len + 1);
+    va_start(ap, fmt);
+    vsnprintf(s, (size_t)len + 1, fmt, ap);
+    va_end(ap);
+    return s;
+}
+
+/* Returns a new copy of text. */
+char *grade_copy(const char *text)
+{
+    return grade_format("%s", text);
+}
+
+/* Writes a memory limit in words: "2 GiB", "512 MiB", or "none" for 0. */
+void grade_size_text(long long bytes, char *text, size_t size)
+{
+    if (bytes <= 0)
+        snprintf(text, size, "none");
+    else if (bytes % (1LL << 30) == 0)
+        snprintf(text, size, "%lld GiB", bytes >> 30);
+    else
+        snprintf(text, size, "%lld MiB", bytes >> 20);
+}
+
+/* Reads a number of seconds, 0 or more; false when text is not one. */
+static bool parse_seconds(const char *text, double *seconds)
+{
+    char *end;
+    double v = strtod(text, &end);
+    if (end == text || *end != '\0' || !isfinite(v) || v < 0)
+        return false;
+    *seconds = v;
+    return true;
+}
+
+/* Reads a size in bytes, with K, M or G for 2^10, 2^20, 2^30: 0, or at least 1M (a
+ * smaller one is surely a slip); false when text is not one. */
+static bool parse_size(const char *text, long long *bytes)
+{
+    char *end;
+    double v = strtod(text, &end);
+    double unit = *end == 'K' || *end == 'k'   ? 1024.0
+                  : *end == 'M' || *end == 'm' ? 1024.0 * 1024
+                  : *end == 'G' || *end == 'g' ? 1024.0 * 1024 * 1024
+                                               : 1;
+    if (unit > 1)
+        end++;
+    if (end == text || *end != '\0' || !isfinite(v) || v < 0 || v * unit > 1e18 ||
+        (v > 0 && v * unit < 1024.0 * 1024))
+        return false;
+    *bytes = (long long)(v * unit);
+    return true;
+}
+
+/* Tells whether argv[*i] is option --name, as --name VALUE or --name=VALUE; then sets
+ * *value (NULL when the value is missing) and steps over it. */
+static bool is_option(int argc, char **argv, int *i, const char *name, const char **value)
+{
+    const char *arg = argv[*i];
+    size_t len = strlen(name);
+    if (strncmp(arg, "--", 2) != 0 || strncmp(arg + 2, name, len) != 0)
+        return false;
+    if (arg[2 + len] == '=') {
+        *value = arg + 3 + len;
+        return true;
+    }
+    if (arg[2 + len] != '\0')
+        return false;
+    *value = *i + 1 < argc ? argv[++*i] : NULL;
+    return true;
+}
+
+/* Handles the option argv[*i]; false (reported) when it is not a valid one. */
+static bool parse_option(int argc, char **argv, int *i, GradeOptions *o)
+{
+    const char *arg = argv[*i], *v = NULL;
+    bool ok = true;
+    if (strcmp(arg, "-q") == 0 || strcmp(arg, "--quiet") == 0) {
+        o->quiet = true;
+        return true;
+    }
+    if (strcmp(arg, "-h") == 0 || strcmp(arg, "--help") == 0) {
+        o->help = true;
+        return true;
+    }
+    if (is_option(argc, argv, i, "out", &v))
+        o->out = v;
+    else if (is_option(argc, argv, i, "time-limit", &v))
+        ok = v == NULL || parse_seconds(v, &o->time_limit);
+    else if (is_option(argc, argv, i, "build-time-limit", &v))
+        ok = v == NULL || parse_seconds(v, &o->build_time_limit);
+    else if (is_option(argc, argv, i, "memory-limit", &v))
+        ok = v == NULL || parse_size(v, &o->memory_limit);
+    else if (is_option(argc, argv, i, "threshold", &v))
+        o->threshold = v;
+    else if (is_option(argc, argv, i, "allow", &v))
+        o->allow = v;
+    else {
+        fprintf(stderr, "grade: unknown option '%s' (grade --help lists them)\n", arg);
+        return false;
+    }
+    if (v == NULL) {
+        fprintf(stderr, "grade: %s needs a value\n", arg);
+        return false;
+    }
+    if (!ok)
+        fprintf(stderr, "grade: %s takes %s, got '%s'\n", arg,
+                strstr(arg, "memory") != NULL ? "a size such as 512M or 2G, or 0"
+                                              : "a number of seconds, or 0",
+                v);
+    return ok;
+}
+
+/* Reads the command line into o; false (reported) when it is not a valid one. */
+static bool parse_args(int argc, char **argv, GradeOptions *o)
+{
+    *o = (GradeOptions){.threshold = IMGDIFF_THRESHOLD_TEXT,
+                        .allow = IMGDIFF_ALLOW_TEXT,
+                        .time_limit = 60,
+                        .build_time_limit = 300,
+                        .memory_limit = 2LL << 30};
+    const char *words[2];
+    int count = 0;
+    bool only_words = false;
+    for (int i = 1; i < argc; i++) {
+        const char *arg = argv[i];
+        if (!only_words && strcmp(arg, "--") == 0) {
+            only_words = true;
+        } else if (!only_words && arg[0] == '-' && arg[1] != '\0') {
+            if (!parse_option(argc, argv, &i, o))
+                return false;
+        } else if (count == 2) {
+            fprintf(stderr, "grade: unexpected argument '%s': give a part and a folder\n", arg);
+            return false;
+        } else {
+            words[count++] = arg;
+        }
+    }
+    if (o->help)
+        return true;
+    if (count < 2) {
+        fprintf(stderr, "usage: grade [options] PART SUBMISSIONS (grade --help for more)\n");
+        return false;
+    }
+    o->part = words[0];
+    o->submissions = words[1];
+    return true;
+}
+
+/* Tells whether path is a folder. */
+static bool is_folder(const char *path)
+{
+    struct stat st;
+    return stat(path, &st) == 0 && S_ISDIR(st.st_mode);
+}
+
+/* Tells whether path is a regular file. */
+static bool is_file(const char *path)
+{
+    struct stat st;
+    return stat(path, &st) == 0 && S_ISREG(st.st_mode);
+}
+
+/* Returns the top of the repository, two folders above the grader's program
+ * (tools/build/grade), or NULL (reported) when it is not there. */
+static char *find_top(const char *argv0, char **tools_build)
+{
+    char exe[PATH_MAX];
+    ssize_t n = readlink("/proc/self/exe", exe, sizeof exe - 1);
+    if (n > 0)
+        exe[n] = '\0';
+    else if (realpath(argv0, exe) == NULL)
+        exe[0] = '\0';
+    char *slash = strrchr(exe, '/');
+    char *top = NULL;
+    if (slash != NULL) {
+        *slash = '\0';
+        *tools_build = grade_copy(exe);
+        char *up = grade_format("%s/../..", exe);
+        char real[PATH_MAX];
+        if (realpath(up, real) != NULL)
+            top = grade_copy(real);
+        free(up);
+    }
+    char *milestones = top != NULL ? grade_format("%s/milestones", top) : NULL;
+    if (milestones == NULL || !is_folder(milestones)) {
+        fprintf(stderr, "grade: cannot find the raytra repository: the grader must stay in "
+                        "tools/build/ of its checkout\n");
+        free(top);
+        top = NULL;
+    }
+    free(milestones);
+    return top;
+}
+
+/* Orders names as strcmp does, for qsort. */
+static int compare_names(const void *a, const void *b)
+{
+    return strcmp(*(char *const *)a, *(char *const *)b);
+}
+
+/* Returns the names of the folders in `folder`, hidden ones left out, in strcmp's order;
+ * sets *count. NULL (and errno) when the folder cannot be read. */
+static char **list_folders(const char *folder, int *count)
+{
+    DIR *d = opendir(folder);
+    if (d == NULL)
+        return NULL;
+    char **names = grade_alloc(sizeof *names);
+    int capacity = 1;
+    struct dirent *e;
+    *count = 0;
+    while ((e = readdir(d)) != NULL) {
+        char *path = grade_format("%s/%s", folder, e->d_name);
+        bool wanted = e->d_name[0] != '.' && is_folder(path);
+        free(path);
+        if (!wanted)
+            continue;
+        if (*count + 1 == capacity) {
+            capacity *= 2;
+            char **grown = grade_alloc((size_t)capacity * sizeof *grown);
+            memcpy(grown, names, (size_t)*count * sizeof *grown);
+            free(names);
+            names = grown;
+        }
+        names[(*count)++] = grade_copy(e->d_name);
+    }
+    closedir(d);
+    qsort(names, (size_t)*count, sizeof *names, compare_names);
+    return names;
+}
+
+/* Frees the count names of a listing. */
+static void free_names(char **names, int count)
+{
+    for (int k = 0; k < count; k++)
+        free(names[k]);
+    free(names);
+}
+
+/* Returns the folder of part `part`: a path, a folder of milestones/, or the one folder of
+ * milestones/ whose name starts with "PART-"; NULL (reported) when there is none. */
+static char *find_part(const char *top, const char *part)
+{
+    if (strchr(part, '/') != NULL) {
+        char real[PATH_MAX];
+        if (realpath(part, real) != NULL && is_folder(real))
+            return grade_copy(real);
+        fprintf(stderr, "grade: no part folder '%s'\n", part);
+        return NULL;
+    }
+    char *milestones = grade_format("%s/milestones", top);
+    int count = 0, matches = 0;
+    char **names = list_folders(milestones, &count);
+    char *found = NULL;
+    size_t len = strlen(part);
+    for (int k = 0; k < count; k++) {
+        const char *name = names[k];
+        if (strcmp(name, part) == 0) {
+            matches = 1;
+            free(found);
+            found = grade_format("%s/%s", milestones, name);
+            break;
+        }
+        if (strncmp(name, part, len) == 0 && name[len] == '-') {
+            matches++;
+            free(found);
+            found = grade_format("%s/%s", milestones, name);
+        }
+    }
+    if (matches != 1) {
+        fprintf(stderr,
+                "grade: %s part '%s' in %s; the parts are:", matches == 0 ? "no" : "more than one",
+                part, milestones);
+        for (int k = 0; k < count; k++)
+            fprintf(stderr, " %s", names[k]);
+        fputc('\n', stderr);
+        free(found);
+        found = NULL;
+    }
+    free_names(names, count);
+    free(milestones);
+    return found;
+}
+
+/* Tells whether raytra's option `word`, given without "=VALUE", takes the next word as its
+ * value; these are the shared options of common/cli.c that do. */
+static bool takes_value(const char *word)
+{
+    static const char *const with_value[] = {"-o",        "--output", "-j",
+                                             "--threads", "--scale",  "--convention"};
+    for (size_t k = 0; k < sizeof with_value / sizeof with_value[0]; k++)
+        if (strcmp(word, with_value[k]) == 0)
+            return true;
+    return false;
+}
+
+/* Fills r->args with the positional words of a renders.txt line (words[0..n)), which
+ * students' programs get; raytra's options are left out, with a note. */
+static void keep_positional(Render *r, char **words, int n, bool quiet)
+{
+    r->args = grade_alloc(((size_t)n + 1) * sizeof *r->args);
+    int kept = 0;
+    for (int k = 0; k < n; k++) {
+        if (words[k][0] != '-' || words[k][1] == '\0') {
+            r->args[kept++] = grade_copy(words[k]);
+            continue;
+        }
+        bool value = takes_value(words[k]) && k + 1 < n;
+        if (!quiet)
+            fprintf(stderr,
+                    "grade: note: %s: raytra's option %s%s%s is not given to students' "
+                    "programs\n",
+                    r->image, words[k], value ? " " : "", value ? words[k + 1] : "");
+        if (value)
+            k++;
+    }
+}
+
+/* Adds the render of a renders.txt line (its words) to g; false (reported) when the line
+ * is not a valid one or names a file that is not there. */
+static bool add_render(Grading *g, const char *top, char **words, int n, const char *where,
+                       bool quiet)
+{
+    const char *image = words[0];
+    const char *dot = strrchr(image, '.');
+    if (n < 2 || strchr(image, '/') != NULL || dot == NULL ||
+        (strcmp(dot, ".png") != 0 && strcmp(dot, ".pfm") != 0)) {
+        fprintf(stderr, "grade: %s: expected IMAGE SCENE [options], IMAGE a .png or .pfm name\n",
+                where);
+        return false;
+    }
+    Render *r = &g->renders[g->render_count];
+    *r = (Render){.image = grade_copy(image), .scene = grade_copy(words[1])};
+    r->name = grade_format("%.*s", (int)(dot - image), image);
+    r->scene_path =
+        words[1][0] == '/' ? grade_copy(words[1]) : grade_format("%s/%s", top, words[1]);
+    r->reference = grade_format("%s/%s", g->references, image);
+    keep_positional(r, words + 2, n - 2, quiet);
+    g->render_count++;
+    if (!is_file(r->scene_path)) {
+        fprintf(stderr, "grade: %s: no scene file %s\n", where, r->scene_path);
+        return false;
+    }
+    if (!is_file(r->reference)) {
+        fprintf(stderr, "grade: %s: no reference image %s (make references makes it)\n", where,
+                r->reference);
+        return false;
+    }
+    return true;
+}
+
+/* Reads references/renders.txt into g->renders; false (reported) when it cannot. */
+static bool read_renders(Grading *g, const char *top, bool quiet)
+{
+    char *path = grade_format("%s/renders.txt", g->references);
+    FILE *f = fopen(path, "r");
+    if (f == NULL) {
+        fprintf(stderr, "grade: cannot read %s: %s\n", path, strerror(errno));
+        free(path);
+        return false;
+    }
+    char *line = NULL;
+    size_t size = 0;
+    int line_number = 0, capacity = 0;
+    bool ok = true;
+    while (ok && getline(&line, &size, f) >= 0) {
+        line_number++;
+        char *words[64], *save = NULL;
+        int n = 0;
+        for (char *w = strtok_r(line, " \t\r\n", &save); w != NULL && n < 64;
+             w = strtok_r(NULL, " \t\r\n", &save))
+            words[n++] = w;
+        if (n == 0 || words[0][0] == '#')
+            continue;
+        if (g->render_count == capacity) {
+            capacity = capacity * 2 + 8;
+            Render *grown = grade_alloc((size_t)capacity * sizeof *grown);
+            if (g->render_count > 0)
+                memcpy(grown, g->renders, (size_t)g->render_count * sizeof *grown);
+            free(g->renders);
+            g->renders = grown;
+        }
+        char *where = grade_format("%s:%d", path, line_number);
+        ok = add_render(g, top, words, n, where, quiet);
+        free(where);
+    }
+    free(line);
+    fclose(f);
+    if (ok && g->render_count == 0) {
+        fprintf(stderr, "grade: %s lists no images\n", path);
+        ok = false;
+    }
+    free(path);
+    return ok;
+}
+
+/* Runs a command of the grader's own (no limits but time); true when it succeeds. */
+static bool run_quietly(char **argv, const char *log)
+{
+    RunSpec spec = {.log = log, .time_limit = 600};
+    RunResult r = run_program(argv, &spec);
+    return r.end == RUN_EXITED && r.status == 0;
+}
+
+/* Makes folder path if it is not there; false (reported) when it cannot. */
+static bool make_folder(const char *path)
+{
+    if (mkdir(path, 0777) == 0 || (errno == EEXIST && is_folder(path)))
+        return true;
+    fprintf(stderr, "grade: cannot make the folder %s: %s\n", path, strerror(errno));
+    return false;
+}
+
+/* Makes OUT and an empty OUT/work (an absolute path), removing a work folder of an earlier run (one
+ * holding the mark this writes) and refusing to remove any other; false (reported) on trouble. */
+static bool prepare_work(Grading *g)
+{
+    char real[PATH_MAX];
+    if (!make_folder(g->out))
+        return false;
+    /* Absolute: students' programs run in folders of their own. */
+    if (realpath(g->out, real) == NULL) {
+        fprintf(stderr, "grade: cannot find %s: %s\n", g->out, strerror(errno));
+        return false;
+    }
+    g->work = grade_format("%s/work", real);
+    char *mark = grade_format("%s/.made-by-grade", g->work);
+    bool ok = true;
+    if (is_folder(g->work) && !is_file(mark)) {
+        fprintf(stderr, "grade: %s exists and was not made by grade: choose another --out\n",
+                g->work);
+        ok = false;
+    } else if (is_folder(g->work)) {
+        /* A student's build may have left folders without write permission. */
+        char *chmod[] = {"chmod", "-R", "u+rwX", "--", g->work, NULL};
+        char *rm[] = {"rm", "-rf", "--", g->work, NULL};
+        run_quietly(chmod, NULL);
+        if (!run_quietly(rm, NULL)) {
+            fprintf(stderr, "grade: cannot remove the old work folder %s\n", g->work);
+            ok = false;
+        }
+    }
+    FILE *f = NULL;
+    if (ok && (!make_folder(g->work) || (f = fopen(mark, "w")) == NULL))
+        ok = false;
+    if (f != NULL) {
+        fprintf(f, "grade's work folder: each run of grade with this --out removes it and "
+                   "makes it anew.\n");
+        ok = fclose(f) == 0;
+    }
+    char *refs = grade_format("%s/references", g->work);
+    ok = ok && make_folder(refs);
+    free(refs);
+    free(mark);
+    return ok;
+}
+
+/* Prints the first line of the file at path to stderr after prefix, if there is one. */
+static void print_first_line(const char *prefix, const char *path)
+{
+    char line[512] = "";
+    FILE *f = fopen(path, "r");
+    if (f != NULL) {
+        if (fgets(line, sizeof line, f) == NULL)
+            line[0] = '\0';
+        fclose(f);
+    }
+    if (line[0] != '\0')
+        fprintf(stderr, "%s%s%s", prefix, line, strchr(line, '\n') != NULL ? "" : "\n");
+}
+
+/* Asks imgdiff whether it takes the tolerances, before any work; false (reported) when it
+ * does not, or when imgdiff cannot run. */
+static bool check_imgdiff(const Grading *g)
+{
+    char *log = grade_format("%s/imgdiff-check.txt", g->work);
+    char *argv[] = {g->imgdiff, "--threshold", (char *)g->threshold, "--allow", (char *)g->allow,
+                    "--help",   NULL};
+    bool ok = run_quietly(argv, log);
+    if (!ok) {
+        print_first_line("grade: ", log);
+        fprintf(stderr, "grade: imgdiff (%s) refused the tolerances or could not run\n",
+                g->imgdiff);
+    }
+    free(log);
+    return ok;
+}
+
+/* Makes the reference images' thumbnails; false (reported) when one cannot be read. */
+static bool show_references(Grading *g)
+{
+    for (int k = 0; k < g->render_count; k++) {
+        Render *r = &g->renders[k];
+        r->reference_show = grade_format("%s/references/%s.png", g->work, r->name);
+        char *log = grade_format("%s/references/%s.log", g->work, r->name);
+        bool ok = thumb_make(r->reference, r->reference_show, THUMB_SIDE, THUMB_MEAN, log);
+        if (!ok && !stop_requested()) {
+            fprintf(stderr, "grade: cannot read the reference image %s:\n", r->reference);
+            print_first_line("    ", log);
+        }
+        free(log);
+        if (!ok)
+            return false;
+    }
+    return true;
+}
+
+/* Returns name with every byte but letters, digits, '.', '_' and '-' made '_', cut to 40
+ * bytes: a work folder's name that a student's Makefile or script cannot trip on. */
+static char *safe_name(const char *name)
+{
+    char *safe = grade_format("%.40s", name);
+    for (char *p = safe; *p != '\0'; p++)
+        if (!((*p >= 'a' && *p <= 'z') || (*p >= 'A' && *p <= 'Z') || (*p >= '0' && *p <= '9') ||
+              *p == '.' || *p == '_' || *p == '-'))
+            *p = '_';
+    return safe;
+}
+
+/* Tells whether folder holds a Makefile, as make looks for one. */
+static bool has_makefile(const char *folder)
+{
+    static const char *const names[] = {"GNUmakefile", "makefile", "Makefile"};
+    bool found = false;
+    for (size_t k = 0; k < sizeof names / sizeof names[0] && !found; k++) {
+        char *path = grade_format("%s/%s", folder, names[k]);
+        found = is_file(path);
+        free(path);
+    }
+    return found;
+}
+
+/* Lists the submissions: the folders in g->submissions but hidden ones and the output
+ * folder, in the order of their names; false (reported) when there are none. */
+static bool list_submissions(Grading *g)
+{
+    int count = 0;
+    char **names = list_folders(g->submissions, &count);
+    if (names == NULL) {
+        fprintf(stderr, "grade: cannot read the folder %s: %s\n", g->submissions, strerror(errno));
+        return false;
+    }
+    char out_real[PATH_MAX], real[PATH_MAX];
+    if (realpath(g->out, out_real) == NULL)
+        out_real[0] = '\0';
+    g->subs = grade_alloc((size_t)count * sizeof *g->subs);
+    int digits = count < 100 ? 2 : count < 1000 ? 3 : 6;
+    for (int k = 0; k < count; k++) {
+        char *path = grade_format("%s/%s", g->submissions, names[k]);
+        if (realpath(path, real) != NULL && strcmp(real, out_real) == 0) {
+            free(path);
+            continue;
+        }
+        Submission *s = &g->subs[g->sub_count++];
+        char *safe = safe_name(names[k]);
+        s->name = grade_copy(names[k]);
+        s->path = path;
+        s->work = grade_format("%s/%0*d-%s", g->work, digits, g->sub_count, safe);
+        s->program = has_makefile(s->path);
+        free(safe);
+    }
+    free_names(names, count);
+    if (g->sub_count == 0) {
+        fprintf(stderr, "grade: no submissions in %s: it should hold a folder a student\n",
+                g->submissions);
+        return false;
+    }
+    return true;
+}
+
+/* Prints text to stderr with control characters made '?', so that a folder's name cannot
+ * play tricks on the terminal. */
+static void print_plain(const char *text)
+{
+    for (const char *p = text; *p != '\0'; p++)
+        fputc((unsigned char)*p < 0x20 || *p == 0x7F ? '?' : *p, stderr);
+}
+
+/* Prints how the scenes of s went: "5 scenes: 4 pass, 1 timeout". */
+static void print_tally(const Grading *g, const Submission *s)
+{
+    if (s->build_message[0] != '\0') {
+        fprintf(stderr, "BUILD FAILED: %s\n", s->build_message);
+        return;
+    }
+    fprintf(stderr, "%d scene%s:", g->render_count, g->render_count == 1 ? "" : "s");
+    const char *sep = " ";
+    for (int v = 0; v < VERDICT_COUNT; v++)
+        if (s->verdicts[v] > 0) {
+            fprintf(stderr, "%s%d ", sep, s->verdicts[v]);
+            for (const char *p = verdict_name((Verdict)v); *p != '\0'; p++)
+                fputc(*p >= 'A' && *p <= 'Z' ? *p - 'A' + 'a' : *p, stderr);
+            sep = ", ";
+        }
+    fputc('\n', stderr);
+}
+
+/* Grades every submission, telling the progress unless quiet; false when interrupted
+ * or when the grader itself failed (reported). */
+static bool grade_all(Grading *g, bool quiet)
+{
+    for (int k = 0; k < g->sub_count; k++) {
+        Submission *s = &g->subs[k];
+        if (!quiet) {
+            fprintf(stderr, "grading ");
+            print_plain(s->name);
+            fprintf(stderr, " (%s): %s", s->program ? "program" : "images",
+                    s->program ? "building... " : "");
+        }
+        if (!submission_grade(g, s)) {
+            if (!quiet)
+                fputc('\n', stderr);
+            return false;
+        }
+        if (!quiet)
+            print_tally(g, s);
+    }
+    return true;
+}
+
+/* Writes report.html and grades.csv into g->out; false (reported) when it cannot. */
+static bool write_results(const Grading *g, bool quiet)
+{
+    char *csv = grade_format("%s/grades.csv", g->out);
+    char *html = grade_format("%s/report.html", g->out);
+    Error err;
+    bool ok = report_write_csv(g, csv, &err);
+    if (!ok)
+        fprintf(stderr, "grade: cannot write %s: %s\n", csv, err.text);
+    else if (!(ok = report_write_html(g, html, &err)))
+        fprintf(stderr, "grade: cannot write %s: %s\n", html, err.text);
+    else if (!quiet)
+        fprintf(stderr, "grade: wrote %s and %s\n", html, csv);
+    free(csv);
+    free(html);
+    return ok;
+}
+
+/* Frees everything g holds. */
+static void grading_free(Grading *g)
+{
+    for (int k = 0; k < g->render_count; k++) {
+        Render *r = &g->renders[k];
+        for (char **a = r->args; a != NULL && *a != NULL; a++)
+            free(*a);
+        free(r->args);
+        free(r->image);
+        free(r->name);
+        free(r->scene);
+        free(r->scene_path);
+        free(r->reference);
+        free(r->reference_show);
+    }
+    free(g->renders);
+    for (int k = 0; k < g->sub_count; k++) {
+        Submission *s = &g->subs[k];
+        for (int j = 0; s->results != NULL && j < g->render_count; j++) {
+            free(s->results[j].image_show);
+            free(s->results[j].heat_show);
+            free(s->results[j].log_tail);
+        }
+        free(s->results);
+        free(s->name);
+        free(s->path);
+        free(s->work);
+        free(s->build_log_tail);
+    }
+    free(g->subs);
+    free(g->references);
+    free(g->out);
+    free(g->work);
+    free(g->imgdiff);
+}
+
+/* Does all the grading but reading the command line; returns the exit status. */
+static int grade(const GradeOptions *o, Grading *g, const char *argv0)
+{
+    char *tools_build = NULL;
+    char *top = find_top(argv0, &tools_build);
+    char *part_dir = top != NULL ? find_part(top, o->part) : NULL;
+    int status = EXIT_TROUBLE;
+    if (part_dir == NULL)
+        goto done;
+    g->part = strrchr(part_dir, '/') + 1;
+    g->references = grade_format("%s/references", part_dir);
+    g->imgdiff = grade_format("%s/imgdiff", tools_build);
+    g->out = o->out != NULL ? grade_copy(o->out) : grade_format("grading-%s", g->part);
+    time_t now = time(NULL);
+    strftime(g->started, sizeof g->started, "%Y-%m-%d %H:%M", localtime(&now));
+    if (access(g->imgdiff, X_OK) != 0) {
+        fprintf(stderr, "grade: no imgdiff at %s (make -C tools builds it)\n", g->imgdiff);
+        goto done;
+    }
+    if (!is_folder(o->submissions)) {
+        fprintf(stderr, "grade: no folder %s\n", o->submissions);
+        goto done;
+    }
+    if (!read_renders(g, top, o->quiet) || !prepare_work(g) || !check_imgdiff(g) ||
+        !show_references(g) || !list_submissions(g))
+        goto done;
+    if (!o->quiet)
+        fprintf(stderr, "grade: part %s, %d scene%s, %d submission%s\n", g->part, g->render_count,
+                g->render_count == 1 ? "" : "s", g->sub_count, g->sub_count == 1 ? "" : "s");
+    if (grade_all(g, o->quiet) && write_results(g, o->quiet))
+        status = EXIT_REPORTED;
+done:
+    if (stop_requested()) {
+        fprintf(stderr, "grade: interrupted: no report written\n");
+        status = EXIT_INTERRUPTED;
+    }
+    free(part_dir);
+    free(top);
+    free(tools_build);
+    return status;
+}
+
+/* Runs the grader: exit status 0 when the report was written, 2 when it could not be,
+ * 130 when interrupted. */
+int main(int argc, char **argv)
+{
+    GradeOptions o;
+    if (!parse_args(argc, argv, &o))
+        return EXIT_TROUBLE;
+    if (o.help) {
+        print_help(stdout);
+        return EXIT_REPORTED;
+    }
+    run_init();
+    Grading g = {.submissions = o.submissions,
+                 .threshold = o.threshold,
+                 .allow = o.allow,
+                 .time_limit = o.time_limit,
+                 .build_time_limit = o.build_time_limit,
+                 .memory_limit = o.memory_limit};
+    int status = grade(&o, &g, argv[0]);
+    grading_free(&g);
+    return status;
+}

@@ -1,0 +1,21 @@
+# grade.mk: building and testing grade, which grades a class's submissions against a part's
+# reference images (docs/grading.md). Included by tools/Makefile after common/build.mk.
+
+GRADE         := $(BUILD)/grade
+GRADE_OBJECTS := $(addprefix $(BUILD)/,grade.o grade_run.o grade_submission.o grade_thumb.o \
+                   grade_report.o imgfile.o)
+# The test's model of a correct submission runs part 1.1's program, built without the
+# sanitizers: their shadow memory does not fit under the grader's memory limit.
+GRADE_PART    := $(TOP)/milestones/1.1-spheres-red
+
+.PHONY: grade grade-test
+grade: $(GRADE) $(IMGDIFF)
+	@:
+
+$(GRADE): $(GRADE_OBJECTS) $(COMMON_LIB)
+	$(CC) $(ALL_LDFLAGS) -o $@ $^ $(PNG_LIBS) -lm
+
+# The script makes its class of submissions in a temporary folder.
+grade-test: $(GRADE) $(IMGDIFF)
+	@$(SUBMAKE) -C $(GRADE_PART) SANITIZE=0
+	@sh $(TOP)/tests/grade.sh $(GRADE) $(GRADE_PART)/raytra

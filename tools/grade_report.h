@@ -1,0 +1,13 @@
+/* grade_report.h: the grading report, one self-contained HTML page, and grades.csv. */
+#ifndef RAYTRA_GRADE_REPORT_H
+#define RAYTRA_GRADE_REPORT_H
+
+#include <stdbool.h>
+
+#include "diag.h"
+#include "grade.h"
+
+bool report_write_csv(const Grading *g, const char *path, Error *err);
+bool report_write_html(const Grading *g, const char *path, Error *err);
+
+#endif

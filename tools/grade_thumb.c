@@ -1,0 +1,88 @@
+/* grade_thumb.c: shrinking images into PNG thumbnails, and writing PFMs as PNGs, in a child. */
+#include "grade_thumb.h"
+
+#include <stdio.h>
+
+#include "grade.h"
+#include "grade_run.h"
+#include "image.h"
+#include "imgfile.h"
+
+/* What one thumbnail is made from and how. */
+typedef struct {
+    const char *from, *to;
+    int max_side; /* 0: the full size */
+    ThumbKind kind;
+} ThumbJob;
+
+/* Returns the brightness by which THUMB_PEAKS picks a block's pixel. */
+static double brightness(Color c)
+{
+    return c.r + c.g + c.b;
+}
+
+/* Returns the colour of the block of src from (x0, y0) up to (x1, y1), not included. */
+static Color shrink_block(const Image *src, int x0, int y0, int x1, int y1, ThumbKind kind)
+{
+    Color sum = color(0, 0, 0), peak = image_get(src, x0, y0);
+    for (int y = y0; y < y1; y++)
+        for (int x = x0; x < x1; x++) {
+            Color c = image_get(src, x, y);
+            sum = color_add(sum, c);
+            if (brightness(c) > brightness(peak))
+                peak = c;
+        }
+    return kind == THUMB_PEAKS ? peak : color_scale(sum, 1.0 / ((x1 - x0) * (y1 - y0)));
+}
+
+/* Reads job->from, shrinks it by a whole factor to fit job->max_side and writes it as a
+ * PNG; runs in a child (run_function), so returns an exit status, reasons on stderr. */
+static int thumb_job(void *arg)
+{
+    const ThumbJob *job = arg;
+    Image src, dst;
+    Error err;
+    if (!image_read(&src, job->from, &err)) {
+        fprintf(stderr, "%s\n", err.text);
+        return 1;
+    }
+    int side = src.width > src.height ? src.width : src.height;
+    int factor = job->max_side > 0 ? (side + job->max_side - 1) / job->max_side : 1;
+    if (!image_init(&dst, (src.width + factor - 1) / factor, (src.height + factor - 1) / factor)) {
+        fprintf(stderr, "not enough memory for the thumbnail\n");
+        return 1;
+    }
+    for (int y = 0; y < dst.height; y++)
+        for (int x = 0; x < dst.width; x++) {
+            int x1 = (x + 1) * factor < src.width ? (x + 1) * factor : src.width;
+            int y1 = (y + 1) * factor < src.height ? (y + 1) * factor : src.height;
+            image_set(&dst, x, y, shrink_block(&src, x * factor, y * factor, x1, y1, job->kind));
+        }
+    /* A PNG's values are read as stored and go back as they were; a PFM's are linear
+     * radiance, encoded as raytra encodes its PNGs, so that it can be compared with one. */
+    PngEncoding encoding = imgfile_is_pfm(job->from) ? PNG_ENCODING_SRGB : PNG_ENCODING_LINEAR;
+    /* Written directly, without image_write's temporary and flush to the disk: the grader
+     * uses the file only when this child reports success. */
+    FILE *f = fopen(job->to, "wb");
+    bool ok = f != NULL && image_write_png(&dst, f, encoding, &err);
+    if (f != NULL && fclose(f) != 0)
+        ok = false;
+    if (!ok)
+        fprintf(stderr, "cannot write '%s'\n", job->to);
+    image_free(&dst);
+    image_free(&src);
+    return ok ? 0 : 1;
+}
+
+/* Writes to `to` a PNG of the image `from` shrunk to fit max_side (0: full size), in a
+ * child with a time limit, since `from` may be a student's file; reasons go to log.
+ * Returns whether it did. */
+bool thumb_make(const char *from, const char *to, int max_side, ThumbKind kind, const char *log)
+{
+    ThumbJob job = {from, to, max_side, kind};
+    /* No memory limit: the sanitizers' shadow memory would exceed it, and image_read
+     * refuses images too large for memory. */
+    RunSpec spec = {.log = log, .time_limit = 120};
+    RunResult r = run_function(thumb_job, &job, &spec);
+    return r.end == RUN_EXITED && r.status == 0;
+}

@@ -1,0 +1,18 @@
+/* grade_thumb.h: the PNG pictures the report embeds, made from any image imgdiff reads. */
+#ifndef RAYTRA_GRADE_THUMB_H
+#define RAYTRA_GRADE_THUMB_H
+
+#include <stdbool.h>
+
+/* The longest side of a thumbnail: three fit side by side on a laptop's screen. */
+#define THUMB_SIDE 320
+
+/* How a thumbnail shrinks a block of pixels into one. */
+typedef enum {
+    THUMB_MEAN,  /* the block's mean: for pictures */
+    THUMB_PEAKS, /* its brightest pixel: a heat map's single differing pixel must stay */
+} ThumbKind;
+
+bool thumb_make(const char *from, const char *to, int max_side, ThumbKind kind, const char *log);
+
+#endif
