@@ -5,6 +5,9 @@
 #   make demo        render scenes/demo.scn with every part into out/
 #   make references  re-render every part's reference images, showing what changed
 #   make docs        refresh the code excerpts in docs/ from the source
+#   make valgrind    render scenes of every part, and broken inputs, under valgrind's memcheck
+#   make fuzz        build the libFuzzer harnesses of the scene and OBJ readers (clang)
+#   make fuzz-run    fuzz each reader for FUZZ_SECONDS (default 1800) s (docs/robustness.md)
 #
 # WERROR=1 turns warnings into errors; SANITIZE=1 builds and tests everything
 # with AddressSanitizer and UndefinedBehaviorSanitizer.
@@ -13,9 +16,18 @@ include common/build.mk
 PARTS    := $(sort $(notdir $(wildcard milestones/*)))
 CHAPTERS := $(wildcard docs/*.md README.md milestones/*/README.md)
 DOCSNIP  := $(TOOLS_DIR)/$(BUILD)/docsnip
-LATEST   := milestones/$(lastword $(PARTS))/$(if $(filter 1,$(SANITIZE)),$(BUILD)/raytra,raytra)
+# The program of part $1, as this build (normal or SANITIZE=1) makes it.
+program   = milestones/$1/$(if $(filter 1,$(SANITIZE)),$(BUILD)/raytra,raytra)
+LATEST   := $(call program,$(lastword $(PARTS)))
+# Part 1.1 tests every sphere for every pixel: its renders are as long as a test needs.
+FIRST    := $(call program,$(firstword $(PARTS)))
+# The course corpus is rendered this much smaller: the parts before the BVH are brute force.
+COURSE_SCALE ?= 0.05
+FUZZ_SECONDS ?= 1800
 
-.PHONY: all test demo references docs check-docs check-layout check-course clean
+.PHONY: all test demo references docs check-docs check-layout check-course clean \
+        check-robust check-fuzz-regressions check-bad-input check-interrupt check-nonfinite \
+        check-course-render valgrind fuzz fuzz-run
 .NOTPARALLEL:
 
 all:
@@ -31,7 +43,46 @@ test:
 	@$(SUBMAKE) -C tools test
 	@for part in $(PARTS); do $(SUBMAKE) -C milestones/$$part test || exit 1; done
 	@$(SUBMAKE) check-docs check-layout check-course
+	@$(SUBMAKE) check-robust
 	@echo "make test: every test passed"
+
+# Broken input of every kind, interruptions, and finite pixels (docs/robustness.md).
+check-robust: check-fuzz-regressions check-bad-input check-interrupt check-nonfinite \
+              check-course-render
+
+# Every input the fuzzers ever crashed on, and their minimised corpora, loaded again.
+check-fuzz-regressions:
+	@$(SUBMAKE) -C tests/fuzz regress
+
+check-bad-input:
+	@tests/bad-input.sh $(LATEST)
+
+check-interrupt:
+	@tests/interrupt.sh $(FIRST)
+
+check-nonfinite:
+	@for part in $(PARTS); do \
+	    tests/nonfinite.sh render $(call program,$$part) milestones/$$part/references || exit 1; \
+	done
+
+# Every part renders every scene of the corpus: none may fail or make a NaN pixel.
+check-course-render:
+	@for part in $(PARTS); do \
+	    echo "== $$part"; \
+	    tests/course-scenes.sh render $(call program,$$part) $(COURSE_SCALE) || exit 1; \
+	done
+
+valgrind:
+	@if [ "$(SANITIZE)" = 1 ]; then echo "make valgrind: not with SANITIZE=1"; exit 2; fi
+	@$(SUBMAKE) all
+	@$(SUBMAKE) -C tests/fuzz regress-programs
+	@tests/valgrind.sh $(PARTS:%=milestones/%)
+
+fuzz:
+	@$(SUBMAKE) -C tests/fuzz fuzzers
+
+fuzz-run: fuzz
+	@tests/fuzz/run.sh scene $(FUZZ_SECONDS) && tests/fuzz/run.sh obj $(FUZZ_SECONDS)
 
 # Every scene of the course's corpus (../shared/course-scenes) loads with the latest part.
 check-course:
@@ -63,6 +114,7 @@ references:
 clean:
 	@$(SUBMAKE) -C common clean
 	@$(SUBMAKE) -C tests clean
+	@$(SUBMAKE) -C tests/fuzz clean
 	@$(SUBMAKE) -C tools clean
 	@for part in $(PARTS); do $(SUBMAKE) -C milestones/$$part clean; done
 	rm -rf out

@@ -159,15 +159,11 @@ static bool resolve_faces(ObjReader *r)
     return true;
 }
 
-/* Reads the OBJ file at path into mesh; problems go to diag with the OBJ's own line numbers. */
-bool obj_load(Mesh *mesh, const char *path, Diag *diag)
+/* Reads an OBJ mesh from the open file f into mesh; problems go to diag as path's,
+ * with the OBJ's own line numbers. The caller closes f. */
+bool obj_load_stream(Mesh *mesh, FILE *f, const char *path, Diag *diag)
 {
     memset(mesh, 0, sizeof *mesh);
-    FILE *f = fopen(path, "r");
-    if (f == NULL) {
-        diag_error(diag, path, 0, "cannot open: %s", strerror(errno));
-        return false;
-    }
     ObjReader r = {.path = path, .diag = diag, .mesh = mesh};
     LineReader *lr = malloc(sizeof *lr);
     bool ok = lr != NULL;
@@ -207,12 +203,25 @@ bool obj_load(Mesh *mesh, const char *path, Diag *diag)
                    ARRAY_MAX_ITEMS);
     free(r.faces);
     free(lr);
-    fclose(f);
     if (!ok || diag->errors != errors_before) {
         obj_free(mesh);
         return false;
     }
     return true;
+}
+
+/* Reads the OBJ file at path into mesh; problems go to diag with the OBJ's own line numbers. */
+bool obj_load(Mesh *mesh, const char *path, Diag *diag)
+{
+    memset(mesh, 0, sizeof *mesh);
+    FILE *f = fopen(path, "r");
+    if (f == NULL) {
+        diag_error(diag, path, 0, "cannot open: %s", strerror(errno));
+        return false;
+    }
+    bool ok = obj_load_stream(mesh, f, path, diag);
+    fclose(f);
+    return ok;
 }
 
 /* Releases the mesh's arrays. */

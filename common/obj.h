@@ -3,6 +3,7 @@
 #define RAYTRA_OBJ_H
 
 #include <stdbool.h>
+#include <stdio.h>
 
 #include "diag.h"
 #include "vec3.h"
@@ -15,6 +16,7 @@ typedef struct {
 } Mesh;
 
 bool obj_load(Mesh *mesh, const char *path, Diag *diag);
+bool obj_load_stream(Mesh *mesh, FILE *f, const char *path, Diag *diag);
 void obj_free(Mesh *mesh);
 
 #endif

@@ -33,6 +33,7 @@ struct Parser {
     const char *path;
     int line;
     int camera_line;     /* where the camera was given; 0 before */
+    int camera_tried;    /* the last c line, whether or not it could be read; 0 if none */
     int material;        /* the current material; -1 before the first m */
     int ambient_line;    /* where the ambient light was given; 0 before */
     int convention_line; /* where an o line chose a convention; 0 if none */
@@ -83,21 +84,31 @@ static bool check_color(Parser *p, const char *what, const double *v, char *cons
     return true;
 }
 
-/* Tells whether a value is positive; reports it otherwise. */
+/* Tells whether a size is positive and not too small to compute with; reports it otherwise. */
 static bool check_positive(Parser *p, const char *what, double v, const char *word)
 {
-    if (v > 0)
-        return true;
-    ERROR(p, "%s must be positive, got %s", what, word);
-    return false;
+    if (!(v > 0)) {
+        ERROR(p, "%s must be positive, got %s", what, word);
+        return false;
+    }
+    if (v < SCENE_MIN_SIZE) {
+        ERROR(p, "%s %s is too small (the limit is %g)", what, word, SCENE_MIN_SIZE);
+        return false;
+    }
+    return true;
 }
 
-/* Tells whether a direction is not the zero vector; reports it otherwise. */
+/* Tells whether a direction is long enough to be normalised; reports it otherwise. */
 static bool check_direction(Parser *p, const char *what, Vec3 v)
 {
-    if (vec3_length(v) > 0)
+    double length = vec3_length(v);
+    if (length >= SCENE_MIN_SIZE)
         return true;
-    ERROR(p, "%s must not be the zero vector", what);
+    if (length > 0)
+        ERROR(p, "%s is too short to have a direction (its length must be at least %g)", what,
+              SCENE_MIN_SIZE);
+    else
+        ERROR(p, "%s must not be the zero vector", what);
     return false;
 }
 
@@ -339,6 +350,9 @@ static const char *arg_name(const char *args, int k, char *buf, size_t size)
 /* Checks the count of numbers on a command's line, reads them and calls its handler. */
 static void run_command(Parser *p, const Command *c, char *const *words, int n)
 {
+    /* Noted first, so that a c line with a wrong number is not also told "no camera". */
+    if (c->parse == parse_camera)
+        p->camera_tried = p->line;
     if (n < c->min || n > c->max) {
         if (c->min == c->max)
             ERROR(p, "%s (%s) takes %d numbers (%s), got %d", c->what, c->name, c->min, c->args, n);
@@ -469,7 +483,8 @@ static void parse_option(Parser *p, char *const *words, int n)
     }
     Convention c;
     if (n != 2 || !convention_from_name(words[1], &c)) {
-        ERROR(p, "option 'convention' takes one name: lecture or fall2016");
+        ERROR(p, "option 'convention' takes one name: lecture or fall2016 (got '%s')",
+              n > 1 ? words[1] : "nothing");
         return;
     }
     if (p->convention_line > 0 && c != p->convention)
@@ -551,7 +566,7 @@ static void finish_planes(Scene *s)
 static void finish(Parser *p, const SceneLoadOptions *opts)
 {
     Scene *s = p->scene;
-    if (p->camera_line == 0) {
+    if (p->camera_tried == 0) {
         if (p->obj_lines > 0)
             diag_error(p->diag, p->path, 0,
                        "this is an OBJ mesh (it has v and f lines), not a scene file; "
@@ -590,16 +605,16 @@ static FILE *open_scene(Diag *diag, const char *path)
     return f;
 }
 
-/* Reads the scene file at path; false after reporting every problem found. */
-bool scene_load(Scene *scene, const char *path, const SceneLoadOptions *opts)
+/* Reads a scene from the open file f, named path in messages and for finding meshes;
+ * false after reporting every problem found. The caller closes f. */
+bool scene_load_stream(Scene *scene, FILE *f, const char *path, const SceneLoadOptions *opts)
 {
     memset(scene, 0, sizeof *scene);
     Diag diag;
     diag_init(&diag, opts->messages);
     scene->path = strdup(path);
-    FILE *f = open_scene(&diag, path);
     LineReader *reader = malloc(sizeof *reader);
-    if (f != NULL && reader != NULL && scene->path != NULL) {
+    if (reader != NULL && scene->path != NULL) {
         Parser p = {.scene = scene, .diag = &diag, .path = path, .material = -1};
         lex_start(reader, f);
         while (!diag_too_many(&diag)) {
@@ -624,11 +639,9 @@ bool scene_load(Scene *scene, const char *path, const SceneLoadOptions *opts)
             diag_error(&diag, path, 0, "too many errors; stopped reading");
         else
             finish(&p, opts);
-    } else if (f != NULL) {
+    } else {
         diag_error(&diag, path, 0, "out of memory");
     }
-    if (f != NULL)
-        fclose(f);
     free(reader);
     diag_flush(&diag);
     if (diag.errors > 0) {
@@ -636,4 +649,19 @@ bool scene_load(Scene *scene, const char *path, const SceneLoadOptions *opts)
         return false;
     }
     return true;
+}
+
+/* Reads the scene file at path; false after reporting every problem found. */
+bool scene_load(Scene *scene, const char *path, const SceneLoadOptions *opts)
+{
+    Diag diag;
+    diag_init(&diag, opts->messages);
+    FILE *f = open_scene(&diag, path);
+    if (f == NULL) {
+        memset(scene, 0, sizeof *scene);
+        return false;
+    }
+    bool ok = scene_load_stream(scene, f, path, opts);
+    fclose(f);
+    return ok;
 }

@@ -95,10 +95,12 @@ const char *scene_feature_name(unsigned feature)
 
 /* Tells whether a triangle has no area: its corners coincide or lie on a line.
  * The test is |e1 x e2| <= 1e-12 |e1| |e2|, the sine of the corner angle,
- * so it does not depend on the size of the triangle. */
+ * so it does not depend on the size of the triangle; a triangle so small that
+ * |e1 x e2| is below SCENE_MIN_SIZE^2 counts too, as its normal could not be normalised. */
 bool scene_triangle_is_degenerate(Vec3 a, Vec3 b, Vec3 c)
 {
     Vec3 e1 = vec3_sub(b, a), e2 = vec3_sub(c, a);
     double cross = vec3_length(vec3_cross(e1, e2));
-    return !(cross > 1e-12 * vec3_length(e1) * vec3_length(e2));
+    return !(cross > 1e-12 * vec3_length(e1) * vec3_length(e2)) ||
+           !(cross >= SCENE_MIN_SIZE * SCENE_MIN_SIZE);
 }

@@ -8,6 +8,11 @@
 #include "color.h"
 #include "vec3.h"
 
+/* Positive sizes (a radius, a focal length, ...) and the lengths of directions must be at
+ * least this: their squares stay far from underflow, as LEX_MAX_NUMBER keeps them from
+ * overflow, so that nothing computed from them becomes 0, infinite or NaN. */
+#define SCENE_MIN_SIZE 1e-12
+
 /* How a scene's planes and point lights are to be read (docs/scene-format.md). */
 typedef enum {
     CONVENTION_LECTURE,  /* planes p.N + d = 0; point lights do not fall off */
@@ -110,6 +115,7 @@ typedef struct {
 extern const Material scene_default_material;
 
 bool scene_load(Scene *scene, const char *path, const SceneLoadOptions *opts);
+bool scene_load_stream(Scene *scene, FILE *f, const char *path, const SceneLoadOptions *opts);
 void scene_free(Scene *scene);
 unsigned scene_features(const Scene *scene);
 const char *scene_feature_name(unsigned feature);

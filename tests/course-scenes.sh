@@ -3,8 +3,9 @@
 #
 # Usage: tests/course-scenes.sh check|render RAYTRA [SCALE]
 #   check   raytra --check on every scene file (fast: reads, does not render)
-#   render  renders every scene at SCALE times its resolution (default 0.1) and
-#           also fails on a NaN or infinite pixel
+#   render  renders every scene at SCALE times its resolution (default 0.1), as PFM, and
+#           also fails on a NaN or infinite pixel (the render loop's warning, or a
+#           non-finite float in the image: tests/nonfinite.sh)
 #
 # The corpus is ../shared/course-scenes beside the repository (see its SOURCES.md);
 # when it is not there the test says so and passes. Its fall2016-a folder uses the
@@ -33,7 +34,7 @@ for scene in $(cd "$corpus" && find . \( -name '*.scn' -o -name '*.txt' \) | sor
         "$raytra" --check --convention $convention "$corpus/$scene" >/dev/null 2>"$tmp/err"
     else
         "$raytra" -q -j 2 --scale "$scale" --convention $convention "$corpus/$scene" \
-            "$tmp/out.png" 2>"$tmp/err"
+            "$tmp/out.pfm" 2>"$tmp/err"
     fi
     status=$?
     # What is left once warnings, notes and the missing-mesh report are set aside.
@@ -45,6 +46,9 @@ for scene in $(cd "$corpus" && find . \( -name '*.scn' -o -name '*.txt' \) | sor
             continue
         fi
     elif grep -q 'NaN or infinite' "$tmp/err"; then
+        :
+    elif [ "$mode" = render ] && [ $status -eq 0 ] &&
+        ! "$top/tests/nonfinite.sh" pfm "$tmp/out.pfm" >>"$tmp/err"; then
         :
     elif [ $status -eq 0 ] && [ ! -s "$tmp/rest" ]; then
         loaded=$((loaded + 1))

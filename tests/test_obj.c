@@ -186,6 +186,35 @@ START_TEST(missing_file)
 }
 END_TEST
 
+START_TEST(mesh_from_a_stream)
+{
+    static const char text[] = SQUARE "f 1 2 3 4\nf 1 2 9\n";
+    FILE *f = fmemopen((void *)text, sizeof text - 1, "r");
+    char *messages;
+    size_t size;
+    Diag diag;
+    diag_init(&diag, open_memstream(&messages, &size));
+    Mesh mesh;
+    ck_assert(!obj_load_stream(&mesh, f, "memory.obj", &diag));
+    fclose(f);
+    fclose(diag.stream);
+    ck_assert_int_eq(mesh.triangle_count, 0);
+    ck_assert_str_eq(
+        messages, "memory.obj:6: face vertex index 9 is out of range (the mesh has 4 vertices)\n");
+    free(messages);
+}
+END_TEST
+
+START_TEST(faces_too_small_for_a_normal_are_skipped)
+{
+    Loaded l = load("v 0 0 0\nv 1e-13 0 0\nv 0 1e-13 0\nf 1 2 3\n");
+    ck_assert_msg(l.ok, "%s", l.messages);
+    ck_assert_int_eq(l.mesh.triangle_count, 0);
+    ck_assert_contains(l.messages, "m.obj:4: warning: degenerate triangle (no area) skipped");
+    done(&l);
+}
+END_TEST
+
 /* The OBJ loader's tests. */
 static Suite *obj_suite(void)
 {
@@ -201,6 +230,8 @@ static Suite *obj_suite(void)
     tcase_add_test(tc, binary_file);
     tcase_add_test(tc, degenerate_faces_are_skipped);
     tcase_add_test(tc, missing_file);
+    tcase_add_test(tc, mesh_from_a_stream);
+    tcase_add_test(tc, faces_too_small_for_a_normal_are_skipped);
     suite_add_tcase(s, tc);
     return s;
 }

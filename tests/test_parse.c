@@ -580,6 +580,66 @@ START_TEST(features)
 }
 END_TEST
 
+START_TEST(sizes_and_directions_too_small_to_compute_with)
+{
+    assert_error(CAMERA "s 0 0 -5 1e-13\n",
+                 "t.scn:2: sphere radius 1e-13 is too small (the limit is 1e-12)");
+    assert_error("c 0 0 0 0 0 -1 35 35 6.2e-125 32 24\n",
+                 "t.scn:1: camera image-plane height 6.2e-125 is too small");
+    assert_error("c 0 0 0 0 0 -1 1e-200 35 25 32 24\n", "camera focal length 1e-200 is too small");
+    assert_error("c 0 0 0 1e-160 0 0 35 35 25 32 24\n",
+                 "t.scn:1: camera view direction is too short to have a direction");
+    assert_error(CAMERA "p 1e-13 0 0 1\n", "t.scn:2: plane normal is too short");
+    /* Smaller still, its length squared is 0: it is simply zero. */
+    assert_error(CAMERA "p 1e-200 0 0 1\n", "t.scn:2: plane normal must not be the zero vector");
+    Loaded l = load(CAMERA "s 0 0 -5 1e-12\np 1e-12 0 0 1\n");
+    ck_assert_msg(l.ok, "%s", l.messages);
+    ck_assert_double_eq(l.scene.planes[0].normal.x, 1);
+    done(&l);
+}
+END_TEST
+
+START_TEST(triangles_too_small_for_a_normal_are_degenerate)
+{
+    /* The first is skipped; the second, a million times larger, is kept: one warning. */
+    assert_warning(CAMERA "t 0 0 0  1e-13 0 0  0 1e-13 0\nt 0 0 0  1e-6 0 0  0 1e-6 0\n",
+                   "t.scn:2: warning: degenerate triangle (no area) skipped\n");
+}
+END_TEST
+
+START_TEST(scene_from_a_stream)
+{
+    /* The stream is named "dir/x.scn": messages say so, and meshes are looked for in dir. */
+    ck_assert_int_eq(mkdir("dir", 0700), 0);
+    write_file("dir/m.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n");
+    static const char text[] = CAMERA "w m.obj\nq\n";
+    FILE *f = fmemopen((void *)text, sizeof text - 1, "r");
+    char *messages;
+    size_t size;
+    SceneLoadOptions opts = {.messages = open_memstream(&messages, &size)};
+    Scene scene;
+    ck_assert(scene_load_stream(&scene, f, "dir/x.scn", &opts));
+    fclose(f);
+    fclose(opts.messages);
+    ck_assert_int_eq(scene.triangle_count, 1);
+    ck_assert_str_eq(scene.path, "dir/x.scn");
+    ck_assert_contains(messages, "dir/x.scn:3: warning: unknown command 'q' ignored");
+    scene_free(&scene);
+    free(messages);
+}
+END_TEST
+
+START_TEST(a_camera_line_in_error_is_not_also_missing)
+{
+    Loaded l = load("c 0 0 0  0 0 -1  35 35 25  32\nc 0 0 0  0 0 -1  35 abc 25  32 24\n");
+    ck_assert(!l.ok);
+    ck_assert_contains(l.messages, "t.scn:1: camera (c) takes 11 numbers");
+    ck_assert_contains(l.messages, "t.scn:2: camera (c): iw is 'abc', not a number");
+    ck_assert_msg(strstr(l.messages, "no camera") == NULL, "%s", l.messages);
+    done(&l);
+}
+END_TEST
+
 /* The parser's tests. */
 static Suite *parse_suite(void)
 {
@@ -616,6 +676,10 @@ static Suite *parse_suite(void)
     tcase_add_test(diag, nul_byte_and_long_lines);
     tcase_add_test(diag, missing_scene_file_and_directory);
     tcase_add_test(diag, an_obj_file_given_as_a_scene);
+    tcase_add_test(diag, sizes_and_directions_too_small_to_compute_with);
+    tcase_add_test(diag, triangles_too_small_for_a_normal_are_degenerate);
+    tcase_add_test(diag, scene_from_a_stream);
+    tcase_add_test(diag, a_camera_line_in_error_is_not_also_missing);
     suite_add_tcase(s, diag);
     TCase *mesh = tcase_create("meshes");
     tcase_add_test(mesh, mesh_beside_the_scene);

@@ -1,0 +1,86 @@
+#!/bin/sh
+# nonfinite.sh: no NaN or infinite value reaches any pixel of a rendered image.
+#
+# Usage: tests/nonfinite.sh pfm FILE...
+#        tests/nonfinite.sh render RAYTRA REFDIR
+#   pfm     checks that every float of each PFM file is finite
+#   render  renders, as PFM, every scene of REFDIR/renders.txt with its options and every
+#           scene of scenes/ with none, and checks that raytra succeeds, does not warn
+#           that pixels came out NaN or infinite (the render loop writes such pixels
+#           black, so the image alone cannot show them), and that every float is finite
+set -u
+
+# Prints how many floats of PFM file $1 are NaN or infinite; false when there are any.
+# PFM floats from raytra are little-endian (a negative scale): a float is not finite when
+# its exponent bits are all ones, that is its last byte is 7f or ff and the one before
+# has its high bit set. Bytes are read with od, so that the host's byte order does not matter.
+count_nonfinite() {
+    header=$(head -n 3 "$1" | wc -c)
+    od -A n -v -t x1 -j "$header" "$1" | awk '
+        { for (i = 1; i <= NF; i++) {
+              n++
+              if (n % 4 == 3) high = $i
+              else if (n % 4 == 0 && ($i == "7f" || $i == "ff") && high ~ /^[89a-f]/) bad++
+          } }
+        END { print bad + 0; exit bad > 0 }'
+}
+
+# Checks PFM file $1, saying what is wrong with it; false when it has a non-finite float.
+check_pfm() {
+    if [ "$(head -c 2 "$1")" != PF ] || [ "$(sed -n 3p "$1")" != -1.0 ]; then
+        echo "FAIL $1: not a little-endian colour PFM file"
+        return 1
+    fi
+    bad=$(count_nonfinite "$1") && return 0
+    echo "FAIL $1: $bad floats are NaN or infinite"
+    return 1
+}
+
+usage() {
+    echo "usage: $0 pfm FILE... | render RAYTRA REFDIR" >&2
+    exit 2
+}
+[ $# -ge 1 ] || usage
+mode=$1
+shift
+if [ "$mode" = pfm ]; then
+    status=0
+    for file in "$@"; do
+        check_pfm "$file" || status=1
+    done
+    exit $status
+fi
+if [ "$mode" != render ] || [ $# -ne 2 ]; then
+    usage
+fi
+raytra=$1 refdir=$2
+top=$(cd "$(dirname "$0")/.." && pwd)
+tmp=$(mktemp -d /tmp/raytra-nonfinite.XXXXXX)
+trap 'rm -rf "$tmp"' EXIT
+trap 'exit 130' INT TERM
+
+# Every scene with the options of the reference renders, and every scene of scenes/ plainly.
+{
+    sed -e 's/#.*//' "$refdir/renders.txt" | awk 'NF >= 2 { $1 = ""; print substr($0, 2) }'
+    (cd "$top" && ls scenes/*.scn)
+} | sort -u >"$tmp/renders"
+
+passed=0 failed=0
+while read -r scene options; do
+    # shellcheck disable=SC2086 # options are words by design
+    if ! "$raytra" -q -j 2 $options "$top/$scene" "$tmp/out.pfm" 2>"$tmp/err"; then
+        echo "FAIL $scene $options: raytra failed:"
+        sed 's/^/    /' "$tmp/err"
+        failed=$((failed + 1))
+    elif grep -q 'NaN or infinite' "$tmp/err"; then
+        echo "FAIL $scene $options: $(grep 'NaN or infinite' "$tmp/err")"
+        failed=$((failed + 1))
+    elif ! check_pfm "$tmp/out.pfm" >"$tmp/why"; then
+        echo "FAIL $scene $options: $(cat "$tmp/why")"
+        failed=$((failed + 1))
+    else
+        passed=$((passed + 1))
+    fi
+done <"$tmp/renders"
+echo "nonfinite ($(basename "$(dirname "$refdir")")): $passed passed, $failed failed"
+[ "$failed" -eq 0 ]
