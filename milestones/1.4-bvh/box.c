@@ -9,32 +9,10 @@ Box box_empty(void)
     return (Box){vec3(INFINITY, INFINITY, INFINITY), vec3(-INFINITY, -INFINITY, -INFINITY)};
 }
 
-/* Returns the smallest box holding a and b. */
-Box box_union(Box a, Box b)
-{
-    return (Box){vec3(fmin(a.lo.x, b.lo.x), fmin(a.lo.y, b.lo.y), fmin(a.lo.z, b.lo.z)),
-                 vec3(fmax(a.hi.x, b.hi.x), fmax(a.hi.y, b.hi.y), fmax(a.hi.z, b.hi.z))};
-}
-
-/* Returns the smallest box holding b and the point p. */
-Box box_add_point(Box b, Vec3 p)
-{
-    return box_union(b, (Box){p, p});
-}
-
 /* Returns the centre of box b. */
 Vec3 box_center(Box b)
 {
     return vec3_scale(vec3_add(b.lo, b.hi), 0.5);
-}
-
-/* Returns half the surface area of box b, the quantity the SAH compares (0 when empty). */
-double box_half_area(Box b)
-{
-    Vec3 e = vec3_sub(b.hi, b.lo);
-    if (!(e.x >= 0 && e.y >= 0 && e.z >= 0))
-        return 0;
-    return e.x * e.y + e.y * e.z + e.z * e.x;
 }
 
 /* Tells whether box inner lies inside box outer (faces may touch). */

@@ -70,11 +70,42 @@ static inline bool box_hit(Box b, const BoxRay *r, double tmin, double tmax, dou
 }
 /* end excerpt: box-slab */
 
+/* Returns the smaller of a and b (inline: the build calls it hundreds of millions of times). */
+static inline double box_min(double a, double b)
+{
+    return a < b ? a : b;
+}
+
+/* Returns the larger of a and b. */
+static inline double box_max(double a, double b)
+{
+    return a > b ? a : b;
+}
+
+/* Returns the smallest box holding a and b. */
+static inline Box box_union(Box a, Box b)
+{
+    return (Box){vec3(box_min(a.lo.x, b.lo.x), box_min(a.lo.y, b.lo.y), box_min(a.lo.z, b.lo.z)),
+                 vec3(box_max(a.hi.x, b.hi.x), box_max(a.hi.y, b.hi.y), box_max(a.hi.z, b.hi.z))};
+}
+
+/* Returns the smallest box holding b and the point p. */
+static inline Box box_add_point(Box b, Vec3 p)
+{
+    return box_union(b, (Box){p, p});
+}
+
+/* Returns half the surface area of box b, the quantity the SAH compares (0 when empty). */
+static inline double box_half_area(Box b)
+{
+    Vec3 e = vec3_sub(b.hi, b.lo);
+    if (!(e.x >= 0 && e.y >= 0 && e.z >= 0))
+        return 0;
+    return e.x * e.y + e.y * e.z + e.z * e.x;
+}
+
 Box box_empty(void);
-Box box_union(Box a, Box b);
-Box box_add_point(Box b, Vec3 p);
 Vec3 box_center(Box b);
-double box_half_area(Box b);
 bool box_contains(Box outer, Box inner);
 Box box_of_sphere(const Sphere *s);
 Box box_of_triangle(const Triangle *tri);

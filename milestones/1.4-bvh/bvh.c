@@ -91,37 +91,47 @@ static int sah_split(Builder *b, int begin, int end, Box box, Box centroids, int
     if (!(area > 0))
         return -1; /* a point or a line: every split looks free, the SAH cannot choose */
     int n = end - begin;
+    /* The bins of the three axes are filled in one pass over the primitives. */
+    double lo[3], scale[3];
+    Box bin_box[3][BVH_BINS];
+    int bin_count[3][BVH_BINS] = {{0}};
+    for (int a = 0; a < 3; a++) {
+        lo[a] = axis_of(centroids.lo, a);
+        double extent = axis_of(centroids.hi, a) - lo[a];
+        /* Every centroid on one plane: nothing to split along this axis. */
+        scale[a] = extent > 0 ? BVH_BINS / extent : 0;
+        for (int k = 0; k < BVH_BINS; k++)
+            bin_box[a][k] = box_empty();
+    }
+    for (int k = begin; k < end; k++) {
+        uint32_t p = b->prims[k];
+        Vec3 c = b->centroids[p];
+        Box pb = b->boxes[p];
+        for (int a = 0; a < 3; a++) {
+            int bin = bin_of(axis_of(c, a), lo[a], scale[a]);
+            bin_box[a][bin] = box_union(bin_box[a][bin], pb);
+            bin_count[a][bin]++;
+        }
+    }
     double best_cost = n * COST_INTERSECT;
     int best_axis = -1, best_bin = 0;
     for (int a = 0; a < 3; a++) {
-        double lo = axis_of(centroids.lo, a), extent = axis_of(centroids.hi, a) - lo;
-        if (!(extent > 0))
-            continue; /* every centroid on one plane: nothing to split along this axis */
-        double scale = BVH_BINS / extent;
-        Box bin_box[BVH_BINS];
-        int bin_count[BVH_BINS] = {0};
-        for (int k = 0; k < BVH_BINS; k++)
-            bin_box[k] = box_empty();
-        for (int k = begin; k < end; k++) {
-            uint32_t p = b->prims[k];
-            int bin = bin_of(axis_of(b->centroids[p], a), lo, scale);
-            bin_box[bin] = box_union(bin_box[bin], b->boxes[p]);
-            bin_count[bin]++;
-        }
+        if (scale[a] == 0)
+            continue;
         /* One sweep from the right gathers A_R N_R for each plane, one from the left A_L N_L. */
         double right_cost[BVH_BINS];
         Box right = box_empty();
         int right_n = 0;
         for (int k = BVH_BINS - 1; k > 0; k--) {
-            right = box_union(right, bin_box[k]);
-            right_n += bin_count[k];
+            right = box_union(right, bin_box[a][k]);
+            right_n += bin_count[a][k];
             right_cost[k] = box_half_area(right) * right_n;
         }
         Box left = box_empty();
         int left_n = 0;
         for (int k = 1; k < BVH_BINS; k++) {
-            left = box_union(left, bin_box[k - 1]);
-            left_n += bin_count[k - 1];
+            left = box_union(left, bin_box[a][k - 1]);
+            left_n += bin_count[a][k - 1];
             if (left_n == 0 || left_n == n)
                 continue;
             double cost = COST_TRAVERSE +
@@ -136,11 +146,10 @@ static int sah_split(Builder *b, int begin, int end, Box box, Box centroids, int
     if (best_axis < 0)
         return -1;
     /* Partition in place: primitives of bins below best_bin to the front. */
-    double lo = axis_of(centroids.lo, best_axis);
-    double scale = BVH_BINS / (axis_of(centroids.hi, best_axis) - lo);
     int i = begin, j = end - 1;
     while (i <= j) {
-        if (bin_of(axis_of(b->centroids[b->prims[i]], best_axis), lo, scale) < best_bin) {
+        if (bin_of(axis_of(b->centroids[b->prims[i]], best_axis), lo[best_axis],
+                   scale[best_axis]) < best_bin) {
             i++;
         } else {
             uint32_t swap = b->prims[i];
@@ -263,10 +272,18 @@ typedef struct {
     double t;
 } Pending;
 
+/* The traversal is written once and inlined into each of its three users, where the leaf
+ * function becomes a direct call the compiler can inline too. */
+#if defined(__GNUC__)
+#define ALWAYS_INLINE inline __attribute__((always_inline))
+#else
+#define ALWAYS_INLINE inline
+#endif
+
 /* excerpt: bvh-traverse */
 /* Visits every leaf whose box ray r meets with tmin <= t <= *tmax, nearer boxes first,
  * calling leaf for each, without recursion. Returns true when leaf asked to stop. */
-static inline bool traverse(const Bvh *bvh, Ray r, double tmin, double *tmax, LeafFn leaf,
+static ALWAYS_INLINE bool traverse(const Bvh *bvh, Ray r, double tmin, double *tmax, LeafFn leaf,
                             void *state)
 {
     if (bvh->node_count == 0)
