@@ -39,10 +39,9 @@ static inline BoxRay box_ray(Ray r)
 /* Narrows [*t0, *t1] to the t where the ray lies between the two planes x_axis = lo and
  * x_axis = hi of one slab (the textbook's slab test; the lecture has no slide on
  * boxes). Entering is at the nearer plane: hi first when the ray travels towards -x.
- * A ray parallel to the slab
- * gets (lo - o) * inf, which is -inf or +inf, and so no constraint or an empty
- * interval, as it should; but a ray starting exactly on a plane of the slab gets
- * 0 * inf = NaN. Every comparison with NaN is false, so the two ifs below leave the
+ * A ray parallel to the slab gets (lo - o) * inf, which is -inf or +inf, and so no
+ * constraint or an empty interval, as it should; but a ray starting exactly on a
+ * plane of the slab gets 0 * inf = NaN. Every comparison with NaN is false, so the two ifs below leave the
  * interval as it was: the plane counts as part of the box, which is closed. */
 static inline void box_slab(double lo, double hi, double o, double inv, double *t0, double *t1)
 {
