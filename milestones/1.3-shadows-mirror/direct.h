@@ -11,6 +11,6 @@
 #include "trace.h"
 
 bool direct_in_shadow(const Tracer *tr, const Hit *hit, Ray r, const Incident *in, RayStats *stats);
-Color direct_radiance(const Tracer *tr, const Hit *hit, Ray r, RayStats *stats);
+Color direct_radiance(const Tracer *tr, const Hit *hit, Ray r, int depth, RayStats *stats);
 
 #endif

@@ -5,6 +5,16 @@
 #include "secondary.h"
 #include "shade.h"
 
+/* Returns the tracer of scene, finding hits with surfaces, set up by the command line. */
+Tracer tracer_make(const Scene *scene, Surfaces surfaces, const Options *opts)
+{
+    return (Tracer){.scene = scene,
+                    .surfaces = surfaces,
+                    .max_depth = opts->max_depth,
+                    .two_sided = opts->two_sided,
+                    .offset = opts->ray_offset};
+}
+
 /* excerpt: trace-radiance */
 /* Returns the radiance arriving along ray r: the light of the first surface it meets,
  * straight from the lights, plus k_m times the radiance along the mirror-reflected ray.
@@ -14,14 +24,11 @@ Color trace_radiance(const Tracer *tr, Ray r, int depth, RayStats *stats)
     Hit hit;
     if (!tr->surfaces.hit(tr->surfaces.data, r, 0, INFINITY, &hit))
         return color(0, 0, 0); /* the background */
-    if (shade_shows_back_face(&hit) && !tr->two_sided)
-        return SHADE_BACK_FACE_COLOR;
-
-    Color radiance = direct_radiance(tr, &hit, r, stats);
+    Color radiance = direct_radiance(tr, &hit, r, depth, stats);
 
     /* An ideal mirror sends back k_m of what arrives from the mirror direction, which is
      * what a ray traced in that direction finds: the same question, one bounce later. */
-    Color km = tr->scene->materials[hit.material].mirror;
+    Color km = shade_material(tr->scene, &hit, tr->two_sided)->mirror;
     if (!color_is_black(km) && depth < tr->max_depth) {
         Vec3 dir = secondary_reflect(r.dir, shade_normal(&hit));
         Ray reflected = secondary_ray(&hit, r, dir, tr->offset);

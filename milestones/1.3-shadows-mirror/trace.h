@@ -4,14 +4,12 @@
 
 #include <stdbool.h>
 
+#include "cli.h"
 #include "color.h"
 #include "ray.h"
 #include "render.h"
 #include "scene.h"
 #include "surfaces.h"
-
-/* The default of --max-depth: how many mirror bounces a path may take. */
-#define TRACE_MAX_DEPTH 20
 
 /* excerpt: tracer-struct */
 /* Everything a traced ray needs besides the ray, shared by every thread: read only. */
@@ -19,11 +17,12 @@ typedef struct {
     const Scene *scene;
     Surfaces surfaces; /* how a ray finds what it hits */
     int max_depth;     /* reflected rays a path may take */
-    bool two_sided;    /* shade back faces instead of showing them yellow */
+    bool two_sided;    /* shade back faces with their own material, not yellow */
     double offset;     /* where secondary rays start: see secondary_ray */
 } Tracer;
 /* end excerpt: tracer-struct */
 
+Tracer tracer_make(const Scene *scene, Surfaces surfaces, const Options *opts);
 Color trace_radiance(const Tracer *tr, Ray r, int depth, RayStats *stats);
 
 #endif

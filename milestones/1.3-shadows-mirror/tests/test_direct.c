@@ -75,9 +75,24 @@ START_TEST(ambient_only_gives_kd_times_ambient)
     Scene scene = {.ambient = {0.2, 0.5, 1.0}};
     Tracer tr = tracer(&scene);
     RayStats stats = {{0}};
-    Color c = direct_radiance(&tr, &floor_hit, from_above, &stats);
+    Color c = direct_radiance(&tr, &floor_hit, from_above, 0, &stats);
     ck_assert_color_near(c, color(0.1, 0.2, 0.2), 0);
     ck_assert_int_eq(stats.rays[RAY_SHADOW], 0);
+}
+END_TEST
+
+START_TEST(fall2016_ambient_only_where_camera_rays_hit)
+{
+    Scene scene = {.ambient = {0.2, 0.5, 1.0}, .convention = CONVENTION_FALL2016};
+    Tracer tr = tracer(&scene);
+    RayStats stats = {{0}};
+    ck_assert_color_near(direct_radiance(&tr, &floor_hit, from_above, 0, &stats),
+                         color(0.1, 0.2, 0.2), 0);
+    ck_assert_color_near(direct_radiance(&tr, &floor_hit, from_above, 1, &stats),
+                         color(0, 0, 0), 0);
+    scene.convention = CONVENTION_LECTURE;
+    ck_assert_color_near(direct_radiance(&tr, &floor_hit, from_above, 3, &stats),
+                         color(0.1, 0.2, 0.2), 0);
 }
 END_TEST
 
@@ -92,11 +107,11 @@ START_TEST(shadowed_light_leaves_ambient_only)
                    .ambient = {0.2, 0.2, 0.2}};
     Tracer tr = tracer(&scene);
     RayStats stats = {{0}};
-    ck_assert_color_near(direct_radiance(&tr, &floor_hit, from_above, &stats),
+    ck_assert_color_near(direct_radiance(&tr, &floor_hit, from_above, 0, &stats),
                          color(0.1, 0.08, 0.04), 1e-16);
     /* Without the sphere, kd (ambient + I cos 0) = kd * 1.2. */
     scene.sphere_count = 0;
-    ck_assert_color_near(direct_radiance(&tr, &floor_hit, from_above, &stats),
+    ck_assert_color_near(direct_radiance(&tr, &floor_hit, from_above, 0, &stats),
                          color(0.6, 0.48, 0.24), 1e-15);
 }
 END_TEST
@@ -107,7 +122,7 @@ START_TEST(no_shadow_ray_for_a_light_behind_the_surface)
     Scene scene = {.lights = &below, .light_count = 1};
     Tracer tr = tracer(&scene);
     RayStats stats = {{0}};
-    ck_assert_color_near(direct_radiance(&tr, &floor_hit, from_above, &stats), color(0, 0, 0), 0);
+    ck_assert_color_near(direct_radiance(&tr, &floor_hit, from_above, 0, &stats), color(0, 0, 0), 0);
     ck_assert_int_eq(stats.rays[RAY_SHADOW], 0);
 }
 END_TEST
@@ -160,6 +175,7 @@ static Suite *direct_suite(void)
     tcase_add_test(tc, sphere_behind_the_light_or_the_point_does_not);
     tcase_add_test(tc, directional_light_blocked);
     tcase_add_test(tc, ambient_only_gives_kd_times_ambient);
+    tcase_add_test(tc, fall2016_ambient_only_where_camera_rays_hit);
     tcase_add_test(tc, shadowed_light_leaves_ambient_only);
     tcase_add_test(tc, no_shadow_ray_for_a_light_behind_the_surface);
     tcase_add_test(tc, the_shadow_reaches_the_contact_point);

@@ -73,26 +73,36 @@ START_TEST(no_reflected_ray_when_km_is_zero)
 }
 END_TEST
 
-START_TEST(back_faces_are_yellow_in_mirrors_too)
+START_TEST(back_faces_are_lit_yellow_in_mirrors_too)
 {
-    /* The mirror floor reflects the ray onto the back of a triangle. */
+    /* The mirror floor reflects the ray onto the back of a triangle, which a sun lights
+     * from our side, straight on; an ambient light of 0.4 lights everything. */
     Material materials[] = {{.mirror = {0.5, 0.5, 0.5}}, {.diffuse = {1, 1, 1}}};
     Plane floor = {.normal = {0, 1, 0}, .d = 0, .material = 0};
     /* The triangle in the plane x = 10, counterclockwise seen from +x: its back faces us. */
     Triangle wall = {.a = {10, 0, -5}, .b = {10, 10, 0}, .c = {10, 0, 5}, .material = 1};
+    Light sun = {.kind = LIGHT_DIRECTIONAL, .direction = {1, 0, 0}, .color = {1, 1, 1}};
     Scene scene = {.materials = materials,
                    .material_count = 2,
                    .planes = &floor,
                    .plane_count = 1,
                    .triangles = &wall,
-                   .triangle_count = 1};
+                   .triangle_count = 1,
+                   .lights = &sun,
+                   .light_count = 1,
+                   .ambient = {0.4, 0.4, 0.4}};
     Tracer tr = tracer(&scene, 20);
     RayStats stats = {{0}};
     Ray r = ray(vec3(0, 5, 0), vec3_normalize(vec3(1, -1, 0)));
-    ck_assert_color_near(trace_radiance(&tr, r, 0, &stats), color(0.5, 0.5, 0), 0);
-    /* Shaded normally in two-sided mode: black, as nothing lights it. */
+    /* The back is yellow and diffuse, kd = (1, 1, 0): km (kd (sun cos 0 + ambient)). */
+    ck_assert_color_near(trace_radiance(&tr, r, 0, &stats), color(0.7, 0.7, 0), 1e-15);
+    /* Under fall2016 the ambient light counts where camera rays hit only: not in mirrors. */
+    scene.convention = CONVENTION_FALL2016;
+    ck_assert_color_near(trace_radiance(&tr, r, 0, &stats), color(0.5, 0.5, 0), 1e-15);
+    /* With --two-sided the back has the triangle's own white material. */
+    scene.convention = CONVENTION_LECTURE;
     tr.two_sided = true;
-    ck_assert_color_near(trace_radiance(&tr, r, 0, &stats), color(0, 0, 0), 0);
+    ck_assert_color_near(trace_radiance(&tr, r, 0, &stats), color(0.7, 0.7, 0.7), 1e-15);
 }
 END_TEST
 
@@ -114,7 +124,7 @@ static Suite *trace_suite(void)
     tcase_add_test(tc, facing_mirrors_stop_at_the_depth_limit);
     tcase_add_test(tc, a_mirror_shows_km_times_what_it_faces);
     tcase_add_test(tc, no_reflected_ray_when_km_is_zero);
-    tcase_add_test(tc, back_faces_are_yellow_in_mirrors_too);
+    tcase_add_test(tc, back_faces_are_lit_yellow_in_mirrors_too);
     tcase_add_test(tc, background_is_black);
     suite_add_tcase(s, tc);
     return s;
