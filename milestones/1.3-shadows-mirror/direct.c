@@ -7,10 +7,10 @@
 /* excerpt: direct-in-shadow */
 /* Tells whether something lies between hit's point and the light in: a shadow ray from
  * the point towards the light, which must not reach as far as the light itself. */
-bool direct_in_shadow(const Tracer *tr, const Hit *hit, Ray r, const Incident *in, RayStats *stats)
+bool direct_in_shadow(const Tracer *tr, const Hit *hit, Ray r, const Incident *in, Path *path)
 {
     Ray shadow = secondary_ray(hit, r, in->dir, tr->offset);
-    stats->rays[RAY_SHADOW]++;
+    path->stats->rays[RAY_SHADOW]++;
     /* Only what lies before the light blocks it, measured from the shadow ray's own
      * origin, a hair off the point. A directional light is infinitely far away. */
     double tmax = in->distance - vec3_dot(vec3_sub(shadow.origin, hit->point), in->dir);
@@ -22,7 +22,7 @@ bool direct_in_shadow(const Tracer *tr, const Hit *hit, Ray r, const Incident *i
 /* Returns the light that hit's surface reflects back along ray r straight from the
  * lights: k_d (.) ambient, plus Blinn-Phong for each light that is not in shadow.
  * Replaces part 1.2's shade_direct_radiance; depth counts the reflections before r. */
-Color direct_radiance(const Tracer *tr, const Hit *hit, Ray r, int depth, RayStats *stats)
+Color direct_radiance(const Tracer *tr, const Hit *hit, Ray r, int depth, Path *path)
 {
     const Scene *scene = tr->scene;
     const Material *m = shade_material(scene, hit, tr->two_sided);
@@ -37,7 +37,7 @@ Color direct_radiance(const Tracer *tr, const Hit *hit, Ray r, int depth, RaySta
     for (int k = 0; k < scene->light_count; k++) {
         Incident in = light_incident(&scene->lights[k], hit->point, scene_light_falls_off(scene));
         /* No shadow ray for a light behind the surface: it adds nothing anyway. */
-        if (vec3_dot(n, in.dir) <= 0 || direct_in_shadow(tr, hit, r, &in, stats))
+        if (vec3_dot(n, in.dir) <= 0 || direct_in_shadow(tr, hit, r, &in, path))
             continue;
         sum = color_add(sum, shade_blinn_phong(m, n, v, &in));
     }

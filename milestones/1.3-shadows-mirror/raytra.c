@@ -34,7 +34,8 @@ static Color trace_pixel(const void *ctx, int i, int j, RayStats *stats)
     const Part13 *part = ctx;
     Ray r = camera_ray(&part->view.camera, i + 0.5, j + 0.5);
     stats->rays[RAY_PRIMARY]++;
-    return trace_radiance(&part->tracer, r, 0, stats);
+    Path path = {.stats = stats};
+    return trace_radiance(&part->tracer, r, 0, &path);
 }
 /* end excerpt: trace-pixel */
 
