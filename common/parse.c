@@ -554,7 +554,7 @@ static void finish_planes(Scene *s)
     for (int k = 0; k < s->plane_count; k++) {
         Plane *pl = &s->planes[k];
         double len = vec3_length(pl->normal);
-        /* Slide 45: "d is measured in direction of normal", so d stays the distance
+        /* Slide 45 ("d is measured in direction of normal"): so d stays the distance
          * along the unit normal, whatever length N was given with; p.N = d is
          * p.N + (-d) = 0. */
         pl->normal = vec3_scale(pl->normal, 1.0 / len);

@@ -1,4 +1,4 @@
-/* sphere.c: the ray-sphere intersection of slides 50-52, computed without cancellation. */
+/* sphere.c: the ray-sphere intersection of slides 51-53 ("spheres - intersections"), computed without cancellation. */
 #include "sphere.h"
 
 #include <math.h>

@@ -1,4 +1,4 @@
-/* hit.h: the intersection record of slide 53: what a ray hit, where, and facing which way. */
+/* hit.h: the intersection record of slide 54 ("for ray/surface intersection tests, we need to record"): what a ray hit, where, and facing which way. */
 #ifndef RAYTRA_HIT_H
 #define RAYTRA_HIT_H
 

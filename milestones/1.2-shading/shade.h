@@ -1,4 +1,4 @@
-/* shade.h: Blinn-Phong shading (slides 17-21, textbook 4.5): diffuse plus specular, per light. */
+/* shade.h: Blinn-Phong shading (slides 18-20 ("diffuse (lambertian) shading"), textbook 4.5): diffuse plus specular, per light. */
 #ifndef RAYTRA_SHADE_H
 #define RAYTRA_SHADE_H
 

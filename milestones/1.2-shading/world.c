@@ -45,7 +45,7 @@ void world_complete_hit(const Scene *scene, Ray r, Hit *hit)
     hit->point = ray_at(r, hit->t);
     switch (hit->kind) {
     case SURFACE_SPHERE: {
-        /* Slide 52: the unit normal at p is (p - O) / R. */
+        /* Slide 53 ("unit normal at intersection is"): the unit normal at p is (p - O) / R. */
         const Sphere *s = &scene->spheres[hit->index];
         hit->normal = vec3_scale(vec3_sub(hit->point, s->center), 1 / s->radius);
         hit->material = s->material;

@@ -29,7 +29,7 @@ Color direct_radiance(const Tracer *tr, const Hit *hit, Ray r, int depth, Path *
     Vec3 n = shade_normal(hit);
     Vec3 v = vec3_neg(r.dir);
     /* The ambient light stands for the light bounced around by everything else, from
-     * no particular direction (slide 21). The lecture convention adds it at every hit;
+     * no particular direction (slide 21 ("+ shadows + ambient")). The lecture convention adds it at every hit;
      * the Fall 2016 term's renderers only where camera rays hit (docs/1.3). */
     Color sum = color(0, 0, 0);
     if (depth == 0 || scene->convention != CONVENTION_FALL2016)
