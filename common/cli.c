@@ -12,6 +12,7 @@
 #define FIELD(name) offsetof(Options, name)
 
 /* excerpt: cli-options */
+/* clang-format off: one option a paragraph reads best. */
 const CliOption cli_options[] = {
     {.name = "output", .letter = 'o', .kind = OPTION_TEXT, .metavar = "FILE",
      .help = "write the image to FILE (same as OUTPUT)", .field = FIELD(output)},
@@ -54,6 +55,7 @@ const CliOption cli_options[] = {
     {.name = "version", .help = "show the version and exit", .field = FIELD(version)},
     {0},
 };
+/* clang-format on */
 /* end excerpt: cli-options */
 
 enum { MAX_OPTIONS = 64 };
@@ -207,7 +209,8 @@ CliResult cli_parse(const CliSpec *spec, int argc, char **argv, Options *opts)
 
     opterr = 0;
     optind = 0; /* glibc: start afresh, also on a second call */
-    for (int c, index = -1; (c = getopt_long(argc, argv, shorts, longs, &index)) != -1; index = -1) {
+    int c, index = -1;
+    while ((c = getopt_long(argc, argv, shorts, longs, &index)) != -1) {
         const CliOption *o = NULL;
         if (c >= 256)
             o = accepted[c - 256];
@@ -223,6 +226,7 @@ CliResult cli_parse(const CliSpec *spec, int argc, char **argv, Options *opts)
         snprintf(shown, sizeof shown, "--%s", o->name);
         if (!set_value(o, shown, optarg, opts))
             return CLI_BAD_USAGE;
+        index = -1;
     }
     if (opts->help) {
         cli_print_help(spec, stdout);

@@ -1,4 +1,4 @@
-/* cli.h: the command line of every part, from one table of options: raytra SCENE [OUTPUT] [options]. */
+/* cli.h: the command line of every part, from one table of options. */
 #ifndef RAYTRA_CLI_H
 #define RAYTRA_CLI_H
 

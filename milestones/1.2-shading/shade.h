@@ -1,4 +1,5 @@
-/* shade.h: Blinn-Phong shading (slides 18-20 ("diffuse (lambertian) shading"), textbook 4.5): diffuse plus specular, per light. */
+/* shade.h: Blinn-Phong shading, diffuse plus specular, per light (textbook 4.5).
+ * Slides 18-20 ("diffuse (lambertian) shading"). */
 #ifndef RAYTRA_SHADE_H
 #define RAYTRA_SHADE_H
 

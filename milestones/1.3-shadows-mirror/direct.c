@@ -28,9 +28,8 @@ Color direct_radiance(const Tracer *tr, const Hit *hit, Ray r, int depth, Path *
     const Material *m = shade_material(scene, hit, tr->two_sided);
     Vec3 n = shade_normal(hit);
     Vec3 v = vec3_neg(r.dir);
-    /* The ambient light stands for the light bounced around by everything else, from
-     * no particular direction (slide 21 ("+ shadows + ambient")). The lecture convention adds it at every hit;
-     * the Fall 2016 term's renderers only where camera rays hit (docs/1.3). */
+    /* k_d (.) ambient, slide 21 ("+ shadows + ambient"): at every hit by the lecture
+     * convention, where camera rays hit only by fall2016's (docs/1.3-shadows-mirror.md). */
     Color sum = color(0, 0, 0);
     if (depth == 0 || scene->convention != CONVENTION_FALL2016)
         sum = color_mul(m->diffuse, scene->ambient);

@@ -1,4 +1,5 @@
-/* trace.h: the radiance along a ray, by recursive ray tracing (slide 13 ("recursive ray tracing - pseudocode"), textbook chapter 4). */
+/* trace.h: the radiance along a ray, by recursive ray tracing (textbook chapter 4).
+ * Slide 13 ("recursive ray tracing - pseudocode"). */
 #ifndef RAYTRA_TRACE_H
 #define RAYTRA_TRACE_H
 
