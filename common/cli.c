@@ -12,7 +12,7 @@
 #define FIELD(name) offsetof(Options, name)
 
 /* excerpt: cli-options */
-/* clang-format off: one option a paragraph reads best. */
+/* clang-format off */
 const CliOption cli_options[] = {
     {.name = "output", .letter = 'o', .kind = OPTION_TEXT, .metavar = "FILE",
      .help = "write the image to FILE (same as OUTPUT)", .field = FIELD(output)},
