@@ -36,6 +36,10 @@ const CliOption cli_options[] = {
      .field = FIELD(linear)},
     {.name = "strict", .help = "fail (exit 1) when a pixel comes out NaN or infinite",
      .field = FIELD(strict)},
+    {.name = "trace-pixel", .kind = OPTION_TEXT, .metavar = "X,Y",
+     .help = "print the ray tree of the pixel in column X, row Y (0,0 is the top-left "
+             "corner, as in image viewers) and write no image",
+     .field = FIELD(trace_pixel)},
     {.name = "two-sided",
      .help = "shade the backs of triangles and planes with their own material, not lit yellow",
      .field = FIELD(two_sided), .first_part = 12},

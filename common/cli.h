@@ -32,6 +32,8 @@ typedef struct {
     bool convention_given; /* on the command line: it overrides the scene file */
     double scale;
     bool help, version;
+    const char *trace_pixel;      /* "X,Y": print that pixel's ray tree, write no image */
+    const struct Explain *explain; /* set by app_main while tracing that pixel; else NULL */
     /* From part 1.2 on. */
     bool two_sided; /* shade back faces with their own material */
     /* From part 1.3 on. */

@@ -13,12 +13,17 @@
 static Color shade_pixel(const void *ctx, int i, int j, RayStats *stats)
 {
     const View *view = ctx;
+    const Explain *explain = view->opts->explain;
     Ray r = camera_ray(&view->camera, i + 0.5, j + 0.5);
     stats->rays[RAY_PRIMARY]++;
+    explain_ray(explain, 0, "camera", r);
     Hit hit;
-    if (!world_hit(view->scene, r, 0, INFINITY, &hit))
+    if (!world_hit(view->scene, r, 0, INFINITY, &hit)) {
+        explain_line(explain, 1, "hits nothing: the black background");
         return color(0, 0, 0);
-    return shade_direct_radiance(view->scene, &hit, r, view->opts->two_sided);
+    }
+    world_explain_hit(explain, 1, &hit);
+    return shade_direct_radiance(view->scene, &hit, r, view->opts->two_sided, explain);
 }
 /* end excerpt: shade-pixel */
 

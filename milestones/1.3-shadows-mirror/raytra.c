@@ -34,6 +34,7 @@ static Color trace_pixel(const void *ctx, int i, int j, RayStats *stats)
     const Part13 *part = ctx;
     Ray r = camera_ray(&part->view.camera, i + 0.5, j + 0.5);
     stats->rays[RAY_PRIMARY]++;
+    explain_ray(part->tracer.explain, 0, "camera", r);
     Path path = {.stats = stats};
     return trace_radiance(&part->tracer, r, 0, &path);
 }

@@ -7,6 +7,7 @@
 
 #include "cli.h"
 #include "color.h"
+#include "explain.h"
 #include "ray.h"
 #include "render.h"
 #include "scene.h"
@@ -33,6 +34,7 @@ struct Tracer {
     bool two_sided;    /* shade back faces with their own material, not yellow */
     double offset;     /* where secondary rays start: see secondary_ray */
     DirectFn direct;   /* direct_radiance; part 1.6 plugs in area-light sampling */
+    const Explain *explain; /* --trace-pixel: where each step is told; NULL when not */
 };
 /* end excerpt: tracer-struct */
 
