@@ -3,6 +3,7 @@
 #include <stdlib.h>
 
 #include "app.h"
+#include "explain.h"
 #include "sphere.h"
 #include "view.h"
 
@@ -11,12 +12,20 @@
 static Color red_or_black(const void *ctx, int i, int j, RayStats *stats)
 {
     const View *view = ctx;
+    const Explain *explain = view->opts->explain;
     Ray r = camera_ray(&view->camera, i + 0.5, j + 0.5);
     stats->rays[RAY_PRIMARY]++;
+    explain_ray(explain, 0, "camera", r);
     double t;
     for (int k = 0; k < view->scene->sphere_count; k++)
-        if (sphere_intersect(&view->scene->spheres[k], r, 0, INFINITY, &t))
+        if (sphere_intersect(&view->scene->spheres[k], r, 0, INFINITY, &t)) {
+            char where[300];
+            explain_line(explain, 1, "hits sphere %d%s at t = %.9g: red", k,
+                         explain_where(explain, view->scene->spheres[k].line, where, sizeof where),
+                         t);
             return color(1, 0, 0);
+        }
+    explain_line(explain, 1, "hits no sphere: black");
     return color(0, 0, 0);
 }
 /* end excerpt: red-or-black */
