@@ -39,7 +39,7 @@ static void scene_from_mesh(Scene *scene, const Mesh *mesh)
     for (int k = 0; k < mesh->triangle_count; k++) {
         const int *v = mesh->triangles[k];
         scene->triangles[k] =
-            (Triangle){mesh->vertices[v[0]], mesh->vertices[v[1]], mesh->vertices[v[2]], 0};
+            (Triangle){mesh->vertices[v[0]], mesh->vertices[v[1]], mesh->vertices[v[2]], 0, 0};
     }
     scene->triangle_count = mesh->triangle_count;
     scene->materials = calloc(1, sizeof *scene->materials);
@@ -79,7 +79,7 @@ static bool mesh_load(BenchMesh *m, const char *name, const char *path)
 static void subdivide(Scene *scene, Vec3 a, Vec3 b, Vec3 c, int level)
 {
     if (level == 0) {
-        scene->triangles[scene->triangle_count++] = (Triangle){a, b, c, 0};
+        scene->triangles[scene->triangle_count++] = (Triangle){a, b, c, 0, 0};
         return;
     }
     Vec3 ab = vec3_normalize(vec3_add(a, b)), bc = vec3_normalize(vec3_add(b, c)),

@@ -17,11 +17,14 @@ make -s -C "$top/milestones/1.3-shadows-mirror" >/dev/null && make -s -C "$top/m
 tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
 
-# Prints the seconds of one render of scene $2 by program $1 with the extra words
-# $3 (a MODE, or nothing) and options $4: raytra's summary line says "in S s".
+# Prints the seconds of one run of program $1 on scene $2 with the extra words $3
+# (a MODE, or nothing) and options $4: the whole run, reading the scene, building the
+# boxes or the BVH, rendering and writing the image.
 seconds() {
+    start=$(date +%s%N)
     # shellcheck disable=SC2086 # options are words by design
-    "$1" -j 1 $4 "$2" "$tmp/out.pfm" $3 2>&1 >/dev/null | sed -n 's/.* in \([0-9.]*\) s with.*/\1/p'
+    "$1" -q -j 1 $4 "$2" "$tmp/out.pfm" $3 || echo "render-times: $1 failed on $2" >&2
+    echo "$start $(date +%s%N)" | awk '{ printf "%.3f", ($2 - $1) / 1e9 }'
 }
 
 # Prints the table row of scene $1 (shown as $2) rendered with the options $3.
@@ -32,7 +35,7 @@ row() {
     set -- $info
     a=$(seconds "$old" "$scene" "" "$options") b=$(seconds "$new" "$scene" 0 "$options")
     c=$(seconds "$new" "$scene" 3 "$options")
-    speedup=$(echo "$a $c" | awk '{ printf "%.0f", $2 > 0 ? $1 / $2 : 0 }')
+    speedup=$(echo "$a $c" | awk '{ printf "%.0f", ($2 > 0 ? $1 / $2 : 0) }')
     echo "| $shown | $1 | $2 | $3 | $a | $b | $c | ${speedup}× |"
 }
 
@@ -48,7 +51,7 @@ row() {
         row "$corpus/$scene" "course: $scene (scale 0.1)" "--scale 0.1"
     done
 } >"$tmp/table"
-echo "*One thread, $(nproc) cores shared with other work, $(date -u +%Y-%m-%d); made by bench/render-times.sh.*" >>"$tmp/table"
+echo "*Seconds of a whole run (reading the scene, building, rendering, writing), one thread, $(nproc) cores shared with other work, $(date -u +%Y-%m-%d); made by bench/render-times.sh.*" >>"$tmp/table"
 
 if [ "${1:-}" = --update ]; then
     chapter=$2

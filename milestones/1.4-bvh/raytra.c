@@ -5,40 +5,8 @@
 #include "accel.h"
 #include "app.h"
 #include "light.h"
-#include "secondary.h"
 #include "trace.h"
 #include "view.h"
-
-static int mode = ACCEL_BVH;
-static int max_depth = TRACE_MAX_DEPTH;
-static bool two_sided;
-static double offset = SECONDARY_OFFSET;
-
-/* excerpt: mode-argument */
-/* The course's command line, raytra scene_file output_image [0|1|2|3], and the same
- * as an option, --mode N. */
-static const CliOption arguments[] = {
-    {"MODE", 0, OPTION_INT, "N",
-     "0: test every surface, each behind its own box; 1: draw every surface's box; "
-     "2: draw the BVH's leaf boxes; 3 (the default): render with the BVH",
-     &mode, 0, 3},
-    {0},
-};
-/* end excerpt: mode-argument */
-
-static const CliOption options[] = {
-    {"mode", 0, OPTION_INT, "N", "the same as the MODE argument", &mode, 0, 3},
-    {"max-depth", 0, OPTION_INT, "N",
-     "follow at most N mirror reflections along a path (default 20; 0: none)", &max_depth, 0, 1000},
-    {"two-sided", 0, OPTION_FLAG, NULL,
-     "shade the backs of triangles and planes like their fronts, not flat yellow", &two_sided, 0,
-     0},
-    {"ray-offset", 0, OPTION_NUMBER, "F",
-     "start shadow and reflected rays F times the size of the hit point's coordinates off "
-     "the surface (default 2^-32); 0 shows shadow acne, large values detach shadows",
-     &offset, 0, 1},
-    {0},
-};
 
 /* What every pixel reads: the camera, the tracer, and the geometry behind its Surfaces. */
 typedef struct {
@@ -48,25 +16,22 @@ typedef struct {
 } Part14;
 
 /* excerpt: setup */
-/* Builds the camera, the boxes or the BVH of the mode, and part 1.3's tracer on top. */
-static bool setup(const Scene *scene, void **ctx)
+/* Builds the camera, the boxes or the BVH of the mode (the course's third argument,
+ * raytra scene_file output_image [0|1|2|3], or --mode N), and part 1.3's tracer on top. */
+static bool setup(const Scene *scene, const Options *opts, void **ctx)
 {
     Part14 *part = malloc(sizeof *part);
     if (part == NULL)
         return false;
-    if (!accel_build(&part->accel, scene, (AccelMode)mode)) {
+    if (!accel_build(&part->accel, scene, (AccelMode)opts->mode)) {
         fprintf(stderr, "raytra: not enough memory for the bounding boxes of %s\n", scene->path);
         accel_free(&part->accel);
         free(part);
         return false;
     }
     light_note_area_lights(scene);
-    part->view = (View){camera_make(&scene->camera), scene};
-    part->tracer = (Tracer){.scene = scene,
-                            .surfaces = accel_surfaces(&part->accel),
-                            .max_depth = max_depth,
-                            .two_sided = two_sided,
-                            .offset = offset};
+    part->view = (View){camera_make(&scene->camera), scene, opts};
+    part->tracer = tracer_make(scene, accel_surfaces(&part->accel), opts);
     *ctx = part;
     return true;
 }
@@ -78,7 +43,9 @@ static Color trace_pixel(const void *ctx, int i, int j, RayStats *stats)
     const Part14 *part = ctx;
     Ray r = camera_ray(&part->view.camera, i + 0.5, j + 0.5);
     stats->rays[RAY_PRIMARY]++;
-    return trace_radiance(&part->tracer, r, 0, stats);
+    explain_ray(part->tracer.explain, 0, "camera", r);
+    Path path = {.stats = stats};
+    return trace_radiance(&part->tracer, r, 0, &path);
 }
 
 /* Prints the size and build time of the BVH, or of the boxes, after the summary line. */
@@ -108,9 +75,7 @@ static void cleanup(void *ctx)
 
 static const Program program = {
     .cli = {.part = "1.4-bvh",
-            .purpose = "part 1.3's ray tracer, accelerated by bounding boxes and a BVH",
-            .options = options,
-            .arguments = arguments},
+            .purpose = "part 1.3's ray tracer, accelerated by bounding boxes and a BVH"},
     .features = FEATURE_SPHERES | FEATURE_PLANES | FEATURE_TRIANGLES | FEATURE_POINT_LIGHTS |
                 FEATURE_DIRECTIONAL_LIGHTS | FEATURE_AREA_LIGHTS | FEATURE_AMBIENT_LIGHT |
                 FEATURE_MIRRORS | FEATURE_SHADING,

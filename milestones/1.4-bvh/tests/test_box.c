@@ -116,13 +116,13 @@ END_TEST
 
 START_TEST(boxes_of_surfaces)
 {
-    Sphere s = {vec3(1, 2, 3), 0.5, 0};
+    Sphere s = {vec3(1, 2, 3), 0.5, 0, 0};
     Box b = box_of_sphere(&s);
     /* The centre plus and minus the radius, grown by 2^-20 of the largest coordinate. */
     double m = ldexp(3.5, -20);
     ck_assert_vec3_near(b.lo, vec3(0.5 - m, 1.5 - m, 2.5 - m), 1e-15);
     ck_assert_vec3_near(b.hi, vec3(1.5 + m, 2.5 + m, 3.5 + m), 1e-15);
-    Triangle tri = {vec3(0, 0, 0), vec3(2, -1, 0), vec3(1, 4, 0), 0};
+    Triangle tri = {vec3(0, 0, 0), vec3(2, -1, 0), vec3(1, 4, 0), 0, 0};
     b = box_of_triangle(&tri);
     m = ldexp(4, -20);
     ck_assert_vec3_near(b.lo, vec3(-m, -1 - m, -m), 1e-15);

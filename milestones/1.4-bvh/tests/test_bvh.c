@@ -60,7 +60,7 @@ static void random_scene(Scene *scene, int n, double size, int spheres, int plan
     for (int k = 0; k < n; k++) {
         Vec3 a = rnd_point(0, 1);
         Triangle t = {a, vec3_add(a, vec3_scale(rnd_point(-1, 1), size)),
-                      vec3_add(a, vec3_scale(rnd_point(-1, 1), size)), k % 3};
+                      vec3_add(a, vec3_scale(rnd_point(-1, 1), size)), k % 3, 0};
         double u = rnd();
         if (k > 0 && u < 0.05)
             t = scene->triangles[(int)(rnd() * k)]; /* the same triangle again */
@@ -69,9 +69,9 @@ static void random_scene(Scene *scene, int n, double size, int spheres, int plan
         scene->triangles[k] = t;
     }
     for (int k = 0; k < spheres; k++)
-        scene->spheres[k] = (Sphere){rnd_point(0, 1), 0.01 + 0.1 * rnd(), k % 2};
+        scene->spheres[k] = (Sphere){rnd_point(0, 1), 0.01 + 0.1 * rnd(), k % 2, 0};
     for (int k = 0; k < planes; k++)
-        scene->planes[k] = (Plane){rnd_dir(), -0.5 + rnd(), 2};
+        scene->planes[k] = (Plane){rnd_dir(), -0.5 + rnd(), 2, 0};
     scene->triangle_count = n;
     scene->sphere_count = spheres;
     scene->plane_count = planes;
@@ -164,18 +164,18 @@ START_TEST(invariants_of_degenerate_sets)
     check_invariants(&scene);
     /* Triangles without area, all on one line. */
     for (int k = 0; k < 500; k++)
-        scene.triangles[k] = (Triangle){vec3(k, 0, 0), vec3(k + 1, 0, 0), vec3(k + 2, 0, 0), 0};
+        scene.triangles[k] = (Triangle){vec3(k, 0, 0), vec3(k + 1, 0, 0), vec3(k + 2, 0, 0), 0, 0};
     check_invariants(&scene);
     /* Points: triangles whose three corners coincide, some at the same place. */
     for (int k = 0; k < 500; k++) {
         Vec3 p = vec3(k % 7, 0, 0);
-        scene.triangles[k] = (Triangle){p, p, p, 0};
+        scene.triangles[k] = (Triangle){p, p, p, 0, 0};
     }
     check_invariants(&scene);
     /* Depth: sizes doubling, each triangle twice as far as the last, a chain for the SAH. */
     for (int k = 0; k < 500; k++) {
         double x = ldexp(1, k % 60);
-        scene.triangles[k] = (Triangle){vec3(x, 0, 0), vec3(x, 1, 0), vec3(x, 0, 1), 0};
+        scene.triangles[k] = (Triangle){vec3(x, 0, 0), vec3(x, 1, 0), vec3(x, 0, 1), 0, 0};
     }
     check_invariants(&scene);
     scene_free(&scene);
