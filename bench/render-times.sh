@@ -51,6 +51,7 @@ row() {
         row "$corpus/$scene" "course: $scene (scale 0.1)" "--scale 0.1"
     done
 } >"$tmp/table"
+echo >>"$tmp/table"
 echo "*Seconds of a whole run (reading the scene, building, rendering, writing), one thread, $(nproc) cores shared with other work, $(date -u +%Y-%m-%d); made by bench/render-times.sh.*" >>"$tmp/table"
 
 if [ "${1:-}" = --update ]; then

@@ -3,6 +3,9 @@
 #
 # Usage: tests/same-images.sh RAYTRA_1_4 RAYTRA_1_3
 #
+# It also checks that the course's positional MODE and --mode render the same, and
+# that a MODE other than 0-3 is a usage error (exit status 2).
+#
 # Every reference scene of parts 1.1 to 1.3 (their references/renders.txt, with the
 # options given there) and every scene of the course's corpus (../shared/course-scenes,
 # at --scale 0.05 as tests/course-scenes.sh renders it) is rendered as PFM by part 1.3
@@ -41,6 +44,21 @@ compare() {
     done
 }
 
+# The course's positional MODE and --mode are the same; any other MODE is a usage error.
+demo=$top/scenes/demo.scn
+for mode in 1 2; do
+    count=$((count + 1))
+    "$new" -q --scale 0.25 "$demo" "$tmp/a.pfm" $mode && "$new" -q --scale 0.25 --mode $mode "$demo" "$tmp/b.pfm" &&
+        cmp -s "$tmp/a.pfm" "$tmp/b.pfm" || { echo "FAIL: MODE $mode and --mode $mode differ"; failed=$((failed + 1)); }
+done
+for bad in 4 7 x 1.5; do
+    count=$((count + 1))
+    "$new" -q "$demo" "$tmp/a.pfm" "$bad" 2>"$tmp/err"
+    status=$?
+    [ $status -eq 2 ] && grep -q MODE "$tmp/err" ||
+        { echo "FAIL: MODE '$bad' gave exit status $status:"; sed 's/^/    /' "$tmp/err"; failed=$((failed + 1)); }
+done
+
 for part in 1.1-spheres-red 1.2-shading 1.3-shadows-mirror; do
     while read -r image scene options; do
         case $image in '' | '#'*) continue ;; esac
@@ -56,6 +74,6 @@ if [ -d "$corpus" ]; then
 else
     echo "same-images: SKIPPED the course corpus: $corpus does not exist"
 fi
-echo "same-images: $count renders in modes 0 and 3, $failed differ from part 1.3;" \
+echo "same-images: $count checks (renders in modes 0 and 3 against part 1.3, MODE against --mode), $failed failed;" \
     "$skipped scenes part 1.3 cannot render (missing meshes, OBJ files) skipped"
 [ $failed -eq 0 ]
