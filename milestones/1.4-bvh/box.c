@@ -64,21 +64,28 @@ bool box_hit_face(Box b, Ray r, double tmin, double tmax, BoxHit *hit)
     for (int a = 0; a < 3; a++) {
         double near = t0, far = t1;
         box_slab(lo[a], hi[a], o[a], 1 / d[a], &near, &far);
-        if (near > t0)
-            t0 = near, axis0 = a;
-        if (far < t1)
-            t1 = far, axis1 = a;
+        if (near > t0) {
+            t0 = near;
+            axis0 = a;
+        }
+        if (far < t1) {
+            t1 = far;
+            axis1 = a;
+        }
     }
     if (!(t0 <= t1))
         return false;
     double t;
     int axis;
-    if (t0 > tmin && t0 < tmax)
-        t = t0, axis = axis0;
-    else if (t1 > tmin && t1 < tmax)
-        t = t1, axis = axis1;
-    else
+    if (t0 > tmin && t0 < tmax) {
+        t = t0;
+        axis = axis0;
+    } else if (t1 > tmin && t1 < tmax) {
+        t = t1;
+        axis = axis1;
+    } else {
         return false;
+    }
     /* The face's normal is +-e_axis; we show the side that faces the ray's origin, so a
      * box seen from inside is lit like one seen from outside. */
     *hit = (BoxHit){t, axis, d[axis] > 0 ? -1 : 1};
