@@ -283,7 +283,8 @@ static void bench_mesh(BenchMesh *m, View v, int res)
                 Job bj = {.by = BY_BASELINE, .baseline = base, .rays = rays, .count = count,
                           .shadow = s == 1};
                 double brate = trace_rate(&bj, threads, &base_hits);
-                printf("   Embree %7.2f Mrays/s   raytra/Embree %.2f", brate, rate / brate);
+                printf("   Embree %7.2f Mrays/s (%ld)   raytra/Embree %.2f", brate, base_hits,
+                       rate / brate);
             }
             printf("\n");
         }
