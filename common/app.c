@@ -157,19 +157,61 @@ static void trace_one_pixel(const Program *program, const void *ctx, const Scene
            image_encode_8bit(radiance.g, enc), image_encode_8bit(radiance.b, enc));
 }
 
-/* Renders the scene with the part's pixel function into img; false when stopped. */
-static bool render(const Program *program, void *ctx, const Options *opts, Image *img,
-                   RenderResult *result)
+/* Tells whether the --view asked for, if any, is one this part can draw; says why not. */
+static bool view_usable(const Program *program, const Options *opts)
 {
+    ViewKind kind;
+    if (opts->view == NULL)
+        return true;
+    if (!debugview_from_name(opts->view, &kind)) {
+        fprintf(stderr, "raytra: unknown view '%s' (%s)\n", opts->view, debugview_names());
+        return false;
+    }
+    if (program->probe == NULL ||
+        (kind == VIEW_BOX_TESTS && cli_part_number(program->cli.part) < 14)) {
+        fprintf(stderr, "raytra: part %s cannot draw the view '%s'%s\n", program->cli.part,
+                opts->view, kind == VIEW_BOX_TESTS ? " (boxes come in part 1.4)" : "");
+        return false;
+    }
+    return true;
+}
+
+/* What --view's pixel function reads: the part's probe and state, and the view. */
+typedef struct {
+    const Program *program;
+    const void *ctx;
+    ViewKind kind;
+} ViewJob;
+
+/* The pixel function of --view: the colour of what the camera ray meets first. */
+static Color view_pixel(const void *ctx, int i, int j, RayStats *stats)
+{
+    const ViewJob *view = ctx;
+    Probe probe = {0};
+    view->program->probe(view->ctx, i, j, &probe);
+    stats->rays[RAY_PRIMARY]++;
+    return debugview_color(view->kind, &probe);
+}
+
+/* Renders the scene with the part's pixel function, or the view's, into img; false
+ * when stopped. */
+static bool render(const Program *program, void *ctx, const Options *opts, const Scene *scene,
+                   Image *img, RenderResult *result)
+{
+    ViewJob view = {program, ctx, VIEW_NONE};
+    if (opts->view != NULL)
+        debugview_from_name(opts->view, &view.kind);
     RenderJob job = {
-        .pixel = program->pixel,
-        .ctx = ctx,
+        .pixel = view.kind != VIEW_NONE ? view_pixel : program->pixel,
+        .ctx = view.kind != VIEW_NONE ? (const void *)&view : ctx,
         .threads = opts->threads,
         .progress = !opts->quiet && isatty(STDERR_FILENO),
     };
     render_image(img, &job, result);
     if (result->stopped)
         return false;
+    if (view.kind != VIEW_NONE)
+        debugview_finish(view.kind, img, scene->light_count, stderr);
     if (result->nonfinite > 0)
         fprintf(stderr,
                 "raytra: warning: %ld pixels came out NaN or infinite and were written black "
@@ -186,6 +228,8 @@ int app_main(const Program *program, int argc, char **argv)
     if (cli != CLI_RUN)
         return cli == CLI_DONE ? EXIT_SUCCESS : EXIT_USAGE;
 
+    if (!view_usable(program, &opts))
+        return EXIT_USAGE;
     char *output = opts.output ? strdup(opts.output) : cli_default_output(opts.scene);
     if (output == NULL) {
         fprintf(stderr, "raytra: out of memory\n");
@@ -240,7 +284,7 @@ int app_main(const Program *program, int argc, char **argv)
         goto done;
     }
     RenderResult result;
-    if (render(program, ctx, &opts, &img, &result) && write_image(&img, output, &opts)) {
+    if (render(program, ctx, &opts, &scene, &img, &result) && write_image(&img, output, &opts)) {
         status = EXIT_SUCCESS;
         if (!opts.quiet) {
             print_summary(output, &img, &opts, &result);

@@ -98,3 +98,15 @@ void world_explain_hit(const Explain *e, int depth, const Hit *hit)
                  m->diffuse.g, m->diffuse.b, m->specular.r, m->specular.g, m->specular.b, m->phong,
                  m->mirror.r, m->mirror.g, m->mirror.b);
 }
+
+/* Returns a number for the surface hit, different for every surface of the scene:
+ * spheres first, then planes, then triangles. */
+int world_surface_id(const Scene *scene, const Hit *hit)
+{
+    switch (hit->kind) {
+    case SURFACE_SPHERE: return hit->index;
+    case SURFACE_PLANE: return scene->sphere_count + hit->index;
+    case SURFACE_TRIANGLE: return scene->sphere_count + scene->plane_count + hit->index;
+    }
+    return 0;
+}
