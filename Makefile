@@ -8,6 +8,7 @@
 #   make valgrind    render scenes of every part, and broken inputs, under valgrind's memcheck
 #   make fuzz        build the libFuzzer harnesses of the scene and OBJ readers (clang)
 #   make fuzz-run    fuzz each reader for FUZZ_SECONDS (default 1800) s (docs/robustness.md)
+#   make mistakes    render the gallery of common mistakes and write docs/mistakes.md
 #
 # WERROR=1 turns warnings into errors; SANITIZE=1 builds and tests everything
 # with AddressSanitizer and UndefinedBehaviorSanitizer.
@@ -27,7 +28,7 @@ FUZZ_SECONDS ?= 1800
 
 .PHONY: all test demo references docs check-docs check-slides check-layout check-course clean \
         check-robust check-fuzz-regressions check-bad-input check-interrupt check-nonfinite \
-        check-course-render valgrind fuzz fuzz-run
+        check-course-render valgrind fuzz fuzz-run mistakes
 .NOTPARALLEL:
 
 all:
@@ -42,6 +43,7 @@ test:
 	@$(SUBMAKE) -C tests test
 	@$(SUBMAKE) -C tools test
 	@for part in $(PARTS); do $(SUBMAKE) -C milestones/$$part test || exit 1; done
+	@$(SUBMAKE) -C tools/mistakes
 	@$(SUBMAKE) check-docs check-slides check-layout check-course
 	@$(SUBMAKE) check-robust
 	@echo "make test: every test passed"
@@ -111,6 +113,11 @@ demo: all
 	@echo; echo "make demo: the demo scene as each part draws it:"; \
 	for part in $(PARTS); do echo "    out/demo-$$part.png"; done
 
+# The gallery of common mistakes: part 1.3 with one function broken at a time.
+mistakes: all
+	@$(SUBMAKE) -C tools/mistakes
+	@tools/mistakes/gallery.sh
+
 references:
 	$(DEPS_STEP)
 	@for part in $(PARTS); do $(SUBMAKE) -C milestones/$$part references || exit 1; done
@@ -120,5 +127,6 @@ clean:
 	@$(SUBMAKE) -C tests clean
 	@$(SUBMAKE) -C tests/fuzz clean
 	@$(SUBMAKE) -C tools clean
+	@$(SUBMAKE) -C tools/mistakes clean
 	@for part in $(PARTS); do $(SUBMAKE) -C milestones/$$part clean; done
 	rm -rf out
