@@ -26,7 +26,7 @@ FIRST    := $(call program,$(firstword $(PARTS)))
 COURSE_SCALE ?= 0.05
 FUZZ_SECONDS ?= 1800
 
-.PHONY: all test demo references docs check-docs check-slides check-layout check-course clean \
+.PHONY: all test demo references docs check-docs check-slides check-figures check-layout check-course clean \
         check-robust check-fuzz-regressions check-bad-input check-interrupt check-nonfinite \
         check-course-render valgrind fuzz fuzz-run mistakes
 .NOTPARALLEL:
@@ -44,7 +44,7 @@ test:
 	@$(SUBMAKE) -C tools test
 	@for part in $(PARTS); do $(SUBMAKE) -C milestones/$$part test || exit 1; done
 	@$(SUBMAKE) -C tools/mistakes
-	@$(SUBMAKE) check-docs check-slides check-layout check-course
+	@$(SUBMAKE) check-docs check-slides check-figures check-exercises check-layout check-course
 	@$(SUBMAKE) check-robust
 	@echo "make test: every test passed"
 
@@ -94,8 +94,16 @@ check-docs:
 	@$(SUBMAKE) -C tools docsnip
 	@$(DOCSNIP) --root . --check $(CHAPTERS) && echo "check-docs: every excerpt matches the source"
 
+# Every SVG of docs/figures is well-formed with a viewBox; every figure linked to exists.
+check-figures:
+	@tests/figures.sh
+
 check-layout:
 	@tools/check-layout.sh $(BUILD)
+
+# Every pixel answer of the chapters' exercises agrees with a render (docs/exercises-answers.md).
+check-exercises:
+	@scenes/exercises/check.sh
 
 # Every "slide N" in the project quotes words that stand on slide N of the lecture.
 check-slides:
