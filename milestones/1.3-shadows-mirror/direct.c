@@ -4,6 +4,7 @@
 #include "secondary.h"
 #include "shade.h"
 
+/* starter: todo */
 /* excerpt: direct-in-shadow */
 /* Tells whether something lies between hit's point and the light in: a shadow ray from
  * the point towards the light, which must not reach as far as the light itself. */
@@ -18,6 +19,7 @@ bool direct_in_shadow(const Tracer *tr, const Hit *hit, Ray r, const Incident *i
 }
 /* end excerpt: direct-in-shadow */
 
+/* starter: todo */
 /* excerpt: direct-radiance */
 /* Returns the light that hit's surface reflects back along ray r straight from the
  * lights: k_d (.) ambient, plus Blinn-Phong for each light that is not in shadow.
