@@ -55,12 +55,13 @@ dest=${2:-$top/out/starter-$part}
 # USES, SOURCES and TESTS as the part's Makefile sets them, asked of make itself
 # (without the caller's MAKEFLAGS: a PART=... given to the top make must not leak in).
 vars=$(mktemp) || exit 2
-printf 'starter-vars:\n\t@echo $(USES) / $(TESTS)\n' >"$vars"
-answer=$(MAKEFLAGS= make --no-print-directory -s -C "$top/milestones/$part" -f Makefile -f "$vars" \
+# shellcheck disable=SC2016 # $(USES) is make's, not the shell's
+printf 'starter-vars:\n\t@echo "$(USES)|$(TESTS)"\n' >"$vars"
+answer=$(MAKEFLAGS='' make --no-print-directory -s -C "$top/milestones/$part" -f Makefile -f "$vars" \
     starter-vars) || { rm -f "$vars"; die "cannot read milestones/$part/Makefile"; }
 rm -f "$vars"
-uses=${answer%%/*}
-tests=${answer#*/}
+uses=${answer%%|*}
+tests=${answer#*|}
 
 # DEST is made in a temporary folder beside it and renamed when complete. An old
 # starter (it holds .raytra-starter) is replaced; anything else is left alone.
@@ -79,7 +80,7 @@ filter() { # MODE SOURCE OUTPUT NAME-IN-LIST LIST
     awk -v mode="$1" -v file="$4" -v list="$5" '
     function trim(s) { gsub(/^[ \t]+|[ \t]+$/, "", s); return s }
     function emit(s) { print s; lines++ }
-    function fail(msg) { printf "%s:%d: %s\n", FILENAME, FNR, msg > "/dev/stderr"; bad = 1; exit 2 }
+    function fail(msg) { printf "%s:%d: %s\n", file, FNR, msg > "/dev/stderr"; bad = 1; exit 2 }
     # The body of a stub: the TODO, the parameters cast to void, a harmless return.
     function stub(sig,    todo, open, head, params, name, type, n, k, p, ret) {
         open = index(sig, "(")
@@ -102,14 +103,16 @@ filter() { # MODE SOURCE OUTPUT NAME-IN-LIST LIST
             match(p[k], /[A-Za-z_][A-Za-z0-9_]*$/)
             emit("    (void)" substr(p[k], RSTART, RLENGTH) ";")
         }
+        # excerpt: starter-return
+        # The harmless value: nothing found, black, zero, a struct of zeros.
         if (type == "void") ret = ""
         else if (type == "bool") ret = "false"
         else if (type == "Color") ret = "color(0, 0, 0)"
         else if (type ~ /\*/ || type ~ /^((un)?signed|long|short|int|char|float|double|size_t)( |$)/) ret = "0"
         else ret = "(" type "){0}"
         if (ret != "") emit("    return " ret ";")
+        # end excerpt: starter-return
         printf "%s:%d: %s\n", file, todo, name >> list
-        stubs++
     }
     /^[ \t]*\/\* (end )?excerpt: [a-z0-9-]+ \*\/[ \t]*$/ { next }
     state == 0 && /^\/\* starter: todo(: .*)? \*\/$/ {
@@ -184,7 +187,7 @@ done || exit 2
 sed "s/@PART@/$part/g" >"$tmp/Makefile" <<'EOF'
 # Makefile of the starter of part @PART@: builds raytra, tests it and compares its images.
 #
-#   make          build milestones/@PART@/raytra
+#   make          build milestones/@PART@/raytra, and copy it to ./raytra
 #   make check    build, run the part's unit tests, render every scene of
 #                 milestones/@PART@/references/renders.txt and compare each render with
 #                 its reference image; renders and heat maps go to out/check/
@@ -201,13 +204,16 @@ PART_PROGRAM := $(PART_DIR)/$(if $(filter 1,$(SANITIZE)),$(BUILD)/raytra,raytra)
 .PHONY: all check clean
 .NOTPARALLEL:
 
+# The program is copied to the top too, where tools/grade looks for a submission's raytra.
 all:
 	$(DEPS_STEP)
 	@$(SUBMAKE) -C $(PART_DIR)
+	@cp $(PART_PROGRAM) raytra
 
 check:
 	$(DEPS_STEP) test
-	@$(SUBMAKE) -C $(PART_DIR) all test-programs
+	@$(SUBMAKE) all
+	@$(SUBMAKE) -C $(PART_DIR) test-programs
 	@$(SUBMAKE) -C tools imgdiff
 	@sh tools/starter-check.sh $(PART_DIR) $(PART_PROGRAM) $(PART_DIR)/$(BUILD)/tests $(IMGDIFF) out/check
 
@@ -215,7 +221,7 @@ clean:
 	@$(SUBMAKE) -C common clean
 	@$(SUBMAKE) -C tools clean
 	@for dir in milestones/*; do $(SUBMAKE) -C $$dir clean; done
-	rm -rf out
+	rm -rf out raytra
 EOF
 
 # The starter's README: what to do, and where each TODO is.
