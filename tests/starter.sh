@@ -39,12 +39,13 @@ for part in "$@"; do
 
     # The solution is the repository's code; the stubs stand where the markers were.
     markers=0
-    for file in "$solved"/milestones/*/*.c; do
+    for file in "$solved"/milestones/*/*.[ch] "$solved"/common/*.[ch]; do
         rel=${file#"$solved"/}
         if ! grep -v -e '^/\* starter: ' -e '^[[:space:]]*/\* \(end \)\{0,1\}excerpt: ' "$top/$rel" |
             cmp -s - "$file"; then
             fail "the solution's $rel is not the repository's less its marker and excerpt lines"
         fi
+        case $rel in *.h | common/*) continue ;; esac
         if [ -n "$options" ] || [ "${rel#milestones/"$part"/}" != "$rel" ]; then
             markers=$((markers + $(grep -c '^/\* starter: todo' "$top/$rel")))
         fi
@@ -52,7 +53,8 @@ for part in "$@"; do
     todos=$(cat "$stub"/milestones/*/*.c | grep -c '^    /\* TODO: ')
     [ "$markers" -gt 0 ] || fail "no function of the part is marked /* starter: todo */"
     [ "$todos" -eq "$markers" ] || fail "$todos TODO stubs for $markers markers"
-    if grep -l 'starter:' "$stub"/milestones/*/*.c "$solved"/milestones/*/*.c; then
+    if grep -l '^/\* starter: ' "$stub"/*/*.[ch] "$stub"/milestones/*/*.[ch] \
+        "$solved"/milestones/*/*.[ch]; then
         fail "marker lines left in the files above"
     fi
 

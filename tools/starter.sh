@@ -142,17 +142,26 @@ filter() { # MODE SOURCE OUTPUT NAME-IN-LIST LIST
 copy_part() { # PART MODE
     src=$top/milestones/$1
     mkdir -p "$tmp/milestones/$1"
-    cp "$src/Makefile" "$src"/*.h "$tmp/milestones/$1/" || exit 2
+    cp "$src/Makefile" "$tmp/milestones/$1/" || exit 2
     [ -f "$src/README.md" ] && cp "$src/README.md" "$tmp/milestones/$1/"
-    for c in "$src"/*.c; do
-        filter "$2" "$c" "$tmp/milestones/$1/${c##*/}" "milestones/$1/${c##*/}" "$tmp/todo.txt" ||
-            exit 2
+    copy_sources "milestones/$1" "$2"
+}
+
+# Copies the C files of a folder of the repository, filtered: MODE for the .c files,
+# and the headers only stripped of their marker and excerpt lines.
+copy_sources() { # FOLDER MODE
+    mkdir -p "$tmp/$1"
+    for c in "$top/$1"/*.c "$top/$1"/*.h; do
+        mode=$2
+        case $c in *.h) mode=solution ;; esac
+        filter $mode "$c" "$tmp/$1/${c##*/}" "$1/${c##*/}" "$tmp/todo.txt" || exit 2
     done
 }
 
 : >"$tmp/todo.txt"
-mkdir -p "$tmp/common" "$tmp/tools" "$tmp/tests" "$tmp/scenes" || exit 2
-cp "$top/common"/*.c "$top/common"/*.h "$top/common"/*.mk "$top/common/Makefile" "$tmp/common/" &&
+mkdir -p "$tmp/tools" "$tmp/tests" "$tmp/scenes" || exit 2
+copy_sources common solution
+cp "$top/common"/*.mk "$top/common/Makefile" "$tmp/common/" &&
     cp "$top/tools"/*.c "$top/tools"/*.h "$top/tools"/*.mk "$top/tools/Makefile" \
         "$top/tools/deps.sh" "$top/tools/starter-check.sh" "$tmp/tools/" &&
     cp "$top/tests/testing.h" "$top/tests/regress.sh" "$tmp/tests/" || exit 2
@@ -249,6 +258,8 @@ earlier="the parts in \`milestones/\` other than $part are complete."
     echo
     echo "\`common/\` is the library every part links (vectors, scenes, images, the"
     echo "render loop); $earlier"
+    echo "\`milestones/$part/README.md\` describes the part; the chapters it links to"
+    echo "(\`docs/\`) show its solution and are not in the starter."
 } >"$tmp/README.md"
 rm "$tmp/todo.txt"
 echo "raytra starter of part $part" >"$tmp/.raytra-starter"
