@@ -7,7 +7,8 @@
 # renders each line of PART_DIR/references/renders.txt (IMAGE SCENE [arguments],
 # SCENE from the top of the starter) into OUT/IMAGE, compares it with the
 # reference by imgdiff's default tolerances and writes its heat map to
-# OUT/NAME.heat.png and imgdiff's figures to OUT/NAME.diff.txt. Exit status 0
+# OUT/NAME.heat.png and imgdiff's figures to OUT/NAME.diff.txt; a render that runs
+# longer than RENDER_SECONDS (default 120) fails. Exit status 0
 # when every test passes and every image matches, 1 otherwise.
 set -u
 [ $# -eq 5 ] || { echo "usage: $0 PART_DIR RAYTRA TEST_DIR IMGDIFF OUT" >&2; exit 2; }
@@ -30,13 +31,16 @@ for t in "$test_dir"/test_*; do
     tests=$((tests + 1))
     echo "== unit test ${t##*/}"
     mkdir "$out/tests/${t##*/}" || exit 2
-    if ! (cd "$out/tests/${t##*/}" && "$t"); then
+    if ! (cd "$out/tests/${t##*/}" && "$t" </dev/null); then
         echo "FAIL ${t##*/} (the files it wrote are in $out/tests/${t##*/})"
         tests_failed=$((tests_failed + 1))
     fi
 done
 
-# The images: each render, its comparison and its heat map.
+# The images: each render, its comparison and its heat map. A render that runs past
+# RENDER_SECONDS (default 120) is stopped, when coreutils' timeout is there to do it.
+limit=
+command -v timeout >/dev/null 2>&1 && limit="timeout ${RENDER_SECONDS:-120}"
 echo "== images: renders and heat maps go to $out/"
 images=0 images_failed=0
 while read -r image scene options; do
@@ -44,8 +48,8 @@ while read -r image scene options; do
     images=$((images + 1))
     name=${image%.*}
     # shellcheck disable=SC2086 # the options are words by design
-    if ! "$raytra" -q "$top/$scene" "$out/$image" $options 2>"$out/$name.log"; then
-        echo "FAIL $image: raytra failed on $scene (its output: $out/$name.log):"
+    if ! $limit "$raytra" -q "$top/$scene" "$out/$image" $options </dev/null 2>"$out/$name.log"; then
+        echo "FAIL $image: raytra failed or ran too long on $scene (its output: $out/$name.log):"
         tail -n 5 "$out/$name.log" | sed 's/^/    /'
         images_failed=$((images_failed + 1))
     elif "$imgdiff" --diff "$out/$name.heat.png" "$refdir/$image" "$out/$image" \
