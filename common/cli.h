@@ -39,6 +39,7 @@ typedef struct {
     Convention convention;
     bool convention_given; /* on the command line: it overrides the scene file */
     double scale;
+    bool strict;
 } Options;
 
 /* What one part's program accepts beyond the shared options. */
