@@ -116,6 +116,59 @@ START_TEST(strict_fails_on_a_nan_pixel)
 }
 END_TEST
 
+/* A smooth gradient, beyond 1 in places, as a render gives. */
+static Color gradient(const void *ctx, int i, int j, RayStats *stats)
+{
+    (void)ctx, (void)stats;
+    return color(i / 3.0, j / 2.0 * 1.5, 0.3);
+}
+
+static const Program gradient_program = {
+    .cli = {"9.9-test", "testing the shared program", NULL, NULL},
+    .features = ~0u,
+    .pixel = gradient,
+};
+
+/* Reads the whole of path into a buffer to free; its size in *size. */
+static unsigned char *slurp(const char *path, size_t *size)
+{
+    FILE *f = fopen(path, "rb");
+    ck_assert_ptr_nonnull(f);
+    unsigned char *data = malloc(1 << 16);
+    *size = fread(data, 1, 1 << 16, f);
+    fclose(f);
+    return data;
+}
+
+START_TEST(png_from_the_exr_equals_the_png_of_the_render)
+{
+    write_text("s.scn", small_scene);
+    ck_assert_int_eq(run(&gradient_program, "-q", "s.scn", "out.png", NULL), 0);
+    ck_assert_int_eq(run(&gradient_program, "-q", "s.scn", "out.exr", NULL), 0);
+    Image img;
+    Error e;
+    ck_assert_msg(image_read(&img, "out.exr", &e), "%s", e.text);
+    ck_assert(image_write(&img, "via-exr.png", PNG_ENCODING_SRGB, &e));
+    image_free(&img);
+    size_t n1, n2;
+    unsigned char *a = slurp("out.png", &n1), *b = slurp("via-exr.png", &n2);
+    ck_assert_uint_eq(n1, n2);
+    ck_assert_mem_eq(a, b, n1);
+    free(a);
+    free(b);
+}
+END_TEST
+
+START_TEST(unknown_extension_lists_exr)
+{
+    write_text("s.scn", small_scene);
+    ck_assert_int_eq(run(&gradient_program, "-q", "s.scn", "out.tiff", NULL), 2);
+    char err[2048];
+    read_text("err", err, sizeof err);
+    ck_assert_contains(err, "cannot write 'out.tiff': unknown image format (use .png, .pfm or .exr)");
+}
+END_TEST
+
 /* The shared program's tests. */
 static Suite *app_suite(void)
 {
@@ -123,6 +176,10 @@ static Suite *app_suite(void)
     TCase *tc = tcase_create("nonfinite");
     tcase_add_test(tc, a_nan_pixel_is_magenta_and_told);
     tcase_add_test(tc, strict_fails_on_a_nan_pixel);
+    suite_add_tcase(s, tc);
+    tc = tcase_create("formats");
+    tcase_add_test(tc, png_from_the_exr_equals_the_png_of_the_render);
+    tcase_add_test(tc, unknown_extension_lists_exr);
     suite_add_tcase(s, tc);
     return s;
 }
