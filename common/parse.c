@@ -501,8 +501,11 @@ static void parse_mesh(Parser *p, const char *name)
     Mesh mesh;
     bool loaded = obj_load_stream(&mesh, f, path, p->diag);
     fclose(f);
-    if (!note_file(p, id) || !loaded) {
-        if (!loaded && !stop_requested())
+    bool noted = note_file(p, id);
+    if (!noted || !loaded) {
+        if (loaded)
+            obj_free(&mesh);
+        else if (!stop_requested())
             ERROR(p, "mesh '%s' not loaded because of the errors above", name);
         free(path);
         return;
