@@ -63,6 +63,8 @@ static bool room_for(Parser *p, void *items, int *capacity, int count, size_t si
         ERROR(p, "more than %d %s: the limit of the scene format", ARRAY_MAX_ITEMS, what);
     else
         ERROR(p, "out of memory for %d %s", count + 1, what);
+    /* Every later line would fail the same way: one message is enough. */
+    p->stopped = true;
     return false;
 }
 

@@ -3,6 +3,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/resource.h>
 #include <sys/stat.h>
 #include <unistd.h>
 
@@ -558,6 +559,64 @@ START_TEST(a_stop_request_ends_loading_silently)
 }
 END_TEST
 
+/* Tells whether this test program runs under AddressSanitizer, which reserves terabytes of
+ * address space and so cannot run under a limit of it. */
+static bool under_asan(void)
+{
+#if defined(__SANITIZE_ADDRESS__)
+    return true;
+#elif defined(__has_feature)
+#if __has_feature(address_sanitizer)
+    return true;
+#endif
+#endif
+    return false;
+}
+
+START_TEST(running_out_of_memory_gives_one_message)
+{
+    if (under_asan()) {
+        fprintf(stderr, "test_parse: AddressSanitizer cannot run under a memory limit: "
+                        "out-of-memory test skipped\n");
+        return;
+    }
+    /* A mesh of 2 million triangles (a 1001 x 1001 grid) and an address space that holds
+     * only part of it (a loop test: two limits): whichever array fails to grow first, one
+     * message says so, not one per triangle. */
+    FILE *f = fopen("big.obj", "w");
+    for (int i = 0; i <= 1000; i++)
+        for (int j = 0; j <= 1000; j++)
+            fprintf(f, "v %d %d -50\n", i, j);
+    for (int i = 0; i < 1000; i++)
+        for (int j = 0; j < 1000; j++) {
+            int a = i * 1001 + j + 1;
+            fprintf(f, "f %d %d %d\nf %d %d %d\n", a, a + 1, a + 1002, a, a + 1002, a + 1001);
+        }
+    fclose(f);
+    write_file("t.scn", CAMERA "w big.obj\n");
+    /* The process's address space now, from /proc, plus 40 MB. */
+    long pages = 0;
+    f = fopen("/proc/self/statm", "r");
+    ck_assert_ptr_nonnull(f);
+    ck_assert_int_eq(fscanf(f, "%ld", &pages), 1);
+    fclose(f);
+    rlim_t limit = (rlim_t)pages * (rlim_t)sysconf(_SC_PAGESIZE) + (_i == 0 ? 40u << 20 : 150u << 20);
+    struct rlimit rl = {limit, limit};
+    ck_assert_int_eq(setrlimit(RLIMIT_AS, &rl), 0);
+    Loaded l = load_path_with("t.scn", (SceneLoadOptions){0});
+    ck_assert(!l.ok);
+    ck_assert_contains(l.messages, "out of memory for ");
+    int lines = 0;
+    for (const char *c = l.messages; *c != '\0'; c++)
+        lines += *c == '\n';
+    ck_assert_msg(lines <= 2, "%d lines:\n%s", lines, l.messages);
+    /* With 40 MB more the OBJ reader's arrays fail; with 150 MB the mesh loads and the
+     * scene's triangle array fails, at the first of a million triangles left to add. */
+    ck_assert_contains(l.messages, _i == 0 ? "big.obj:" : "t.scn:2: out of memory for ");
+    done(&l);
+}
+END_TEST
+
 START_TEST(files_read_are_recorded)
 {
     write_file("m.obj", "v 0 0 -5\nv 1 0 -5\nv 0 1 -5\nf 1 2 3\n");
@@ -799,6 +858,7 @@ static Suite *parse_suite(void)
     tcase_add_test(diag, material_colours_are_reflectances);
     tcase_add_test(diag, errors_beyond_twenty_are_counted_not_shown);
     tcase_add_test(diag, a_stop_request_ends_loading_silently);
+    tcase_add_loop_test(diag, running_out_of_memory_gives_one_message, 0, 2);
     tcase_add_test(diag, files_read_are_recorded);
     tcase_add_test(diag, devices_and_pipes_are_refused_as_meshes);
     tcase_add_test(diag, missing_scene_file_and_directory);
