@@ -53,17 +53,19 @@ static int rgb_offset(const char *name)
     return strcmp(name, "R") == 0 ? 0 : strcmp(name, "G") == 0 ? 1 : strcmp(name, "B") == 0 ? 2 : -1;
 }
 
-/* Points every channel of a coding pipeline at rows start_y.. of img (as floats): R, G and
- * B at their place in the RGB pixel, Y at R (copied to G and B after), others nowhere. */
+/* Points every channel of a coding pipeline at img (as floats) from column x0, row y0 on:
+ * R, G and B at their place in the RGB pixel, Y at R (copied to G and B after), others
+ * nowhere. */
 static void point_channels(exr_coding_channel_info_t *channels, int count, const Image *img,
-                           int start_y, bool decoding)
+                           int x0, int y0, bool decoding)
 {
     for (int c = 0; c < count; c++) {
         exr_coding_channel_info_t *ch = &channels[c];
         int k = rgb_offset(ch->channel_name);
         if (k < 0 && decoding && strcmp(ch->channel_name, "Y") == 0)
             k = 0;
-        uint8_t *at = k < 0 ? NULL : (uint8_t *)(img->pixels + 3L * start_y * img->width + k);
+        uint8_t *at =
+            k < 0 ? NULL : (uint8_t *)(img->pixels + 3 * ((long)y0 * img->width + x0) + k);
         if (decoding)
             ch->decode_to_ptr = at;
         else
@@ -109,11 +111,11 @@ static bool write_chunks(exr_context_t ctxt, int part, const Image *img, ExrIo *
         if (ok && !started) {
             ok = !failed(io, exr_encoding_initialize(ctxt, part, &chunk, &encoder));
             started = ok;
-            point_channels(encoder.channels, encoder.channel_count, img, y, false);
+            point_channels(encoder.channels, encoder.channel_count, img, 0, y, false);
             ok = ok && !failed(io, exr_encoding_choose_default_routines(ctxt, part, &encoder));
         } else if (ok) {
             ok = !failed(io, exr_encoding_update(ctxt, part, &chunk, &encoder));
-            point_channels(encoder.channels, encoder.channel_count, img, y, false);
+            point_channels(encoder.channels, encoder.channel_count, img, 0, y, false);
         }
         ok = ok && !failed(io, exr_encoding_run(ctxt, part, &encoder));
     }
@@ -154,18 +156,20 @@ bool image_write_exr(const Image *img, FILE *f, Error *err)
 }
 
 /* Finds the channels of part 0 raytra reads (R, G and B, or Y), checking that it can:
- * scanlines, float or half samples, no subsampling; false (in io) otherwise. */
-static bool check_channels(exr_context_t ctxt, ExrIo *io, bool *grey)
+ * scanlines or tiles (not deep data), float or half samples, no subsampling; false (in
+ * io) otherwise. */
+static bool check_channels(exr_context_t ctxt, ExrIo *io, bool *grey, bool *tiled)
 {
     exr_storage_t storage;
     const exr_attr_chlist_t *list;
     if (failed(io, exr_get_storage(ctxt, 0, &storage)) ||
         failed(io, exr_get_channels(ctxt, 0, &list)))
         return false;
-    if (storage != EXR_STORAGE_SCANLINE) {
-        error_set(io->err, "only scanline OpenEXR images can be read, not tiled or deep ones");
+    if (storage != EXR_STORAGE_SCANLINE && storage != EXR_STORAGE_TILED) {
+        error_set(io->err, "deep OpenEXR images cannot be read, only scanline and tiled ones");
         return false;
     }
+    *tiled = storage == EXR_STORAGE_TILED;
     int rgb = 0, y = 0;
     for (int c = 0; c < list->num_channels; c++) {
         const exr_attr_chlist_entry_t *e = &list->entries[c];
@@ -188,37 +192,59 @@ static bool check_channels(exr_context_t ctxt, ExrIo *io, bool *grey)
     return true;
 }
 
-/* Decodes every scanline chunk of part 0, whose data window starts at row top, into img. */
-static bool read_chunks(exr_context_t ctxt, Image *img, int top, ExrIo *io)
+/* Decodes one chunk, which covers img from column x0, row y0 on, with the decoder (set up
+ * by the first chunk, *started then set); false (in io) on failure. */
+static bool decode_chunk(exr_context_t ctxt, const exr_chunk_info_t *chunk, Image *img, int x0,
+                         int y0, exr_decode_pipeline_t *decoder, bool *started, ExrIo *io)
 {
-    int32_t lines;
-    if (failed(io, exr_get_scanlines_per_chunk(ctxt, 0, &lines)))
-        return false;
+    if (!*started) {
+        if (failed(io, exr_decoding_initialize(ctxt, 0, chunk, decoder)))
+            return false;
+        *started = true;
+        point_channels(decoder->channels, decoder->channel_count, img, x0, y0, true);
+        if (failed(io, exr_decoding_choose_default_routines(ctxt, 0, decoder)))
+            return false;
+    } else {
+        if (failed(io, exr_decoding_update(ctxt, 0, chunk, decoder)))
+            return false;
+        point_channels(decoder->channels, decoder->channel_count, img, x0, y0, true);
+    }
+    return !failed(io, exr_decoding_run(ctxt, 0, decoder));
+}
+
+/* Decodes every chunk of part 0 into img: scanline blocks (the data window starts at row
+ * top), or the tiles of the full-resolution level. */
+static bool read_chunks(exr_context_t ctxt, Image *img, int top, bool tiled, ExrIo *io)
+{
     exr_decode_pipeline_t decoder = EXR_DECODE_PIPELINE_INITIALIZER;
     bool started = false, ok = true;
-    for (int y = 0; ok && y < img->height; y += lines) {
-        exr_chunk_info_t chunk;
-        ok = !failed(io, exr_read_scanline_chunk_info(ctxt, 0, top + y, &chunk));
-        if (ok && !started) {
-            ok = !failed(io, exr_decoding_initialize(ctxt, 0, &chunk, &decoder));
-            started = ok;
-            point_channels(decoder.channels, decoder.channel_count, img, chunk.start_y - top,
-                           true);
-            ok = ok && !failed(io, exr_decoding_choose_default_routines(ctxt, 0, &decoder));
-        } else if (ok) {
-            ok = !failed(io, exr_decoding_update(ctxt, 0, &chunk, &decoder));
-            point_channels(decoder.channels, decoder.channel_count, img, chunk.start_y - top,
-                           true);
+    if (!tiled) {
+        int32_t lines;
+        ok = !failed(io, exr_get_scanlines_per_chunk(ctxt, 0, &lines));
+        for (int y = 0; ok && y < img->height; y += lines) {
+            exr_chunk_info_t chunk;
+            ok = !failed(io, exr_read_scanline_chunk_info(ctxt, 0, top + y, &chunk)) &&
+                 decode_chunk(ctxt, &chunk, img, 0, chunk.start_y - top, &decoder, &started, io);
         }
-        ok = ok && !failed(io, exr_decoding_run(ctxt, 0, &decoder));
+    } else {
+        /* Level (0, 0) is the image itself; mipmap levels below it are not read. */
+        int32_t tile_w, tile_h;
+        ok = !failed(io, exr_get_tile_sizes(ctxt, 0, 0, 0, &tile_w, &tile_h));
+        for (int ty = 0; ok && ty * tile_h < img->height; ty++)
+            for (int tx = 0; ok && tx * tile_w < img->width; tx++) {
+                exr_chunk_info_t chunk;
+                ok = !failed(io, exr_read_tile_chunk_info(ctxt, 0, tx, ty, 0, 0, &chunk)) &&
+                     decode_chunk(ctxt, &chunk, img, tx * tile_w, ty * tile_h, &decoder,
+                                  &started, io);
+            }
     }
     if (started)
         exr_decoding_destroy(ctxt, &decoder);
     return ok;
 }
 
-/* Reads the OpenEXR image at path (its first part) into img (overwritten; left empty on
- * failure): R, G and B, or Y as grey, converted to float; alpha is not applied, as OpenEXR
+/* Reads the OpenEXR image at path (its first part, scanline or tiled) into img
+ * (overwritten; left empty on failure): R, G and B, or Y as grey, converted to float; alpha is not applied, as OpenEXR
  * colours are already multiplied by it. Linear values, as the file holds them. */
 bool image_read_exr(Image *img, const char *path, Error *err)
 {
@@ -232,10 +258,10 @@ bool image_read_exr(Image *img, const char *path, Error *err)
     init.flags = EXR_CONTEXT_FLAG_SILENT_HEADER_PARSE;
     exr_context_t ctxt = NULL;
     exr_attr_box2i_t window;
-    bool grey = false;
+    bool grey = false, tiled = false;
     bool ok = !failed(&io, exr_start_read(&ctxt, path, &init)) &&
               !failed(&io, exr_get_data_window(ctxt, 0, &window)) &&
-              check_channels(ctxt, &io, &grey);
+              check_channels(ctxt, &io, &grey, &tiled);
     if (ok) {
         long width = (long)window.max.x - window.min.x + 1;
         long height = (long)window.max.y - window.min.y + 1;
@@ -250,7 +276,7 @@ bool image_read_exr(Image *img, const char *path, Error *err)
             ok = false;
         }
     }
-    ok = ok && read_chunks(ctxt, img, window.min.y, &io);
+    ok = ok && read_chunks(ctxt, img, window.min.y, tiled, &io);
     if (ok && grey)
         for (long k = 0; k < (long)img->width * img->height; k++)
             img->pixels[3 * k + 1] = img->pixels[3 * k + 2] = img->pixels[3 * k];

@@ -105,16 +105,24 @@ static float value(char c, int x, int y)
 }
 
 /* Writes a width x height EXR with the library alone: channels named by the letters of
- * names, of type ptype, with compression ctype, its data window starting at (x0, y0). */
-static void write_with_library(const char *path, const char *names, exr_pixel_type_t ptype,
-                               exr_compression_t ctype, int width, int height, int x0, int y0)
+ * names, of type ptype, with compression ctype, its data window starting at (x0, y0), in
+ * scanlines or, when tile > 0, in tiles of tile x tile pixels. */
+static void write_with_library_tiled(const char *path, const char *names, exr_pixel_type_t ptype,
+                                     exr_compression_t ctype, int width, int height, int x0,
+                                     int y0, int tile)
 {
     exr_context_t ctxt;
     exr_context_initializer_t init = EXR_DEFAULT_CONTEXT_INITIALIZER;
     ck_assert_int_eq(exr_start_write(&ctxt, path, EXR_WRITE_FILE_DIRECTLY, &init), 0);
     int part;
-    ck_assert_int_eq(exr_add_part(ctxt, "test", EXR_STORAGE_SCANLINE, &part), 0);
+    ck_assert_int_eq(
+        exr_add_part(ctxt, "test", tile > 0 ? EXR_STORAGE_TILED : EXR_STORAGE_SCANLINE, &part),
+        0);
     ck_assert_int_eq(exr_initialize_required_attr_simple(ctxt, part, width, height, ctype), 0);
+    if (tile > 0)
+        ck_assert_int_eq(exr_set_tile_descriptor(ctxt, part, (uint32_t)tile, (uint32_t)tile,
+                                                 EXR_TILE_ONE_LEVEL, EXR_TILE_ROUND_DOWN),
+                         0);
     exr_attr_box2i_t dw;
     dw.min.x = x0;
     dw.min.y = y0;
@@ -135,31 +143,48 @@ static void write_with_library(const char *path, const char *names, exr_pixel_ty
         for (int y = 0; y < height; y++)
             for (int x = 0; x < width; x++)
                 planes[(k * height + y) * width + x] = value(names[k], x, y);
-    int32_t lines;
-    exr_get_scanlines_per_chunk(ctxt, part, &lines);
+    /* The chunks: blocks of rows, or tiles row by row, each at (cx, cy) of the planes. */
+    int32_t lines = 0;
+    if (tile == 0)
+        exr_get_scanlines_per_chunk(ctxt, part, &lines);
+    int step_x = tile > 0 ? tile : width, step_y = tile > 0 ? tile : lines;
     exr_encode_pipeline_t enc = EXR_ENCODE_PIPELINE_INITIALIZER;
-    for (int y = 0; y < height; y += lines) {
-        exr_chunk_info_t chunk;
-        ck_assert_int_eq(exr_write_scanline_chunk_info(ctxt, part, y0 + y, &chunk), 0);
-        ck_assert_int_eq(y == 0 ? exr_encoding_initialize(ctxt, part, &chunk, &enc)
-                                : exr_encoding_update(ctxt, part, &chunk, &enc),
-                         0);
-        for (int c = 0; c < enc.channel_count; c++) {
-            int k = (int)(strchr(names, enc.channels[c].channel_name[0]) - names);
-            enc.channels[c].encode_from_ptr =
-                (const uint8_t *)(planes + ((size_t)k * height + y) * width);
-            enc.channels[c].user_pixel_stride = sizeof(float);
-            enc.channels[c].user_line_stride = (int32_t)sizeof(float) * width;
-            enc.channels[c].user_data_type = EXR_PIXEL_FLOAT;
-            enc.channels[c].user_bytes_per_element = sizeof(float);
+    bool first = true;
+    for (int cy = 0; cy < height; cy += step_y)
+        for (int cx = 0; cx < width; cx += step_x) {
+            exr_chunk_info_t chunk;
+            ck_assert_int_eq(tile > 0 ? exr_write_tile_chunk_info(ctxt, part, cx / tile,
+                                                                  cy / tile, 0, 0, &chunk)
+                                      : exr_write_scanline_chunk_info(ctxt, part, y0 + cy,
+                                                                      &chunk),
+                             0);
+            ck_assert_int_eq(first ? exr_encoding_initialize(ctxt, part, &chunk, &enc)
+                                   : exr_encoding_update(ctxt, part, &chunk, &enc),
+                             0);
+            for (int c = 0; c < enc.channel_count; c++) {
+                int k = (int)(strchr(names, enc.channels[c].channel_name[0]) - names);
+                enc.channels[c].encode_from_ptr =
+                    (const uint8_t *)(planes + ((size_t)k * height + cy) * width + cx);
+                enc.channels[c].user_pixel_stride = sizeof(float);
+                enc.channels[c].user_line_stride = (int32_t)sizeof(float) * width;
+                enc.channels[c].user_data_type = EXR_PIXEL_FLOAT;
+                enc.channels[c].user_bytes_per_element = sizeof(float);
+            }
+            if (first)
+                ck_assert_int_eq(exr_encoding_choose_default_routines(ctxt, part, &enc), 0);
+            first = false;
+            ck_assert_int_eq(exr_encoding_run(ctxt, part, &enc), 0);
         }
-        if (y == 0)
-            ck_assert_int_eq(exr_encoding_choose_default_routines(ctxt, part, &enc), 0);
-        ck_assert_int_eq(exr_encoding_run(ctxt, part, &enc), 0);
-    }
     exr_encoding_destroy(ctxt, &enc);
     ck_assert_int_eq(exr_finish(&ctxt), 0);
     free(planes);
+}
+
+/* Writes a width x height EXR in scanlines with the library alone (see above). */
+static void write_with_library(const char *path, const char *names, exr_pixel_type_t ptype,
+                               exr_compression_t ctype, int width, int height, int x0, int y0)
+{
+    write_with_library_tiled(path, names, ptype, ctype, width, height, x0, y0, 0);
 }
 
 /* The half nearest to 0.1 is 0x2e66: exponent 11 - 15 = -4, significand 1 + 614/1024, so
@@ -204,6 +229,25 @@ START_TEST(exr_from_the_library_half_piz_and_float_none)
     write_with_library("float.exr", "RGB", EXR_PIXEL_FLOAT, EXR_COMPRESSION_NONE, 5, 3, -2, 10);
     ck_assert_msg(image_read(&img, "float.exr", &err), "%s", err.text);
     assert_rgb(&img, 5, 3, 0.1f);
+    image_free(&img);
+}
+END_TEST
+
+START_TEST(exr_tiled_from_the_library)
+{
+    /* 37 x 21 pixels in tiles of 16: partial tiles at the right and the bottom; with the
+     * data window away from the origin, and half and float samples. */
+    Image img;
+    Error err;
+    write_with_library_tiled("tiled.exr", "RGB", EXR_PIXEL_HALF, EXR_COMPRESSION_ZIP, 37, 21, 0,
+                             0, 16);
+    ck_assert_msg(image_read(&img, "tiled.exr", &err), "%s", err.text);
+    assert_rgb(&img, 37, 21, HALF_0_1);
+    image_free(&img);
+    write_with_library_tiled("tiled-offset.exr", "BGRA", EXR_PIXEL_FLOAT, EXR_COMPRESSION_PIZ,
+                             37, 21, 5, -3, 16);
+    ck_assert_msg(image_read(&img, "tiled-offset.exr", &err), "%s", err.text);
+    assert_rgb(&img, 37, 21, 0.1f);
     image_free(&img);
 }
 END_TEST
@@ -273,6 +317,7 @@ static Suite *exr_suite(void)
     tcase_add_test(tc, png_from_exr_equals_png_from_the_render);
     tcase_add_test(tc, exr_from_the_library_half_rgba_zip);
     tcase_add_test(tc, exr_from_the_library_half_piz_and_float_none);
+    tcase_add_test(tc, exr_tiled_from_the_library);
     tcase_add_test(tc, exr_grey_is_read_as_rgb);
     tcase_add_test(tc, exr_errors);
     tcase_add_test(tc, exr_write_stops_when_asked);
