@@ -187,7 +187,8 @@ int app_main(const Program *program, int argc, char **argv)
         goto done;
     }
     if (image_format_for_path(output) == IMAGE_FORMAT_UNKNOWN) {
-        fprintf(stderr, "raytra: cannot write '%s': unknown image format (use .png, .pfm or .exr)\n",
+        fprintf(stderr,
+                "raytra: cannot write '%s': unknown image format (use .png, .pfm or .exr)\n",
                 output);
         status = EXIT_USAGE;
         goto done;

@@ -50,7 +50,11 @@ static int64_t write_bytes(exr_const_context_t ctxt, void *data, const void *buf
 /* Returns the offset (0, 1 or 2) of channel name in an RGB pixel, or -1 for another. */
 static int rgb_offset(const char *name)
 {
-    return strcmp(name, "R") == 0 ? 0 : strcmp(name, "G") == 0 ? 1 : strcmp(name, "B") == 0 ? 2 : -1;
+    static const char *const rgb[] = {"R", "G", "B"};
+    for (int k = 0; k < 3; k++)
+        if (strcmp(name, rgb[k]) == 0)
+            return k;
+    return -1;
 }
 
 /* Points every channel of a coding pipeline at img (as floats) from column x0, row y0 on:
@@ -244,8 +248,9 @@ static bool read_chunks(exr_context_t ctxt, Image *img, int top, bool tiled, Exr
 }
 
 /* Reads the OpenEXR image at path (its first part, scanline or tiled) into img
- * (overwritten; left empty on failure): R, G and B, or Y as grey, converted to float; alpha is not applied, as OpenEXR
- * colours are already multiplied by it. Linear values, as the file holds them. */
+ * (overwritten; left empty on failure): R, G and B, or Y as grey, converted to float;
+ * alpha is not applied, as OpenEXR colours are already multiplied by it. Linear values,
+ * as the file holds them. */
 bool image_read_exr(Image *img, const char *path, Error *err)
 {
     *img = (Image){0};

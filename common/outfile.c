@@ -1,4 +1,4 @@
-/* outfile.c: files that appear only when complete: a temporary, unnamed where possible, then named. */
+/* outfile.c: files that appear only when complete: a temporary, unnamed if possible, then named. */
 /* O_TMPFILE and linkat's AT_SYMLINK_FOLLOW on /proc/self/fd are Linux's: asked for here. */
 #define _GNU_SOURCE
 #include "outfile.h"

@@ -165,7 +165,8 @@ START_TEST(unknown_extension_lists_exr)
     ck_assert_int_eq(run(&gradient_program, "-q", "s.scn", "out.tiff", NULL), 2);
     char err[2048];
     read_text("err", err, sizeof err);
-    ck_assert_contains(err, "cannot write 'out.tiff': unknown image format (use .png, .pfm or .exr)");
+    ck_assert_contains(err,
+                       "cannot write 'out.tiff': unknown image format (use .png, .pfm or .exr)");
 }
 END_TEST
 

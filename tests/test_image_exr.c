@@ -1,4 +1,4 @@
-/* test_image_exr.c: OpenEXR output and input: exact round trips, and files the library writes itself. */
+/* test_image_exr.c: OpenEXR: exact round trips, and files the library writes by itself. */
 #include <openexr.h>
 #include <stdint.h>
 #include <stdio.h>

@@ -367,7 +367,8 @@ START_TEST(long_names)
     ck_assert_int_eq(count_temporaries(".", "raytra"), 0);
     /* 256 characters: no file can have that name, which the check says before a render. */
     char expected[128];
-    snprintf(expected, sizeof expected, "the name is 256 characters long; the folder takes at most %ld",
+    snprintf(expected, sizeof expected,
+             "the name is 256 characters long; the folder takes at most %ld",
              pathconf(".", _PC_NAME_MAX));
     assert_check_fails(long_name(256), expected);
 }

@@ -600,7 +600,8 @@ START_TEST(running_out_of_memory_gives_one_message)
     ck_assert_ptr_nonnull(f);
     ck_assert_int_eq(fscanf(f, "%ld", &pages), 1);
     fclose(f);
-    rlim_t limit = (rlim_t)pages * (rlim_t)sysconf(_SC_PAGESIZE) + (_i == 0 ? 40u << 20 : 150u << 20);
+    rlim_t extra = _i == 0 ? 40u << 20 : 150u << 20;
+    rlim_t limit = (rlim_t)pages * (rlim_t)sysconf(_SC_PAGESIZE) + extra;
     struct rlimit rl = {limit, limit};
     ck_assert_int_eq(setrlimit(RLIMIT_AS, &rl), 0);
     Loaded l = load_path_with("t.scn", (SceneLoadOptions){0});

@@ -1,4 +1,4 @@
-/* test_render.c: the render loop: pixel placement, thread-count independence, counts, NaN and overflow, stop. */
+/* test_render.c: the render loop: pixels, thread counts, counts, NaN and overflow, stop. */
 #include <float.h>
 #include <signal.h>
 #include <string.h>
