@@ -39,9 +39,10 @@ LineStatus lex_next_line(LineReader *r)
     int c;
     while ((c = getc(r->file)) != EOF && c != '\n') {
         if (is_binary_byte(c)) {
+            /* What came before the byte stays in buf: a file's first bytes name its type. */
             r->line++;
-            r->buf[0] = '\0';
-            r->length = 0;
+            r->buf[n] = '\0';
+            r->length = n;
             r->bad_byte = c;
             return LINE_BINARY;
         }

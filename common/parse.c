@@ -42,6 +42,7 @@ struct Parser {
     int obj_lines; /* v and f lines: a mesh given where a scene belongs */
     int material_capacity, sphere_capacity, plane_capacity, triangle_capacity, light_capacity;
     int file_capacity;
+    char head[8]; /* the first bytes of the file, to name an image given as a scene */
     bool stopped; /* reading ended early: a stop request, a binary file or a read error */
 };
 
@@ -654,6 +655,33 @@ static void finish(Parser *p, const SceneLoadOptions *opts)
     finish_planes(s);
 }
 
+/* Returns what kind of image a file starting with head is, or NULL: an image given
+ * where the scene belongs, usually the output named first. */
+static const char *image_kind(const char *head)
+{
+    if (strncmp(head, "\x89PNG", 4) == 0)
+        return "a PNG image";
+    if (strcmp(head, "PF") == 0 || strcmp(head, "Pf") == 0)
+        return "a PFM image";
+    if (strncmp(head, "v/1", 3) == 0)
+        return "an OpenEXR image";
+    return NULL;
+}
+
+/* Reports the binary byte that ended the reading, naming an image by its kind. */
+static void report_binary(Parser *p, const LineReader *reader)
+{
+    const char *kind = image_kind(p->head);
+    if (kind != NULL)
+        diag_error(p->diag, p->path, 0,
+                   "this is %s, not a scene file (the scene comes first: raytra SCENE "
+                   "[OUTPUT])",
+                   kind);
+    else
+        ERROR(p, "%s in the file: this is not a text scene file",
+              lex_binary_byte_name(reader));
+}
+
 /* Reads a scene from the open file f, named path in messages and for finding meshes;
  * false after reporting every problem found, or silently when a stop was requested
  * (stop.h). The caller closes f. */
@@ -672,6 +700,8 @@ bool scene_load_stream(Scene *scene, FILE *f, const char *path, const SceneLoadO
             p.line = reader->line;
             if (st == LINE_END)
                 break;
+            if (p.line == 1 && (st == LINE_OK || st == LINE_BINARY))
+                snprintf(p.head, sizeof p.head, "%.7s", reader->buf);
             if (stop_requested() || st == LINE_STOPPED) {
                 p.stopped = true;
             } else if (st == LINE_IO_ERROR) {
@@ -680,8 +710,7 @@ bool scene_load_stream(Scene *scene, FILE *f, const char *path, const SceneLoadO
             } else if (st == LINE_BINARY) {
                 /* Whatever was read before is noise: one message says it all. */
                 diag_forget_warnings(&diag);
-                ERROR(&p, "%s in the file: this is not a text scene file",
-                      lex_binary_byte_name(reader));
+                report_binary(&p, reader);
                 p.stopped = true;
             } else if (st == LINE_TOO_LONG) {
                 ERROR(&p, "line longer than %d characters", LEX_MAX_LINE);

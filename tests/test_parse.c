@@ -471,13 +471,44 @@ START_TEST(a_binary_scene_gives_one_message)
     /* Unknown commands before the binary part would be warnings printed after the error;
      * "no camera" would follow it too. One message says it all. */
     FILE *f = fopen("t.scn", "w");
-    fputs("\x89PNG\r\nIHDR x\n\x01\x02 garbage\nc 0 0 0\n", f);
+    fputs("GIF89a\r\nIHDR x\n\x01\x02 garbage\nc 0 0 0\n", f);
     fclose(f);
     Loaded l = load_path_with("t.scn", (SceneLoadOptions){0});
     ck_assert(!l.ok);
     ck_assert_str_eq(l.messages,
                      "t.scn:3: control character in the file: this is not a text scene file\n");
     done(&l);
+}
+END_TEST
+
+START_TEST(an_image_given_as_the_scene_is_named)
+{
+    /* The first bytes of a PNG, a PFM and an OpenEXR file, each followed by binary data:
+     * the usual slip is the output named before the scene. */
+    static const struct {
+        const char *bytes;
+        size_t size;
+        const char *kind;
+    } images[] = {
+        {"\x89PNG\r\n\x1a\n\0\0\0\rIHDR", 16, "a PNG image"},
+        {"PF\n4 2\n-1.0\n\0\0\x80?", 16, "a PFM image"},
+        {"Pf\n4 2\n-1.0\n\0\0\x80?", 16, "a PFM image"},
+        {"v/1\x01\x02\0\0\0channels", 16, "an OpenEXR image"},
+    };
+    for (size_t k = 0; k < sizeof images / sizeof images[0]; k++) {
+        FILE *f = fopen("t.scn", "wb");
+        fwrite(images[k].bytes, 1, images[k].size, f);
+        fclose(f);
+        Loaded l = load_path_with("t.scn", (SceneLoadOptions){0});
+        ck_assert(!l.ok);
+        char expected[256];
+        snprintf(expected, sizeof expected,
+                 "t.scn: this is %s, not a scene file (the scene comes first: raytra SCENE "
+                 "[OUTPUT])\n",
+                 images[k].kind);
+        ck_assert_str_eq(l.messages, expected);
+        done(&l);
+    }
 }
 END_TEST
 
@@ -856,6 +887,7 @@ static Suite *parse_suite(void)
     tcase_add_test(diag, several_errors_are_all_reported);
     tcase_add_test(diag, nul_byte_and_long_lines);
     tcase_add_test(diag, a_binary_scene_gives_one_message);
+    tcase_add_test(diag, an_image_given_as_the_scene_is_named);
     tcase_add_test(diag, material_colours_are_reflectances);
     tcase_add_test(diag, errors_beyond_twenty_are_counted_not_shown);
     tcase_add_test(diag, a_stop_request_ends_loading_silently);
