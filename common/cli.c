@@ -40,6 +40,11 @@ const CliOption cli_options[] = {
      .help = "print the ray tree of the pixel in column X, row Y (0,0 is the top-left "
              "corner, as in image viewers) and write no image",
      .field = FIELD(trace_pixel)},
+    {.name = "view", .kind = OPTION_TEXT, .metavar = "NAME",
+     .help = "draw what each camera ray meets instead of its light: normal, depth, id "
+             "(a colour per surface), material (kd), light-count (lights that reach the "
+             "point), box-tests (from part 1.4: a heat map of the tests per ray)",
+     .field = FIELD(view)},
     {.name = "two-sided",
      .help = "shade the backs of triangles and planes with their own material, not lit yellow",
      .field = FIELD(two_sided), .first_part = 12},

@@ -33,6 +33,7 @@ typedef struct {
     double scale;
     bool help, version;
     const char *trace_pixel;      /* "X,Y": print that pixel's ray tree, write no image */
+    const char *view;             /* a debug view's name: draw it instead of the light */
     const struct Explain *explain; /* set by app_main while tracing that pixel; else NULL */
     /* From part 1.2 on. */
     bool two_sided; /* shade back faces with their own material */

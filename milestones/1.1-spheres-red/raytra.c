@@ -30,12 +30,33 @@ static Color red_or_black(const void *ctx, int i, int j, RayStats *stats)
 }
 /* end excerpt: red-or-black */
 
+/* Tells --view what the camera ray meets first: the nearest sphere, its normal and material. */
+static void probe_pixel(const void *ctx, int i, int j, Probe *probe)
+{
+    const View *view = ctx;
+    const Scene *scene = view->scene;
+    Ray r = camera_ray(&view->camera, i + 0.5, j + 0.5);
+    double t, nearest = INFINITY;
+    for (int k = 0; k < scene->sphere_count; k++)
+        if (sphere_intersect(&scene->spheres[k], r, 0, nearest, &t)) {
+            const Sphere *s = &scene->spheres[k];
+            Vec3 n = vec3_scale(vec3_sub(ray_at(r, t), s->center), 1 / s->radius);
+            nearest = t;
+            *probe = (Probe){.hit = true,
+                             .t = t,
+                             .surface = k,
+                             .normal = vec3_dot(n, r.dir) > 0 ? vec3_neg(n) : n,
+                             .kd = scene->materials[s->material].diffuse};
+        }
+}
+
 static const Program program = {
     .cli = {.part = "1.1-spheres-red",
             .purpose = "a pixel is red where its primary ray hits a sphere, black elsewhere"},
     .features = FEATURE_SPHERES,
     .setup = view_setup,
     .pixel = red_or_black,
+    .probe = probe_pixel,
     .cleanup = free,
 };
 

@@ -5,6 +5,7 @@
 #include "sphere.h"
 #include "triangle.h"
 
+/* starter: todo */
 /* excerpt: world-hit */
 /* Finds the nearest surface that ray r meets with tmin < t < tmax; fills in hit. */
 bool world_hit(const Scene *scene, Ray r, double tmin, double tmax, Hit *hit)
@@ -38,6 +39,7 @@ bool world_hit(const Scene *scene, Ray r, double tmin, double tmax, Hit *hit)
 }
 /* end excerpt: world-hit */
 
+/* starter: todo */
 /* excerpt: world-complete-hit */
 /* Fills in the point, unit normal, side and material of a hit whose t, kind and index are known. */
 void world_complete_hit(const Scene *scene, Ray r, Hit *hit)
@@ -97,4 +99,16 @@ void world_explain_hit(const Explain *e, int depth, const Hit *hit)
                  hit->material, explain_where(e, m->line, where, sizeof where), m->diffuse.r,
                  m->diffuse.g, m->diffuse.b, m->specular.r, m->specular.g, m->specular.b, m->phong,
                  m->mirror.r, m->mirror.g, m->mirror.b);
+}
+
+/* Returns a number for the surface hit, different for every surface of the scene:
+ * spheres first, then planes, then triangles. */
+int world_surface_id(const Scene *scene, const Hit *hit)
+{
+    switch (hit->kind) {
+    case SURFACE_SPHERE: return hit->index;
+    case SURFACE_PLANE: return scene->sphere_count + hit->index;
+    case SURFACE_TRIANGLE: return scene->sphere_count + scene->plane_count + hit->index;
+    }
+    return 0;
 }

@@ -12,5 +12,6 @@
 bool world_hit(const Scene *scene, Ray r, double tmin, double tmax, Hit *hit);
 void world_complete_hit(const Scene *scene, Ray r, Hit *hit);
 void world_explain_hit(const Explain *e, int depth, const Hit *hit);
+int world_surface_id(const Scene *scene, const Hit *hit);
 
 #endif

@@ -40,6 +40,13 @@ static Color trace_pixel(const void *ctx, int i, int j, RayStats *stats)
 }
 /* end excerpt: trace-pixel */
 
+/* Tells --view what the camera ray meets first. */
+static void probe_pixel(const void *ctx, int i, int j, Probe *probe)
+{
+    const Part13 *part = ctx;
+    trace_probe(&part->tracer, camera_ray(&part->view.camera, i + 0.5, j + 0.5), probe);
+}
+
 static const Program program = {
     .cli = {.part = "1.3-shadows-mirror",
             .purpose = "Blinn-Phong shading with shadows, ambient light and mirror reflection"},
@@ -48,6 +55,7 @@ static const Program program = {
                 FEATURE_MIRRORS | FEATURE_SHADING,
     .setup = setup,
     .pixel = trace_pixel,
+    .probe = probe_pixel,
     .cleanup = free,
 };
 

@@ -18,6 +18,7 @@ Tracer tracer_make(const Scene *scene, Surfaces surfaces, const Options *opts)
                     .explain = opts->explain};
 }
 
+/* starter: todo */
 /* excerpt: trace-radiance */
 /* Returns the radiance arriving along ray r: the light of the first surface it meets,
  * straight from the lights, plus k_m times the radiance along the mirror-reflected ray.
@@ -48,3 +49,26 @@ Color trace_radiance(const Tracer *tr, Ray r, int depth, Path *path)
     return radiance;
 }
 /* end excerpt: trace-radiance */
+
+/* Tells --view what ray r meets first, and how many lights reach the point: in front of
+ * the surface and not in shadow. */
+void trace_probe(const Tracer *tr, Ray r, Probe *probe)
+{
+    Hit hit;
+    if (!tr->surfaces.hit(tr->surfaces.data, r, 0, INFINITY, &hit))
+        return;
+    const Scene *scene = tr->scene;
+    Vec3 n = shade_normal(&hit);
+    *probe = (Probe){.hit = true,
+                     .t = hit.t,
+                     .normal = n,
+                     .surface = world_surface_id(scene, &hit),
+                     .kd = shade_material(scene, &hit, tr->two_sided)->diffuse};
+    RayStats stats = {{0}};
+    Path path = {.stats = &stats};
+    for (int k = 0; k < scene->light_count; k++) {
+        Incident in = light_incident(&scene->lights[k], hit.point, false);
+        probe->lights_visible +=
+            vec3_dot(n, in.dir) > 0 && !direct_in_shadow(tr, &hit, r, &in, &path);
+    }
+}

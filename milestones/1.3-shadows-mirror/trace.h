@@ -7,6 +7,7 @@
 
 #include "cli.h"
 #include "color.h"
+#include "debugview.h"
 #include "explain.h"
 #include "ray.h"
 #include "render.h"
@@ -40,5 +41,6 @@ struct Tracer {
 
 Tracer tracer_make(const Scene *scene, Surfaces surfaces, const Options *opts);
 Color trace_radiance(const Tracer *tr, Ray r, int depth, Path *path);
+void trace_probe(const Tracer *tr, Ray r, Probe *probe);
 
 #endif

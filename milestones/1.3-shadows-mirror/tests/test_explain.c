@@ -1,9 +1,10 @@
-/* test_explain.c: raytra --trace-pixel on a scene whose ray tree is worked out by hand. */
+/* test_explain.c: raytra --trace-pixel and --view on a scene worked out by hand. */
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 #include <sys/wait.h>
 
+#include "image.h"
 #include "testing.h"
 
 /* Runs raytra with options on scene (from the top of the repository); returns what it
@@ -66,13 +67,49 @@ START_TEST(pixels_outside_the_image_are_refused)
 }
 END_TEST
 
-/* The tests of --trace-pixel. */
+/* Renders trace-pixel.scn in view name to a PFM and returns its centre pixel, the only
+ * one whose ray meets a surface. */
+static Color view_centre(const char *name)
+{
+    char options[64];
+    snprintf(options, sizeof options, "--view %s -o view.pfm", name);
+    int status;
+    free(run(options, "trace-pixel.scn", &status));
+    ck_assert_int_eq(status, 0);
+    Image img;
+    Error err;
+    ck_assert_msg(image_read(&img, "view.pfm", &err), "%s", err.text);
+    Color c = image_get(&img, 1, 1);
+    ck_assert_color_near(image_get(&img, 0, 0), color(0, 0, 0), 0);
+    image_free(&img);
+    return c;
+}
+
+START_TEST(views_of_the_centre_pixel_by_hand)
+{
+    /* The normal (0, 0, 1), each component mapped from [-1, 1] to [0, 1]. */
+    ck_assert_color_near(view_centre("normal"), color(0.5, 0.5, 1), 1e-7);
+    /* t = 4 is the median depth of the hits (the only one): half grey. */
+    ck_assert_color_near(view_centre("depth"), color(0.5, 0.5, 0.5), 1e-7);
+    ck_assert_color_near(view_centre("material"), color(0.5, 0.25, 0.1), 1e-7);
+    /* One light of three reaches the point: a third of the heat scale, pure red. */
+    ck_assert_color_near(view_centre("light-count"), color(1, 0, 0), 1e-7);
+    int status;
+    free(run("--view nope -o x.pfm", "trace-pixel.scn", &status));
+    ck_assert_int_eq(WEXITSTATUS(status), 2);
+    free(run("--view box-tests -o x.pfm", "trace-pixel.scn", &status));
+    ck_assert_int_eq(WEXITSTATUS(status), 2);
+}
+END_TEST
+
+/* The tests of --trace-pixel and --view. */
 static Suite *explain_suite(void)
 {
     Suite *s = suite_create("explain");
     TCase *tc = tcase_create("trace-pixel");
     tcase_add_test(tc, the_centre_pixel_by_hand);
     tcase_add_test(tc, pixels_outside_the_image_are_refused);
+    tcase_add_test(tc, views_of_the_centre_pixel_by_hand);
     suite_add_tcase(s, tc);
     return s;
 }
