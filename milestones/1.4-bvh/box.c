@@ -28,13 +28,14 @@ bool box_contains(Box outer, Box inner)
  * is also its box's corner, might be found by the triangle and missed by the box. The
  * margin, far larger than either rounding error and far smaller than anything seen,
  * makes sure a box never rejects a ray that its surface would accept. */
-static Box box_pad(Box b)
+Box box_pad(Box b)
 {
     double m = ldexp(fmax(vec3_max_abs(b.lo), vec3_max_abs(b.hi)), -20);
     return (Box){vec3_sub(b.lo, vec3(m, m, m)), vec3_add(b.hi, vec3(m, m, m))};
 }
 /* end excerpt: box-pad */
 
+/* starter: todo */
 /* excerpt: box-of */
 /* Returns the box of sphere s: its centre plus and minus the radius on each axis. */
 Box box_of_sphere(const Sphere *s)
@@ -42,14 +43,18 @@ Box box_of_sphere(const Sphere *s)
     Vec3 r = vec3(s->radius, s->radius, s->radius);
     return box_pad((Box){vec3_sub(s->center, r), vec3_add(s->center, r)});
 }
+/* end excerpt: box-of */
 
+/* starter: todo */
+/* excerpt: box-of-triangle */
 /* Returns the box of triangle tri: the least and greatest coordinates of its corners. */
 Box box_of_triangle(const Triangle *tri)
 {
     return box_pad(box_add_point(box_add_point((Box){tri->a, tri->a}, tri->b), tri->c));
 }
-/* end excerpt: box-of */
+/* end excerpt: box-of-triangle */
 
+/* starter: todo */
 /* excerpt: box-hit-face */
 /* Finds where ray r meets the surface of box b with tmin < t < tmax, and on which face:
  * where it enters the box, or where it leaves it when it starts inside. Modes 1 and 2

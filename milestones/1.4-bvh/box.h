@@ -106,6 +106,7 @@ static inline double box_half_area(Box b)
 Box box_empty(void);
 Vec3 box_center(Box b);
 bool box_contains(Box outer, Box inner);
+Box box_pad(Box b);
 Box box_of_sphere(const Sphere *s);
 Box box_of_triangle(const Triangle *tri);
 bool box_hit_face(Box b, Ray r, double tmin, double tmax, BoxHit *hit);
