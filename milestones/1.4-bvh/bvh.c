@@ -148,8 +148,8 @@ static int sah_split(Builder *b, int begin, int end, Box box, Box centroids, int
     /* Partition in place: primitives of bins below best_bin to the front. */
     int i = begin, j = end - 1;
     while (i <= j) {
-        if (bin_of(axis_of(b->centroids[b->prims[i]], best_axis), lo[best_axis],
-                   scale[best_axis]) < best_bin) {
+        if (bin_of(axis_of(b->centroids[b->prims[i]], best_axis), lo[best_axis], scale[best_axis]) <
+            best_bin) {
             i++;
         } else {
             uint32_t swap = b->prims[i];
@@ -284,7 +284,7 @@ typedef struct {
 /* Visits every leaf whose box ray r meets with tmin <= t <= *tmax, nearer boxes first,
  * calling leaf for each, without recursion. Returns true when leaf asked to stop. */
 static ALWAYS_INLINE bool traverse(const Bvh *bvh, Ray r, double tmin, double *tmax, LeafFn leaf,
-                            void *state)
+                                   void *state, long *box_tests)
 {
     if (bvh->node_count == 0)
         return false;
@@ -315,6 +315,8 @@ static ALWAYS_INLINE bool traverse(const Bvh *bvh, Ray r, double tmin, double *t
             double t_near, t_far;
             bool hit_near = box_hit(node_box(&nodes[near]), &br, tmin, *tmax, &t_near);
             bool hit_far = box_hit(node_box(&nodes[far]), &br, tmin, *tmax, &t_far);
+            if (box_tests != NULL) /* only for --view box-tests; inlined away elsewhere */
+                *box_tests += 2;
             if (hit_near && hit_far) {
                 if (t_far < t_near) {
                     uint32_t swap = near;
@@ -349,8 +351,8 @@ static inline bool prim_intersect(const Scene *scene, uint32_t prim, Ray r, doub
     if (prim < (uint32_t)scene->sphere_count)
         return sphere_intersect(&scene->spheres[prim], r, tmin, tmax, t);
     TriangleHit th;
-    if (!triangle_intersect(&scene->triangles[prim - (uint32_t)scene->sphere_count], r, tmin,
-                            tmax, &th))
+    if (!triangle_intersect(&scene->triangles[prim - (uint32_t)scene->sphere_count], r, tmin, tmax,
+                            &th))
         return false;
     *t = th.t;
     return true;
@@ -411,7 +413,7 @@ void bvh_prim_surface(const Scene *scene, uint32_t prim, Hit *hit)
 bool bvh_hit(const Bvh *bvh, Ray r, double tmin, double tmax, Hit *hit)
 {
     Closest c = {.limit = tmax};
-    traverse(bvh, r, tmin, &tmax, leaf_closest, &c);
+    traverse(bvh, r, tmin, &tmax, leaf_closest, &c, NULL);
     if (!c.found)
         return false;
     *hit = (Hit){.t = c.t};
@@ -437,7 +439,7 @@ static bool leaf_any(const Bvh *bvh, const BvhNode *leaf, Ray r, double tmin, do
 /* Tells whether any sphere or triangle lies on ray r with tmin < t < tmax. */
 bool bvh_blocked(const Bvh *bvh, Ray r, double tmin, double tmax)
 {
-    return traverse(bvh, r, tmin, &tmax, leaf_any, NULL);
+    return traverse(bvh, r, tmin, &tmax, leaf_any, NULL, NULL);
 }
 
 /* The closest leaf box so far, and where the ray meets it. */
@@ -464,11 +466,37 @@ static bool leaf_box(const Bvh *bvh, const BvhNode *leaf, Ray r, double tmin, do
 bool bvh_hit_leaf_boxes(const Bvh *bvh, Ray r, double tmin, double tmax, Hit *hit)
 {
     LeafBoxes lb = {.closest = {.limit = tmax}};
-    traverse(bvh, r, tmin, &tmax, leaf_box, &lb);
+    traverse(bvh, r, tmin, &tmax, leaf_box, &lb, NULL);
     if (!lb.closest.found)
         return false;
     const BvhNode *leaf = &bvh->nodes[lb.closest.which];
-    *hit = (Hit){.t = lb.face.t, .point = ray_at(r, lb.face.t), .normal = box_face_normal(&lb.face)};
+    *hit =
+        (Hit){.t = lb.face.t, .point = ray_at(r, lb.face.t), .normal = box_face_normal(&lb.face)};
     bvh_prim_surface(bvh->scene, bvh->prims[leaf->index], hit);
     return true;
+}
+
+/* The closest hit so far, and the primitives tested on the way: --view box-tests. */
+typedef struct {
+    Closest closest;
+    long prim_tests;
+} Counted;
+
+/* Tests a leaf's primitives as leaf_closest does, counting them. */
+static bool leaf_counted(const Bvh *bvh, const BvhNode *leaf, Ray r, double tmin, double *tmax,
+                         void *state)
+{
+    Counted *c = state;
+    c->prim_tests += leaf->count;
+    return leaf_closest(bvh, leaf, r, tmin, tmax, &c->closest);
+}
+
+/* Returns how many boxes and primitives the search for ray r's closest hit tests. */
+long bvh_count_tests(const Bvh *bvh, Ray r)
+{
+    Counted c = {.closest = {.limit = INFINITY}};
+    double tmax = INFINITY;
+    long box_tests = bvh->node_count > 0; /* the root's */
+    traverse(bvh, r, 0, &tmax, leaf_counted, &c, &box_tests);
+    return box_tests + c.prim_tests;
 }

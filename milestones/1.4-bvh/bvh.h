@@ -54,5 +54,6 @@ bool bvh_hit(const Bvh *bvh, Ray r, double tmin, double tmax, Hit *hit);
 bool bvh_blocked(const Bvh *bvh, Ray r, double tmin, double tmax);
 bool bvh_hit_leaf_boxes(const Bvh *bvh, Ray r, double tmin, double tmax, Hit *hit);
 size_t bvh_bytes(const Bvh *bvh);
+long bvh_count_tests(const Bvh *bvh, Ray r);
 
 #endif

@@ -1,4 +1,5 @@
-/* raytra.c: part 1.4: the tracer of part 1.3 behind bounding boxes and a bounding volume hierarchy. */
+/* raytra.c: part 1.4: the tracer of part 1.3 behind bounding boxes and a bounding volume hierarchy.
+ */
 #include <stdio.h>
 #include <stdlib.h>
 
@@ -48,6 +49,20 @@ static Color trace_pixel(const void *ctx, int i, int j, RayStats *stats)
     return trace_radiance(&part->tracer, r, 0, &path);
 }
 
+/* Tells --view what the camera ray meets first, and for box-tests how many boxes and
+ * primitives it was tested against: in modes 0 and 1 every surface's box (and planes). */
+static void probe_pixel(const void *ctx, int i, int j, Probe *probe)
+{
+    const Part14 *part = ctx;
+    const Accel *a = &part->accel;
+    Ray r = camera_ray(&part->view.camera, i + 0.5, j + 0.5);
+    trace_probe(&part->tracer, r, probe);
+    const Scene *s = a->scene;
+    probe->tests = a->mode == ACCEL_BVH || a->mode == ACCEL_LEAF_BOXES
+                       ? bvh_count_tests(&a->bvh, r) + s->plane_count
+                       : s->sphere_count + s->triangle_count + s->plane_count;
+}
+
 /* Prints the size and build time of the BVH, or of the boxes, after the summary line. */
 static void report(const void *ctx, const RenderResult *result)
 {
@@ -81,6 +96,7 @@ static const Program program = {
                 FEATURE_MIRRORS | FEATURE_SHADING,
     .setup = setup,
     .pixel = trace_pixel,
+    .probe = probe_pixel,
     .report = report,
     .cleanup = cleanup,
 };

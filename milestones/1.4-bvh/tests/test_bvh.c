@@ -186,6 +186,22 @@ START_TEST(invariants_of_degenerate_sets)
 }
 END_TEST
 
+START_TEST(tests_counted_for_the_box_tests_view)
+{
+    /* One triangle: its leaf is the root. A ray that meets the root's box tests it and
+     * the triangle (2); one that misses it tests the root's box only (1). */
+    Scene scene;
+    random_scene(&scene, 1, 0.05, 0, 0);
+    scene.triangles[0] = (Triangle){vec3(-1, -1, -5), vec3(1, -1, -5), vec3(0, 1, -5), 0, 0};
+    Bvh bvh;
+    ck_assert(bvh_build(&bvh, &scene));
+    ck_assert_int_eq(bvh_count_tests(&bvh, ray(vec3(0, 0, 0), vec3(0, 0, -1))), 2);
+    ck_assert_int_eq(bvh_count_tests(&bvh, ray(vec3(0, 0, 0), vec3(0, 0, 1))), 1);
+    bvh_free(&bvh);
+    scene_free(&scene);
+}
+END_TEST
+
 /* Compares the BVH's closest hit and blocked() with brute force for count random rays
  * from points in [lo, hi]^3 on scene, half of them aimed at a point of the scene's box,
  * half in any direction; tmax is random for half of them. */
@@ -297,6 +313,7 @@ static Suite *bvh_suite(void)
     tcase_set_timeout(tc, 300);
     tcase_add_test(tc, invariants_of_random_soups);
     tcase_add_test(tc, invariants_of_degenerate_sets);
+    tcase_add_test(tc, tests_counted_for_the_box_tests_view);
     tcase_add_test(tc, closest_hit_as_brute_force);
     tcase_add_test(tc, modes_0_and_3_as_brute_force);
     tcase_add_test(tc, bunny_as_brute_force);
