@@ -26,8 +26,8 @@ what `raytra --trace-pixel` prints at a pixel that tells (its column and row
 from the top-left), and the fix.
 
 Every picture is made by `make mistakes` (tools/mistakes/gallery.sh), which also
-writes this page: the mistakes are raytra's part 1.3 with one option
-(`--ray-offset 0`) or with one function replaced by a wrong one
+writes this page: the mistakes are a part of raytra (1.3 unless said) with one
+option (`--ray-offset 0`) or with one function replaced by a wrong one
 (tools/mistakes/mistakes.c, linked in its place with the linker's `--wrap`).
 [docs/debugging.md](debugging.md) explains `--trace-pixel` and `--view`.
 EOF
@@ -137,6 +137,22 @@ shadow rays (part 1.3 never shades a light behind the surface).
 
 **The fix.** Return nothing, highlight included, when n·l ≤ 0
 (`shade_blinn_phong_terms`, docs/1.2-shading.md).
+EOF
+
+mistake bvh-loses-hits "A BVH that loses hits" "$variants/raytra-bvh-loses-hits" \
+    scenes/bvh-torus.scn "" 124,143 milestones/1.4-bvh/raytra <<'EOF'
+**What goes wrong.** Each triangle's bounding box is made of two of its corners
+instead of all three. The traversal only looks inside boxes, so wherever a
+triangle sticks out of its box the ray passes through it: holes, and the
+surfaces behind them show through. This one breaks part 1.4; `--mode 0` (every
+surface, each behind its own box) shows the same holes, and `--mode 1` draws
+the boxes themselves, too thin. In the trace, the camera ray reaches what lies
+behind the lost triangle.
+
+**The fix.** A box must hold everything its surface can be hit at: all three
+corners, padded so that rounding cannot shave off an edge (`box_of_triangle`,
+docs/1.4-bvh.md). The test that catches it compares the BVH's hits with brute
+force's on many random rays (`milestones/1.4-bvh/tests/test_bvh.c`).
 EOF
 
 echo "gallery: wrote $doc"

@@ -3,6 +3,7 @@
  * only for docs/mistakes.md. */
 #include <math.h>
 
+#include "box.h"
 #include "camera.h"
 #include "image.h"
 #include "secondary.h"
@@ -99,4 +100,15 @@ Vec3 __wrap_secondary_reflect(Vec3 d, Vec3 n)
     return vec3_neg(__real_secondary_reflect(d, n));
 }
 
+#endif
+
+#ifdef WRAP_box_of_triangle
+Box __wrap_box_of_triangle(const Triangle *tri);
+
+/* A BVH that loses hits: a triangle's box made of two of its corners, not all three, so
+ * the traversal never reaches the part of the triangle that sticks out of it. */
+Box __wrap_box_of_triangle(const Triangle *tri)
+{
+    return box_add_point(box_add_point(box_empty(), tri->a), tri->b);
+}
 #endif
