@@ -145,8 +145,8 @@ mistake bvh-loses-hits "A BVH that loses hits" "$variants/raytra-bvh-loses-hits"
 instead of all three. The traversal only looks inside boxes, so wherever a
 triangle sticks out of its box the ray passes through it: holes, and the
 surfaces behind them show through. This one breaks part 1.4; `--mode 0` (every
-surface, each behind its own box) shows the same holes, and `--mode 1` draws
-the boxes themselves, too thin. In the trace, the camera ray reaches what lies
+surface, each behind its own box) has holes too, if not the same ones, and
+`--mode 1` draws the boxes themselves, too thin. In the trace, the camera ray reaches what lies
 behind the lost triangle.
 
 **The fix.** A box must hold everything its surface can be hit at: all three
