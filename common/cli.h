@@ -39,6 +39,8 @@ typedef struct {
     double ray_offset; /* where secondary rays start, relative to the coordinates */
     /* Parts 1.4 and 1.5. */
     int mode; /* the course's box modes 0-3 */
+    /* From part 1.5 on. */
+    const char *fresnel_name; /* how glass reflects: "schlick" (NULL: the default) or "exact" */
 } Options;
 
 /* excerpt: cli-option */
