@@ -1,6 +1,8 @@
 /* refract.c: part 1.5's radiance function: mirrors as in part 1.3, and glass that reflects and refracts. */
 #include "refract.h"
 
+#include <math.h>
+
 #include "secondary.h"
 #include "shade.h"
 #include "transmit.h"
@@ -10,7 +12,9 @@
 Refractor refract_make(const Scene *scene, Surfaces surfaces, FresnelModel fresnel,
                        const Options *opts)
 {
-    Refractor rf = {.tracer = tracer_make(scene, surfaces, opts), .fresnel = fresnel};
+    Refractor rf = {.tracer = tracer_make(scene, surfaces, opts),
+                    .fresnel = fresnel,
+                    .min_weight = opts->min_weight};
     rf.tracer.direct = transmit_direct_radiance;
     for (int k = 0; k < scene->material_count; k++)
         rf.has_glass |= refract_is_glass(&scene->materials[k]);
@@ -32,14 +36,37 @@ Hit refract_glass_hit(const Scene *scene, const Hit *hit)
 }
 /* end excerpt: refract-glass-hit */
 
+/* Returns the largest of c's channels. */
+static double color_max(Color c)
+{
+    return fmax(c.r, fmax(c.g, c.b));
+}
+
+static Color radiance(const Refractor *rf, Ray r, int depth, double weight, Path *path);
+
+/* excerpt: refract-follow */
+/* Returns the radiance along the ray that leaves hit in direction dir, counted as kind,
+ * or black when its share of the pixel, weight, is too small to see (--min-weight):
+ * Hall and Greenberg's adaptive depth control. */
+static Color follow(const Refractor *rf, const Hit *hit, Ray r, Vec3 dir, RayKind kind, int depth,
+                    double weight, Path *path)
+{
+    if (weight <= 0 || weight < rf->min_weight)
+        return color(0, 0, 0);
+    /* secondary_ray starts it on the side it goes to: inside when it enters glass. */
+    Ray next = secondary_ray(hit, r, dir, rf->tracer.offset);
+    path->stats->rays[kind]++;
+    return radiance(rf, next, depth + 1, weight, path);
+}
+/* end excerpt: refract-follow */
+
 /* excerpt: refract-glass */
 /* Returns the light that the glass surface at hit (of material m) sends back along r
  * through Fresnel reflection and refraction: R times the radiance along the reflected
  * ray plus (1 - R) times the radiance along the refracted ray. */
 static Color glass_radiance(const Refractor *rf, const Hit *hit, const Material *m, Ray r,
-                            int depth, Path *path)
+                            int depth, double weight, Path *path)
 {
-    const Tracer *tr = &rf->tracer;
     /* Which side is which: a ray that meets the front of the surface enters the glass
      * from the air (n = 1); one that meets the back leaves it. */
     bool entering = !hit->back_face;
@@ -54,18 +81,12 @@ static Color glass_radiance(const Refractor *rf, const Hit *hit, const Material 
         double cos_air = entering ? -vec3_dot(r.dir, n) : -vec3_dot(t, n);
         reflectance = dielectric_reflectance(rf->fresnel, m->ior, cos_air);
     }
-    Color sum = color(0, 0, 0);
-    if (reflectance > 0) {
-        Ray reflected = secondary_ray(hit, r, secondary_reflect(r.dir, n), tr->offset);
-        path->stats->rays[RAY_REFLECTED]++;
-        Color seen = refract_radiance(rf, reflected, depth + 1, path);
-        sum = color_add(sum, color_scale(seen, reflectance));
-    }
-    if (refracts && reflectance < 1) {
-        /* secondary_ray starts it on the side it goes to: inside when entering. */
-        Ray refracted = secondary_ray(hit, r, t, tr->offset);
-        path->stats->rays[RAY_REFRACTED]++;
-        Color seen = refract_radiance(rf, refracted, depth + 1, path);
+    Vec3 mirrored = secondary_reflect(r.dir, n);
+    Color sum = color_scale(
+        follow(rf, hit, r, mirrored, RAY_REFLECTED, depth, weight * reflectance, path),
+        reflectance);
+    if (refracts) {
+        Color seen = follow(rf, hit, r, t, RAY_REFRACTED, depth, weight * (1 - reflectance), path);
         sum = color_add(sum, color_scale(seen, 1 - reflectance));
     }
     return sum;
@@ -80,31 +101,39 @@ static Color glass_radiance(const Refractor *rf, const Hit *hit, const Material 
  * trace_radiance; depth counts the reflections and refractions before r. */
 Color refract_radiance(const Refractor *rf, Ray r, int depth, Path *path)
 {
+    return radiance(rf, r, depth, 1, path);
+}
+
+/* The same, for a ray whose radiance counts weight times in its pixel. */
+static Color radiance(const Refractor *rf, Ray r, int depth, double weight, Path *path)
+{
     const Tracer *tr = &rf->tracer;
     Hit found;
     if (!tr->surfaces.hit(tr->surfaces.data, r, 0, INFINITY, &found))
         return color(0, 0, 0); /* the background */
     Hit hit = refract_glass_hit(tr->scene, &found);
-    Color radiance = tr->direct(tr, &hit, r, depth, path);
     const Material *m = shade_material(tr->scene, &hit, tr->two_sided);
+    /* A ray that meets glass from behind travelled inside it, all the way from its
+     * origin: what it carries back is absorbed along those t units of distance. */
+    Color absorbed = color(1, 1, 1);
+    if (found.back_face && refract_is_glass(m))
+        absorbed = dielectric_beer(m->attenuation, found.t);
+    weight *= color_max(absorbed);
+
+    Color radiance = tr->direct(tr, &hit, r, depth, path);
     /* Mirror, reflected and refracted rays share one budget: at its end, a branch
      * adds nothing more. */
     if (depth < tr->max_depth) {
         /* An ideal mirror, as in part 1.3; its reflected ray may now meet glass. */
         if (!color_is_black(m->mirror)) {
             Vec3 dir = secondary_reflect(r.dir, shade_normal(&hit));
-            Ray reflected = secondary_ray(&hit, r, dir, tr->offset);
-            path->stats->rays[RAY_REFLECTED]++;
-            Color mirrored = refract_radiance(rf, reflected, depth + 1, path);
+            Color mirrored = follow(rf, &hit, r, dir, RAY_REFLECTED, depth,
+                                    weight * color_max(m->mirror), path);
             radiance = color_add(radiance, color_mul(m->mirror, mirrored));
         }
         if (refract_is_glass(m))
-            radiance = color_add(radiance, glass_radiance(rf, &found, m, r, depth, path));
+            radiance = color_add(radiance, glass_radiance(rf, &found, m, r, depth, weight, path));
     }
-    /* A ray that meets glass from behind travelled inside it, all the way from its
-     * origin: what it carries back was absorbed along those t units of distance. */
-    if (found.back_face && refract_is_glass(m))
-        radiance = color_mul(radiance, dielectric_beer(m->attenuation, found.t));
-    return radiance;
+    return color_mul(radiance, absorbed);
 }
 /* end excerpt: refract-radiance */

@@ -15,6 +15,7 @@
 typedef struct {
     Tracer tracer;        /* first: a pointer to it is a pointer to the Refractor */
     FresnelModel fresnel; /* --fresnel: Schlick's approximation or the exact equations */
+    double min_weight;    /* --min-weight: rays that count less in their pixel are not traced */
     bool has_glass;       /* some material has an index of refraction */
 } Refractor;
 /* end excerpt: refractor-struct */
