@@ -25,7 +25,7 @@ FIRST    := $(call program,$(firstword $(PARTS)))
 COURSE_SCALE ?= 0.05
 FUZZ_SECONDS ?= 1800
 
-.PHONY: all test demo references docs check-docs check-layout check-course clean \
+.PHONY: all test demo references docs check-docs check-slides check-layout check-course clean \
         check-robust check-fuzz-regressions check-bad-input check-interrupt check-nonfinite \
         check-course-render valgrind fuzz fuzz-run
 .NOTPARALLEL:
@@ -42,7 +42,7 @@ test:
 	@$(SUBMAKE) -C tests test
 	@$(SUBMAKE) -C tools test
 	@for part in $(PARTS); do $(SUBMAKE) -C milestones/$$part test || exit 1; done
-	@$(SUBMAKE) check-docs check-layout check-course
+	@$(SUBMAKE) check-docs check-slides check-layout check-course
 	@$(SUBMAKE) check-robust
 	@echo "make test: every test passed"
 
@@ -94,6 +94,10 @@ check-docs:
 
 check-layout:
 	@tools/check-layout.sh $(BUILD)
+
+# Every "slide N" in the project quotes words that stand on slide N of the lecture.
+check-slides:
+	@tests/slides.sh
 
 docs:
 	@$(SUBMAKE) -C tools docsnip
