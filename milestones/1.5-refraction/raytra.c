@@ -45,10 +45,18 @@ static Color refract_pixel(const void *ctx, int i, int j, RayStats *stats)
     const Part15 *part = ctx;
     Ray r = camera_ray(&part->view.camera, i + 0.5, j + 0.5);
     stats->rays[RAY_PRIMARY]++;
+    explain_ray(part->refractor.tracer.explain, 0, "camera", r);
     Path path = {.stats = stats};
     return refract_radiance(&part->refractor, r, 0, &path);
 }
 /* end excerpt: refract-pixel */
+
+/* Tells --view what the camera ray meets first, as part 1.3 does. */
+static void probe_pixel(const void *ctx, int i, int j, Probe *probe)
+{
+    const Part15 *part = ctx;
+    trace_probe(&part->refractor.tracer, camera_ray(&part->view.camera, i + 0.5, j + 0.5), probe);
+}
 
 static const Program program = {
     .cli = {.part = "1.5-refraction",
@@ -59,6 +67,7 @@ static const Program program = {
                 FEATURE_MIRRORS | FEATURE_REFRACTION | FEATURE_SHADING,
     .setup = setup,
     .pixel = refract_pixel,
+    .probe = probe_pixel,
     .cleanup = free,
 };
 

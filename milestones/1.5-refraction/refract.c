@@ -6,6 +6,7 @@
 #include "secondary.h"
 #include "shade.h"
 #include "transmit.h"
+#include "world.h"
 
 /* Returns the tracer of scene with glass, finding hits with surfaces, set up by the
  * command line; its direct light lets shadow rays through glass (transmit.c). */
@@ -51,11 +52,16 @@ static Color radiance(const Refractor *rf, Ray r, int depth, double weight, Path
 static Color follow(const Refractor *rf, const Hit *hit, Ray r, Vec3 dir, RayKind kind, int depth,
                     double weight, Path *path)
 {
-    if (weight <= 0 || weight < rf->min_weight)
+    const char *name = render_ray_kind_name(kind);
+    if (weight <= 0 || weight < rf->min_weight) {
+        explain_line(rf->tracer.explain, depth + 1, "%s ray not followed: it would count %.3g",
+                     name, weight);
         return color(0, 0, 0);
+    }
     /* secondary_ray starts it on the side it goes to: inside when it enters glass. */
     Ray next = secondary_ray(hit, r, dir, rf->tracer.offset);
     path->stats->rays[kind]++;
+    explain_ray(rf->tracer.explain, depth + 1, name, next);
     return radiance(rf, next, depth + 1, weight, path);
 }
 /* end excerpt: refract-follow */
@@ -81,6 +87,9 @@ static Color glass_radiance(const Refractor *rf, const Hit *hit, const Material 
         double cos_air = entering ? -vec3_dot(r.dir, n) : -vec3_dot(t, n);
         reflectance = dielectric_reflectance(rf->fresnel, m->ior, cos_air);
     }
+    explain_line(rf->tracer.explain, depth + 1, "glass of index %g, %s it: %s, R = %.6g",
+                 m->ior, entering ? "entering" : "leaving",
+                 refracts ? "refracted" : "total internal reflection", reflectance);
     Vec3 mirrored = secondary_reflect(r.dir, n);
     Color sum = color_scale(
         follow(rf, hit, r, mirrored, RAY_REFLECTED, depth, weight * reflectance, path),
@@ -109,8 +118,11 @@ static Color radiance(const Refractor *rf, Ray r, int depth, double weight, Path
 {
     const Tracer *tr = &rf->tracer;
     Hit found;
-    if (!tr->surfaces.hit(tr->surfaces.data, r, 0, INFINITY, &found))
-        return color(0, 0, 0); /* the background */
+    if (!tr->surfaces.hit(tr->surfaces.data, r, 0, INFINITY, &found)) {
+        explain_line(tr->explain, depth + 1, "hits nothing: the black background");
+        return color(0, 0, 0);
+    }
+    world_explain_hit(tr->explain, depth + 1, &found);
     Hit hit = refract_glass_hit(tr->scene, &found);
     const Material *m = shade_material(tr->scene, &hit, tr->two_sided);
     /* A ray that meets glass from behind travelled inside it, all the way from its
@@ -134,6 +146,10 @@ static Color radiance(const Refractor *rf, Ray r, int depth, double weight, Path
         if (refract_is_glass(m))
             radiance = color_add(radiance, glass_radiance(rf, &found, m, r, depth, weight, path));
     }
-    return color_mul(radiance, absorbed);
+    if (found.back_face && refract_is_glass(m))
+        explain_color(tr->explain, depth + 1, "times a^t, absorbed inside", absorbed);
+    radiance = color_mul(radiance, absorbed);
+    explain_color(tr->explain, depth + 1, "radiance", radiance);
+    return radiance;
 }
 /* end excerpt: refract-radiance */

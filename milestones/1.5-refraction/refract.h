@@ -1,4 +1,5 @@
-/* refract.h: the radiance along a ray through a scene with glass: reflected and refracted rays. */
+/* refract.h: the radiance along a ray through glass, reflected and refracted (textbook 13.1).
+ * Slide 13 ("if the surface is transparent, trace a transmission ray"). */
 #ifndef RAYTRA_REFRACT_H
 #define RAYTRA_REFRACT_H
 

@@ -54,20 +54,32 @@ Color transmit_direct_radiance(const Tracer *tr, const Hit *hit, Ray r, int dept
 {
     const Scene *scene = tr->scene;
     const Material *m = shade_material(scene, hit, tr->two_sided);
+    shade_explain_material(tr->explain, depth + 1, m);
     Vec3 n = shade_normal(hit);
     Vec3 v = vec3_neg(r.dir);
     /* The ambient light as in part 1.3: at every hit, or under fall2016 at camera hits. */
     Color sum = color(0, 0, 0);
     if (depth == 0 || scene->convention != CONVENTION_FALL2016)
         sum = color_mul(m->diffuse, scene->ambient);
+    explain_color(tr->explain, depth + 1, "ambient, kd (.) ambient light", sum);
     for (int k = 0; k < scene->light_count; k++) {
         Incident in = light_incident(&scene->lights[k], hit->point, scene_light_falls_off(scene));
-        if (vec3_dot(n, in.dir) <= 0)
-            continue; /* a light behind the surface adds nothing, and needs no shadow ray */
+        if (vec3_dot(n, in.dir) <= 0) { /* it adds nothing, and needs no shadow ray */
+            explain_line(tr->explain, depth + 1, "light %d: behind the surface", k);
+            continue;
+        }
         Color through = transmit_light(refractor_of(tr), hit, r, &in, path);
-        if (!color_is_black(through))
-            sum = color_add(sum, color_mul(through, shade_blinn_phong(m, n, v, &in)));
+        if (color_is_black(through)) {
+            explain_line(tr->explain, depth + 1, "light %d: in shadow", k);
+            continue;
+        }
+        BlinnPhong terms = shade_blinn_phong_terms(m, n, v, &in);
+        shade_explain_light(tr->explain, depth + 1, k, &in, terms);
+        if (through.r < 1 || through.g < 1 || through.b < 1)
+            explain_color(tr->explain, depth + 2, "times what gets through glass", through);
+        sum = color_add(sum, color_mul(through, color_add(terms.diffuse, terms.specular)));
     }
+    explain_color(tr->explain, depth + 1, "direct light", sum);
     return sum;
 }
 /* end excerpt: transmit-direct-radiance */

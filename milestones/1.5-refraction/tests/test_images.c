@@ -132,6 +132,33 @@ START_TEST(a_bad_fresnel_model_is_refused)
 }
 END_TEST
 
+START_TEST(trace_pixel_tells_the_glass)
+{
+    /* The centre pixel looks head-on through a glass ball of radius 2 (a = 0.5 per unit)
+     * at a white wall: entering and leaving with R = R0 = 0.04, absorbed by 0.5^4. */
+    FILE *f = fopen("glass.scn", "w");
+    fputs("c 0 0 10  0 0 -1  1  1 1  3 3\nl a 1 1 1\n"
+          "m 1 1 1  0 0 0  1  0 0 0\np 0 0 1 10\n"
+          "m 0 0 0  0 0 0  1  0 0 0  1.5  0.5 0.5 0.5\ns 0 0 0 2\n",
+          f);
+    fclose(f);
+    char command[1024];
+    snprintf(command, sizeof command, "'%s' -q --trace-pixel 1,1 glass.scn > tree 2>&1", RAYTRA);
+    ck_assert_int_eq(system(command), 0);
+    static char text[1 << 16];
+    f = fopen("tree", "r");
+    size_t n = fread(text, 1, sizeof text - 1, f);
+    text[n] = '\0';
+    fclose(f);
+    ck_assert_contains(text, "glass of index 1.5, entering it: refracted, R = 0.04\n");
+    ck_assert_contains(text, "refracted ray from (");
+    ck_assert_contains(text, "glass of index 1.5, leaving it: refracted, R = 0.04\n");
+    ck_assert_contains(text, "times a^t, absorbed inside = (0.0625, 0.0625, 0.0625)");
+    /* The reflected ray off the front goes back past the camera into the background. */
+    ck_assert_contains(text, "hits nothing: the black background");
+}
+END_TEST
+
 /* The image tests. */
 static Suite *images_suite(void)
 {
@@ -141,6 +168,7 @@ static Suite *images_suite(void)
     tcase_add_test(tc, index_one_is_invisible_under_the_exact_equations);
     tcase_add_test(tc, index_one_shows_a_rim_under_schlick);
     tcase_add_test(tc, a_bad_fresnel_model_is_refused);
+    tcase_add_test(tc, trace_pixel_tells_the_glass);
     suite_add_tcase(s, tc);
     return s;
 }
