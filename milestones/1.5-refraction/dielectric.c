@@ -87,10 +87,11 @@ double dielectric_reflectance(FresnelModel model, double ior, double cos_air)
     if (model == FRESNEL_SCHLICK)
         return dielectric_schlick(ior, cos_air);
     double sin2_inside = (1 - cos_air * cos_air) / (ior * ior);
-    double cos_inside = sqrt(fmax(0, 1 - sin2_inside));
-    if (sin2_inside > 1)
-        return 1; /* only for ior < 1, where air is the denser side */
-    return dielectric_fresnel_exact(1, ior, cos_air, cos_inside);
+    /* Grazing, or beyond the critical angle (only for ior < 1, where air is the denser
+     * side): everything is reflected, and the equations would divide 0 by 0. */
+    if (cos_air <= 0 || sin2_inside >= 1)
+        return 1;
+    return dielectric_fresnel_exact(1, ior, cos_air, sqrt(1 - sin2_inside));
 }
 /* end excerpt: dielectric-reflectance */
 

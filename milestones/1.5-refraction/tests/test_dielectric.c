@@ -140,6 +140,10 @@ START_TEST(index_one_reflects_nothing_only_when_exact)
                                 1e-15);
     }
     ck_assert(dielectric_reflectance(FRESNEL_SCHLICK, 1, 0.1) > 0.59);
+    /* Exactly grazing, where the exact equations are 0 / 0: all reflected, never NaN. */
+    ck_assert_double_eq(dielectric_reflectance(FRESNEL_EXACT, 1, 0), 1);
+    ck_assert_double_eq(dielectric_reflectance(FRESNEL_EXACT, 0.5, 0), 1);
+    ck_assert_double_eq(dielectric_reflectance(FRESNEL_EXACT, 0.5, sqrt(0.75)), 1);
 }
 END_TEST
 
