@@ -159,6 +159,28 @@ START_TEST(trace_pixel_tells_the_glass)
 }
 END_TEST
 
+START_TEST(an_open_glass_mesh_is_warned_about_once)
+{
+    /* Two glass triangles sharing one edge: four edges belong to one triangle only. */
+    FILE *f = fopen("open.scn", "w");
+    fputs("c 0 0 10  0 0 -1  1  1 1  3 3\nl a 1 1 1\n"
+          "m 0 0 0  0 0 0  1  0 0 0  1.5\n"
+          "t -1 -1 0  1 -1 0  1 1 0\nt -1 -1 0  1 1 0  -1 1 0\n",
+          f);
+    fclose(f);
+    char command[1024];
+    snprintf(command, sizeof command, "'%s' -q open.scn out.png 2> err", RAYTRA);
+    ck_assert_int_eq(system(command), 0);
+    static char text[4096];
+    f = fopen("err", "r");
+    size_t n = fread(text, 1, sizeof text - 1, f);
+    text[n] = '\0';
+    fclose(f);
+    ck_assert_contains(text, "open.scn: glass triangles are not closed: 4 edge(s)");
+    ck_assert_ptr_null(strstr(strstr(text, "not closed") + 1, "not closed"));
+}
+END_TEST
+
 /* The image tests. */
 static Suite *images_suite(void)
 {
@@ -169,6 +191,7 @@ static Suite *images_suite(void)
     tcase_add_test(tc, index_one_shows_a_rim_under_schlick);
     tcase_add_test(tc, a_bad_fresnel_model_is_refused);
     tcase_add_test(tc, trace_pixel_tells_the_glass);
+    tcase_add_test(tc, an_open_glass_mesh_is_warned_about_once);
     suite_add_tcase(s, tc);
     return s;
 }
