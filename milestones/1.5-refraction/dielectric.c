@@ -16,6 +16,7 @@ bool dielectric_fresnel_from_name(const char *name, FresnelModel *model)
     return true;
 }
 
+/* starter: todo */
 /* excerpt: dielectric-refract */
 /* Finds the direction t in which the unit direction d goes on through a surface of unit
  * normal n (facing d: d.n < 0), where eta = n_i / n_t is the ratio of the index of the
@@ -37,6 +38,7 @@ bool dielectric_refract(Vec3 d, Vec3 n, double eta, Vec3 *t)
 }
 /* end excerpt: dielectric-refract */
 
+/* starter: todo */
 /* excerpt: dielectric-schlick */
 /* Returns Schlick's approximation of the reflected fraction at a surface between air and
  * a material of index ior, R = R0 + (1 - R0)(1 - cos)^5 with R0 = ((ior - 1)/(ior + 1))^2,
@@ -50,6 +52,7 @@ double dielectric_schlick(double ior, double cos_air)
 }
 /* end excerpt: dielectric-schlick */
 
+/* starter: todo */
 /* excerpt: dielectric-fresnel-exact */
 /* Returns the reflected fraction of unpolarised light at a surface from index n_i to n_t,
  * met at cos_i and left at cos_t (Snell's angles): the mean of the reflectances of the
@@ -95,6 +98,7 @@ double dielectric_reflectance(FresnelModel model, double ior, double cos_air)
 }
 /* end excerpt: dielectric-reflectance */
 
+/* starter: todo */
 /* excerpt: dielectric-beer */
 /* Returns the fraction of light left after a distance s inside a material of attenuation a,
  * per channel: Beer's law, I(s) = I(0) e^(ln(a) s) = I(0) a^s. Each unit of distance keeps

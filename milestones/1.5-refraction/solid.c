@@ -5,13 +5,6 @@
 
 #include "refract.h"
 
-/* One edge of one glass triangle, its corners in a fixed order and the way it runs. */
-typedef struct {
-    int material;
-    Vec3 lo, hi;  /* the corners, the lesser one (by x, then y, then z) first */
-    bool forward; /* the triangle runs from lo to hi */
-} Edge;
-
 /* Orders two points by x, then y, then z. */
 static int point_compare(Vec3 a, Vec3 b)
 {
@@ -24,10 +17,11 @@ static int point_compare(Vec3 a, Vec3 b)
     return 0;
 }
 
-/* Orders edges by material, then corners, so that the uses of one edge come together. */
-static int edge_compare(const void *pa, const void *pb)
+/* Orders edges (SolidEdge) by material, then corners, so that the uses of one edge come
+ * together; a comparison function for qsort. */
+int solid_edge_compare(const void *pa, const void *pb)
 {
-    const Edge *a = pa, *b = pb;
+    const SolidEdge *a = pa, *b = pb;
     if (a->material != b->material)
         return a->material < b->material ? -1 : 1;
     int c = point_compare(a->lo, b->lo);
@@ -35,12 +29,13 @@ static int edge_compare(const void *pa, const void *pb)
 }
 
 /* Returns the edge of material from p to q. */
-static Edge edge_make(int material, Vec3 p, Vec3 q)
+SolidEdge solid_edge(int material, Vec3 p, Vec3 q)
 {
     bool forward = point_compare(p, q) < 0;
-    return (Edge){material, forward ? p : q, forward ? q : p, forward};
+    return (SolidEdge){material, forward ? p : q, forward ? q : p, forward};
 }
 
+/* starter: todo */
 /* excerpt: solid-check */
 /* Counts the edges of the scene's glass triangles that show they do not bound a closed,
  * consistently wound solid. In a closed mesh every edge is shared by exactly two
@@ -55,7 +50,7 @@ SolidCheck solid_check(const Scene *scene)
         count += refract_is_glass(&scene->materials[scene->triangles[k].material]) ? 3 : 0;
     if (count == 0)
         return check;
-    Edge *edges = malloc((size_t)count * sizeof *edges);
+    SolidEdge *edges = malloc((size_t)count * sizeof *edges);
     if (edges == NULL) {
         check.incomplete = true;
         return check;
@@ -65,14 +60,14 @@ SolidCheck solid_check(const Scene *scene)
         const Triangle *t = &scene->triangles[k];
         if (!refract_is_glass(&scene->materials[t->material]))
             continue;
-        edges[n++] = edge_make(t->material, t->a, t->b);
-        edges[n++] = edge_make(t->material, t->b, t->c);
-        edges[n++] = edge_make(t->material, t->c, t->a);
+        edges[n++] = solid_edge(t->material, t->a, t->b);
+        edges[n++] = solid_edge(t->material, t->b, t->c);
+        edges[n++] = solid_edge(t->material, t->c, t->a);
     }
-    qsort(edges, (size_t)n, sizeof *edges, edge_compare);
+    qsort(edges, (size_t)n, sizeof *edges, solid_edge_compare);
     for (long first = 0, next; first < n; first = next) {
         int forward = 0;
-        for (next = first; next < n && edge_compare(&edges[first], &edges[next]) == 0; next++)
+        for (next = first; next < n && solid_edge_compare(&edges[first], &edges[next]) == 0; next++)
             forward += edges[next].forward;
         long uses = next - first;
         if (uses == 1)

@@ -14,6 +14,15 @@ typedef struct {
     bool incomplete; /* out of memory: nothing was checked */
 } SolidCheck;
 
+/* One edge of one glass triangle, its corners in a fixed order and the way it runs. */
+typedef struct {
+    int material;
+    Vec3 lo, hi;  /* the corners, the lesser one (by x, then y, then z) first */
+    bool forward; /* the triangle runs from lo to hi */
+} SolidEdge;
+
+SolidEdge solid_edge(int material, Vec3 p, Vec3 q);
+int solid_edge_compare(const void *a, const void *b);
 SolidCheck solid_check(const Scene *scene);
 void solid_warn(const Scene *scene, FILE *f);
 

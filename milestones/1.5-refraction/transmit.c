@@ -4,6 +4,7 @@
 #include "secondary.h"
 #include "shade.h"
 
+/* starter: todo */
 /* excerpt: transmit-light */
 /* Returns the fraction of the light in that reaches hit's point, per channel: 1 when
  * nothing lies between them, 0 when something opaque does, and when only glass does,
