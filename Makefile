@@ -9,6 +9,7 @@
 #                    hands out, into out/starter-<part>/ (docs/starters.md)
 #   make check-starters  build every part's starter, stubbed and solved
 #   make valgrind    render scenes of every part, and broken inputs, under valgrind's memcheck
+#   make bench       benchmark part 1.4's BVH (against Embree 3 when installed; bench/README.md)
 #   make fuzz        build the libFuzzer harnesses of the scene and OBJ readers (clang)
 #   make fuzz-run    fuzz each reader for FUZZ_SECONDS (default 1800) s (docs/robustness.md)
 #   make mistakes    render the gallery of common mistakes and write docs/mistakes.md
@@ -31,7 +32,7 @@ FUZZ_SECONDS ?= 1800
 
 .PHONY: all test demo references docs check-docs check-slides check-figures check-layout check-course clean \
         check-robust check-fuzz-regressions check-bad-input check-interrupt check-nonfinite \
-        check-course-render valgrind fuzz fuzz-run mistakes starter check-starter check-starters \
+        check-course-render valgrind fuzz fuzz-run bench mistakes starter check-starter check-starters \
         check-exercises
 .NOTPARALLEL:
 
@@ -87,6 +88,12 @@ valgrind:
 
 fuzz:
 	@$(SUBMAKE) -C tests/fuzz fuzzers
+
+# Speed, never part of make test: installs Embree 3 for the baseline when it can.
+bench:
+	$(DEPS_STEP)
+	@tools/deps.sh bench || echo "bench: Embree 3 is not installed: the baseline will be skipped"
+	@$(SUBMAKE) -C bench run
 
 fuzz-run: fuzz
 	@tests/fuzz/run.sh scene $(FUZZ_SECONDS) && tests/fuzz/run.sh obj $(FUZZ_SECONDS)
@@ -155,6 +162,7 @@ clean:
 	@$(SUBMAKE) -C tests clean
 	@$(SUBMAKE) -C tests/fuzz clean
 	@$(SUBMAKE) -C tools clean
+	@$(SUBMAKE) -C bench clean
 	@$(SUBMAKE) -C tools/mistakes clean
 	@for part in $(PARTS); do $(SUBMAKE) -C milestones/$$part clean; done
 	rm -rf out

@@ -37,7 +37,8 @@ LineStatus lex_next_line(LineReader *r)
     size_t n = 0, seen = 0;
     bool too_long = false;
     int c;
-    while ((c = getc(r->file)) != EOF && c != '\n') {
+    /* The reader is the file's only user: no need to lock the stream for every byte. */
+    while ((c = getc_unlocked(r->file)) != EOF && c != '\n') {
         if (is_binary_byte(c)) {
             /* What came before the byte stays in buf: a file's first bytes name its type. */
             r->line++;
@@ -117,6 +118,32 @@ static bool is_decimal(const char *s)
     return *s == '\0';
 }
 
+/* Reads word when it is a plain decimal of at most 15 digits, [+-] digits [. digits],
+ * the form of nearly every number of an OBJ file, faster than strtod and to the same
+ * double: the digits make an integer m < 10^15 < 2^53 and 10^k (k <= 15) is exact too,
+ * so m / 10^k is a single correctly rounded division, as strtod's answer is. False for
+ * anything else, which strtod reads. */
+static bool fast_decimal(const char *s, double *value)
+{
+    static const double pow10[16] = {1e0, 1e1, 1e2,  1e3,  1e4,  1e5,  1e6,  1e7,
+                                     1e8, 1e9, 1e10, 1e11, 1e12, 1e13, 1e14, 1e15};
+    bool negative = *s == '-';
+    if (*s == '+' || *s == '-')
+        s++;
+    long long m = 0;
+    int digits = 0, fraction = 0;
+    for (; isdigit((unsigned char)*s); s++, digits++)
+        m = 10 * m + (*s - '0');
+    if (*s == '.')
+        for (s++; isdigit((unsigned char)*s); s++, digits++, fraction++)
+            m = 10 * m + (*s - '0');
+    if (*s != '\0' || digits == 0 || digits > 15)
+        return false;
+    double v = (double)m / pow10[fraction];
+    *value = negative ? -v : v;
+    return true;
+}
+
 const char lex_dash_warning[] = "'%s' has a dash where a minus sign belongs; read as %g";
 
 /* Byte sequences that word processors and input methods put where a minus sign belongs. */
@@ -153,13 +180,20 @@ NumberStatus lex_number(const char *word, double *value)
         *value = -*value;
         return NUMBER_DASH;
     }
+    double v;
+    if (fast_decimal(word, &v)) {
+        if (fabs(v) > LEX_MAX_NUMBER)
+            return NUMBER_TOO_LARGE;
+        *value = v;
+        return NUMBER_OK;
+    }
     if (!is_decimal(word)) {
         const char *s = word + (*word == '+' || *word == '-');
         if (strncasecmp(s, "nan", 3) == 0 || strncasecmp(s, "inf", 3) == 0)
             return NUMBER_NOT_FINITE;
         return NUMBER_MALFORMED;
     }
-    double v = strtod(word, NULL);
+    v = strtod(word, NULL);
     if (!isfinite(v))
         return NUMBER_NOT_FINITE;
     if (fabs(v) > LEX_MAX_NUMBER)

@@ -28,6 +28,38 @@ START_TEST(numbers)
 }
 END_TEST
 
+/* Every decimal of up to 17 digits, read by lex_number (a fast path up to 15), is the
+ * double strtod reads, to the last bit. */
+START_TEST(numbers_as_strtod)
+{
+    unsigned long long state = 12345;
+    for (int k = 0; k < 50000; k++) {
+        char word[64];
+        int n = 0;
+        state = state * 6364136223846793005ull + 1442695040888963407ull;
+        if (state >> 63)
+            word[n++] = '-';
+        int digits = 1 + (int)((state >> 40) % 17), point = (int)((state >> 20) % (digits + 1));
+        for (int d = 0; d < digits; d++) {
+            if (d == point && d > 0)
+                word[n++] = '.';
+            state = state * 6364136223846793005ull + 1442695040888963407ull;
+            word[n++] = (char)('0' + (state >> 33) % 10);
+        }
+        word[n] = '\0';
+        double got = 0, expected = strtod(word, NULL);
+        NumberStatus s = lex_number(word, &got);
+        if (fabs(expected) > LEX_MAX_NUMBER) {
+            ck_assert_int_eq(s, NUMBER_TOO_LARGE);
+            continue;
+        }
+        ck_assert_int_eq(s, NUMBER_OK);
+        ck_assert_msg(memcmp(&got, &expected, sizeof got) == 0, "'%s': %.17g, strtod %.17g", word,
+                      got, expected);
+    }
+}
+END_TEST
+
 START_TEST(not_numbers)
 {
     const char *malformed[] = {"abc", "1.2.3", "1e",  "1e+", "0x10",        "", "-", ".",
@@ -143,6 +175,7 @@ static Suite *lex_suite(void)
     Suite *s = suite_create("lex");
     TCase *tc = tcase_create("lex");
     tcase_add_test(tc, numbers);
+    tcase_add_test(tc, numbers_as_strtod);
     tcase_add_test(tc, not_numbers);
     tcase_add_test(tc, words);
     tcase_add_test(tc, many_words_are_counted_not_kept);

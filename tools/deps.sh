@@ -1,10 +1,11 @@
 #!/bin/sh
 # deps.sh: makes sure the packages raytra builds with are installed.
 #
-# Usage: tools/deps.sh [build|test]
+# Usage: tools/deps.sh [build|test|bench]
 #   build  needs a C compiler, make, pkg-config, and the headers of libpng and of
 #          OpenEXR 3 (its C API, openexr.h);
-#   test   needs, in addition, the Check unit-test framework.
+#   test   needs, in addition, the Check unit-test framework;
+#   bench  needs, in addition to build, Embree 3 for the benchmark's baseline.
 #
 # On Debian and Ubuntu it installs what is missing with apt-get when it may
 # (as root, or through sudo without a password); otherwise it names the exact
@@ -13,6 +14,8 @@
 set -u
 need_check=no
 [ "${1:-build}" = test ] && need_check=yes
+need_embree=no
+[ "${1:-build}" = bench ] && need_embree=yes
 
 missing=""
 command -v cc >/dev/null 2>&1 || missing="$missing gcc"
@@ -25,6 +28,9 @@ if ! pkg-config --exists 'OpenEXR >= 3' 2>/dev/null && [ ! -f /usr/include/OpenE
 fi
 if [ $need_check = yes ] && ! pkg-config --exists check 2>/dev/null; then
     missing="$missing check"
+fi
+if [ $need_embree = yes ] && [ ! -f /usr/include/embree3/rtcore.h ]; then
+    missing="$missing libembree-dev"
 fi
 [ -z "$missing" ] && exit 0
 

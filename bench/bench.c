@@ -1,0 +1,358 @@
+/* bench.c: how fast part 1.4 loads meshes, builds its BVH and traces fixed sets of rays. */
+#include <math.h>
+#include <pthread.h>
+#include <stdatomic.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/stat.h>
+#include <time.h>
+
+#include "baseline.h"
+#include "bvh.h"
+#include "obj.h"
+#include "world.h"
+
+/* Rays traced in one go by a thread before it takes the next batch. */
+#define BATCH 4096
+
+/* Returns the seconds of a monotonic clock. */
+static double now(void)
+{
+    struct timespec ts;
+    clock_gettime(CLOCK_MONOTONIC, &ts);
+    return ts.tv_sec + ts.tv_nsec * 1e-9;
+}
+
+/* A benchmark mesh: its triangles as a scene, and how it was obtained. */
+typedef struct {
+    const char *name;
+    Scene scene;
+    double load_mb_per_s; /* the OBJ reader's speed; 0 for a generated mesh */
+} BenchMesh;
+
+/* Fills scene with the triangles of mesh, all of material 0. */
+static void scene_from_mesh(Scene *scene, const Mesh *mesh)
+{
+    *scene = (Scene){0};
+    scene->triangles = malloc((size_t)mesh->triangle_count * sizeof *scene->triangles);
+    for (int k = 0; k < mesh->triangle_count; k++) {
+        const int *v = mesh->triangles[k];
+        scene->triangles[k] =
+            (Triangle){mesh->vertices[v[0]], mesh->vertices[v[1]], mesh->vertices[v[2]], 0, 0};
+    }
+    scene->triangle_count = mesh->triangle_count;
+    scene->materials = calloc(1, sizeof *scene->materials);
+    scene->material_count = 1;
+}
+
+/* Loads the OBJ file at path, timing the reader; false when it is not there. */
+static bool mesh_load(BenchMesh *m, const char *name, const char *path)
+{
+    struct stat st;
+    if (stat(path, &st) != 0) {
+        printf("%-8s SKIPPED: %s does not exist\n", name, path);
+        return false;
+    }
+    Diag diag;
+    diag_init(&diag, stderr);
+    Mesh mesh;
+    double best = INFINITY;
+    /* Best of three: the first read also pays for the page cache. */
+    for (int k = 0; k < 3; k++) {
+        double start = now();
+        if (!obj_load(&mesh, path, &diag))
+            return false;
+        best = fmin(best, now() - start);
+        if (k < 2)
+            obj_free(&mesh);
+    }
+    m->name = name;
+    m->load_mb_per_s = st.st_size / 1e6 / best;
+    scene_from_mesh(&m->scene, &mesh);
+    obj_free(&mesh);
+    return true;
+}
+
+/* Appends the triangle a, b, c (unit vectors) split level times into 4, on the unit
+ * sphere, to scene: a geodesic sphere. */
+static void subdivide(Scene *scene, Vec3 a, Vec3 b, Vec3 c, int level)
+{
+    if (level == 0) {
+        scene->triangles[scene->triangle_count++] = (Triangle){a, b, c, 0, 0};
+        return;
+    }
+    Vec3 ab = vec3_normalize(vec3_add(a, b)), bc = vec3_normalize(vec3_add(b, c)),
+         ca = vec3_normalize(vec3_add(c, a));
+    subdivide(scene, a, ab, ca, level - 1);
+    subdivide(scene, ab, b, bc, level - 1);
+    subdivide(scene, ca, bc, c, level - 1);
+    subdivide(scene, ab, bc, ca, level - 1);
+}
+
+/* Makes a geodesic sphere of radius 1 from an icosahedron split level times:
+ * 20 * 4^level triangles. */
+static void mesh_sphere(BenchMesh *m, const char *name, int level)
+{
+    double p = (1 + sqrt(5)) / 2;
+    Vec3 v[12] = {{-1, p, 0}, {1, p, 0}, {-1, -p, 0}, {1, -p, 0}, {0, -1, p}, {0, 1, p},
+                  {0, -1, -p}, {0, 1, -p}, {p, 0, -1}, {p, 0, 1}, {-p, 0, -1}, {-p, 0, 1}};
+    static const int f[20][3] = {{0, 11, 5}, {0, 5, 1},  {0, 1, 7},   {0, 7, 10}, {0, 10, 11},
+                                 {1, 5, 9},  {5, 11, 4}, {11, 10, 2}, {10, 7, 6}, {7, 1, 8},
+                                 {3, 9, 4},  {3, 4, 2},  {3, 2, 6},   {3, 6, 8},  {3, 8, 9},
+                                 {4, 9, 5},  {2, 4, 11}, {6, 2, 10},  {8, 6, 7},  {9, 8, 1}};
+    for (int k = 0; k < 12; k++)
+        v[k] = vec3_normalize(v[k]);
+    m->name = name;
+    m->load_mb_per_s = 0;
+    m->scene = (Scene){0};
+    m->scene.triangles = malloc(((size_t)20 << (2 * level)) * sizeof(Triangle));
+    for (int k = 0; k < 20; k++)
+        subdivide(&m->scene, v[f[k][0]], v[f[k][1]], v[f[k][2]], level);
+    m->scene.materials = calloc(1, sizeof *m->scene.materials);
+    m->scene.material_count = 1;
+}
+
+/* Returns the box of every triangle of scene. */
+static Box scene_box(const Scene *scene)
+{
+    Box b = box_empty();
+    for (int k = 0; k < scene->triangle_count; k++)
+        b = box_union(b, box_of_triangle(&scene->triangles[k]));
+    return b;
+}
+
+/* The primary rays of a pinhole camera at eye looking along view, n x n of them over a
+ * square field of view of fov radians; y is up. */
+static BenchRay *primary_rays(Vec3 eye, Vec3 view, double fov, int n)
+{
+    BenchRay *rays = malloc((size_t)n * n * sizeof *rays);
+    Vec3 w = vec3_normalize(view);
+    Vec3 u = vec3_normalize(vec3_cross(w, vec3(0, 1, 0))), v = vec3_cross(u, w);
+    double half = tan(fov / 2);
+    for (int j = 0; j < n; j++)
+        for (int i = 0; i < n; i++) {
+            double x = ((i + 0.5) / n * 2 - 1) * half, y = ((j + 0.5) / n * 2 - 1) * half;
+            Vec3 d = vec3_normalize(vec3_add(w, vec3_add(vec3_scale(u, x), vec3_scale(v, y))));
+            rays[(size_t)j * n + i] = (BenchRay){ray(eye, d), INFINITY};
+        }
+    return rays;
+}
+
+/* The shadow rays from the hits of the primary rays towards a point light: from the hit
+ * point, moved off the surface by 1e-6 of the scene's size, to the light. */
+static BenchRay *shadow_rays(const Bvh *bvh, const BenchRay *primary, long n, Vec3 light,
+                             double size, long *count)
+{
+    BenchRay *rays = malloc((size_t)n * sizeof *rays);
+    long m = 0;
+    for (long k = 0; k < n; k++) {
+        Hit hit;
+        if (!bvh_hit(bvh, primary[k].ray, 0, INFINITY, &hit))
+            continue;
+        world_complete_hit(bvh->scene, primary[k].ray, &hit);
+        Vec3 side = hit.back_face ? vec3_neg(hit.normal) : hit.normal;
+        Vec3 p = vec3_add_scaled(hit.point, side, 1e-6 * size);
+        Vec3 to = vec3_sub(light, p);
+        double d = vec3_length(to);
+        rays[m++] = (BenchRay){ray(p, vec3_scale(to, 1 / d)), d};
+    }
+    *count = m;
+    return rays;
+}
+
+/* Who traces: raytra's BVH, brute force or the baseline, and which rays. */
+typedef enum { BY_BVH, BY_BRUTE_FORCE, BY_BASELINE } Tracer;
+
+typedef struct {
+    Tracer by;
+    const Bvh *bvh;
+    const Baseline *baseline;
+    const BenchRay *rays;
+    long count;
+    bool shadow;
+    atomic_long next;
+    atomic_long hits;
+} Job;
+
+/* Traces batches of the job's rays until none are left. */
+static void *trace_worker(void *arg)
+{
+    Job *job = arg;
+    long hits = 0;
+    for (;;) {
+        long begin = atomic_fetch_add(&job->next, BATCH);
+        if (begin >= job->count)
+            break;
+        long end = begin + BATCH < job->count ? begin + BATCH : job->count;
+        if (job->by == BY_BASELINE) {
+            hits += baseline_trace(job->baseline, job->rays, begin, end, job->shadow);
+            continue;
+        }
+        for (long k = begin; k < end; k++) {
+            const BenchRay *r = &job->rays[k];
+            Hit hit;
+            if (job->by == BY_BRUTE_FORCE)
+                hits += world_hit(job->bvh->scene, r->ray, 0, r->tmax, &hit);
+            else if (job->shadow)
+                hits += bvh_blocked(job->bvh, r->ray, 0, r->tmax);
+            else
+                hits += bvh_hit(job->bvh, r->ray, 0, r->tmax, &hit);
+        }
+    }
+    atomic_fetch_add(&job->hits, hits);
+    return NULL;
+}
+
+/* Traces the rays with threads threads, at least twice and for at least 0.3 s; returns
+ * millions of rays a second of the fastest pass, and the hits in *hits. */
+static double trace_rate(Job *job, int threads, long *hits)
+{
+    double best = INFINITY, total = 0;
+    for (int pass = 0; pass < 2 || (total < 0.3 && pass < 20); pass++) {
+        atomic_store(&job->next, 0);
+        atomic_store(&job->hits, 0);
+        pthread_t tid[8];
+        double start = now();
+        for (int t = 1; t < threads; t++)
+            pthread_create(&tid[t], NULL, trace_worker, job);
+        trace_worker(job);
+        for (int t = 1; t < threads; t++)
+            pthread_join(tid[t], NULL);
+        double s = now() - start;
+        best = fmin(best, s);
+        total += s;
+    }
+    *hits = atomic_load(&job->hits);
+    return job->count / best / 1e6;
+}
+
+/* One view of a mesh: where the camera is and where the light. */
+typedef struct {
+    Vec3 eye, view, light;
+    double fov;
+} View;
+
+/* Runs every measurement on mesh m seen from view v with res x res primary rays. */
+static void bench_mesh(BenchMesh *m, View v, int res)
+{
+    const Scene *scene = &m->scene;
+    Bvh bvh;
+    double build_ms = INFINITY;
+    for (int k = 0; k < 2; k++) {
+        if (k > 0)
+            bvh_free(&bvh);
+        double start = now();
+        bvh_build(&bvh, scene);
+        build_ms = fmin(build_ms, (now() - start) * 1e3);
+    }
+    Box box = scene_box(scene);
+    double size = vec3_length(vec3_sub(box.hi, box.lo));
+    long np = (long)res * res, ns;
+    BenchRay *primary = primary_rays(v.eye, v.view, v.fov, res);
+    BenchRay *shadow = shadow_rays(&bvh, primary, np, v.light, size, &ns);
+    double bytes = (double)(scene->triangle_count * sizeof(Triangle) + bvh_bytes(&bvh)) /
+                   scene->triangle_count;
+
+    double base_ms = 0;
+    Baseline *base = baseline_build(scene, &base_ms);
+
+    printf("\n== %s: %d triangles; BVH: %d nodes, %d leaves, depth %d\n", m->name,
+           scene->triangle_count, bvh.node_count, bvh.leaf_count, bvh.depth);
+    if (m->load_mb_per_s > 0)
+        printf("   OBJ load          %8.1f MB/s\n", m->load_mb_per_s);
+    else
+        printf("   OBJ load              (generated, no file)\n");
+    printf("   build             %8.1f ms", build_ms);
+    if (base != NULL)
+        printf("    Embree HIGH %8.1f ms   ratio raytra/Embree time %.2f", base_ms,
+               build_ms / base_ms);
+    printf("\n   bytes/triangle    %8.1f      (triangles %zu + BVH %.1f)\n", bytes,
+           sizeof(Triangle), (double)bvh_bytes(&bvh) / scene->triangle_count);
+    const char *names[2] = {"primary", "shadow"};
+    for (int s = 0; s < 2; s++) {
+        const BenchRay *rays = s == 0 ? primary : shadow;
+        long count = s == 0 ? np : ns;
+        for (int threads = 1; threads <= 2; threads++) {
+            Job job = {.by = BY_BVH, .bvh = &bvh, .rays = rays, .count = count, .shadow = s == 1};
+            long hits, base_hits;
+            double rate = trace_rate(&job, threads, &hits);
+            printf("   %-7s %d thread%s  %7.2f Mrays/s (%ld rays, %ld %s)", names[s], threads,
+                   threads > 1 ? "s" : " ", rate, count, hits, s == 0 ? "hit" : "blocked");
+            if (base != NULL) {
+                Job bj = {.by = BY_BASELINE, .baseline = base, .rays = rays, .count = count,
+                          .shadow = s == 1};
+                double brate = trace_rate(&bj, threads, &base_hits);
+                printf("   Embree %7.2f Mrays/s (%ld)   raytra/Embree %.2f", brate, base_hits,
+                       rate / brate);
+            }
+            printf("\n");
+        }
+    }
+    if (base == NULL)
+        printf("   Embree baseline skipped: not built with Embree 3 (libembree-dev)\n");
+    baseline_free(base);
+    free(primary);
+    free(shadow);
+    bvh_free(&bvh);
+}
+
+/* Compares the BVH with brute force on a small mesh: the same rays, single thread. */
+static void bench_brute_force(void)
+{
+    BenchMesh m;
+    mesh_sphere(&m, "sphere-5120", 4);
+    Bvh bvh;
+    bvh_build(&bvh, &m.scene);
+    BenchRay *rays = primary_rays(vec3(0, 0, 3), vec3(0, 0, -1), 0.8, 128);
+    long n = 128 * 128, hits_bvh, hits_brute;
+    Job a = {.by = BY_BVH, .bvh = &bvh, .rays = rays, .count = n};
+    Job b = {.by = BY_BRUTE_FORCE, .bvh = &bvh, .rays = rays, .count = n};
+    double fast = trace_rate(&a, 1, &hits_bvh), slow = trace_rate(&b, 1, &hits_brute);
+    printf("\n== brute force: geodesic sphere of %d triangles, %ld primary rays, 1 thread\n"
+           "   BVH %.2f Mrays/s, brute force %.4f Mrays/s: %.0f times faster (hits %ld = %ld)\n",
+           m.scene.triangle_count, n, fast, slow, fast / slow, hits_bvh, hits_brute);
+    free(rays);
+    bvh_free(&bvh);
+    scene_free(&m.scene);
+}
+
+/* Runs the benchmark: meshes from MESH_DIR (argv[1]) when there, and a generated one. */
+int main(int argc, char **argv)
+{
+    const char *dir = argc > 1 ? argv[1] : "../../shared/meshes";
+    int res = argc > 2 ? atoi(argv[2]) : 1024;
+    printf("raytra bench: part 1.4's BVH; %d x %d primary rays a view; Embree baseline: %s\n", res,
+           res, baseline_available() ? "Embree 3, rtcIntersect1/rtcOccluded1, build quality HIGH"
+                                     : "none (not built with Embree 3)");
+    char path[4096];
+    BenchMesh m;
+    snprintf(path, sizeof path, "%s/bunny.obj", dir);
+    if (mesh_load(&m, "bunny", path)) {
+        /* Front view: the bunny fills [-0.095, 0.061] x [0.033, 0.187] x [-0.062, 0.059]. */
+        Box b = scene_box(&m.scene);
+        Vec3 c = box_center(b);
+        double s = vec3_length(vec3_sub(b.hi, b.lo));
+        View v = {vec3_add(c, vec3(0, 0, 1.2 * s)), vec3(0, 0, -1),
+                  vec3_add(c, vec3(0.5 * s, 1.5 * s, 1.0 * s)), 0.7};
+        bench_mesh(&m, v, res);
+        scene_free(&m.scene);
+    }
+    snprintf(path, sizeof path, "%s/sponza.obj", dir);
+    if (mesh_load(&m, "sponza", path)) {
+        /* Inside the atrium: a quarter of the way up, looking along its length (x), the
+         * light high above the middle. */
+        Box b = scene_box(&m.scene);
+        Vec3 c = box_center(b), e = vec3_sub(b.hi, b.lo);
+        View v = {vec3(c.x - 0.3 * e.x, b.lo.y + 0.25 * e.y, c.z), vec3(1, -0.1, 0.05),
+                  vec3(c.x, b.lo.y + 0.9 * e.y, c.z), 1.4};
+        bench_mesh(&m, v, res);
+        scene_free(&m.scene);
+    }
+    mesh_sphere(&m, "sphere", 8);
+    View v = {vec3(0, 0, 3), vec3(0, 0, -1), vec3(2, 3, 4), 0.8};
+    bench_mesh(&m, v, res);
+    scene_free(&m.scene);
+    bench_brute_force();
+    return 0;
+}

@@ -1,0 +1,35 @@
+/* accel.h: the four ways of part 1.4 (the course's modes 0-3) to answer the tracer's Surfaces. */
+#ifndef RAYTRA_ACCEL_H
+#define RAYTRA_ACCEL_H
+
+#include <stdbool.h>
+
+#include "box.h"
+#include "bvh.h"
+#include "scene.h"
+#include "surfaces.h"
+
+/* excerpt: accel-mode */
+/* The course's third argument, raytra scene_file output_image [0|1|2|3]. */
+typedef enum {
+    ACCEL_BOXED = 0,         /* every surface, each first rejected by its own box */
+    ACCEL_SURFACE_BOXES = 1, /* every surface's box drawn instead of the surface */
+    ACCEL_LEAF_BOXES = 2,    /* the BVH's leaf boxes drawn instead of the surfaces */
+    ACCEL_BVH = 3            /* the BVH: the default */
+} AccelMode;
+/* end excerpt: accel-mode */
+
+/* The geometry of a scene made ready for one mode. */
+typedef struct {
+    AccelMode mode;
+    const Scene *scene;
+    Box *boxes;    /* modes 0 and 1: the box of every sphere, then of every triangle */
+    Bvh bvh;       /* modes 2 and 3 */
+    double build_seconds;
+} Accel;
+
+bool accel_build(Accel *accel, const Scene *scene, AccelMode mode);
+Surfaces accel_surfaces(const Accel *accel);
+void accel_free(Accel *accel);
+
+#endif

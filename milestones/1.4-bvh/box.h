@@ -1,0 +1,115 @@
+/* box.h: axis-aligned bounding boxes, their slab test, and the boxes of spheres and triangles. */
+#ifndef RAYTRA_BOX_H
+#define RAYTRA_BOX_H
+
+#include <stdbool.h>
+
+#include "ray.h"
+#include "scene.h"
+
+/* excerpt: box-struct */
+/* The points p with lo <= p <= hi in every coordinate: two corners, as the textbook keeps it. */
+typedef struct {
+    Vec3 lo, hi;
+} Box;
+
+/* A ray made ready for slab tests: 1/d once per ray, not once per box. A zero
+ * component of d gives an infinite inverse of the same sign (1/+0 = +inf, 1/-0 = -inf). */
+typedef struct {
+    Vec3 origin;
+    Vec3 inv_dir;
+} BoxRay;
+/* end excerpt: box-struct */
+
+/* Where a ray meets a box's surface: t, and the face, as axis (0 x, 1 y, 2 z) and the
+ * side the unit normal points to, always back towards the ray's origin. */
+typedef struct {
+    double t;
+    int axis;
+    double sign;
+} BoxHit;
+
+/* Returns the ray r made ready for box_hit. */
+static inline BoxRay box_ray(Ray r)
+{
+    return (BoxRay){r.origin, vec3(1 / r.dir.x, 1 / r.dir.y, 1 / r.dir.z)};
+}
+
+/* excerpt: box-slab */
+/* Narrows [*t0, *t1] to the t where the ray lies between the two planes x_axis = lo and
+ * x_axis = hi of one slab (the textbook's slab test; the lecture has no slide on
+ * boxes). Entering is at the nearer plane: hi first when the ray travels towards -x.
+ * A ray parallel to the slab gets (lo - o) * inf, which is -inf or +inf, and so no
+ * constraint or an empty interval, as it should; but a ray starting exactly on a
+ * plane of the slab gets 0 * inf = NaN. Every comparison with NaN is false, so the two ifs below leave the
+ * interval as it was: the plane counts as part of the box, which is closed. */
+static inline void box_slab(double lo, double hi, double o, double inv, double *t0, double *t1)
+{
+    double near = (lo - o) * inv, far = (hi - o) * inv;
+    if (inv < 0) {
+        double swap = near;
+        near = far;
+        far = swap;
+    }
+    if (near > *t0)
+        *t0 = near;
+    if (far < *t1)
+        *t1 = far;
+}
+
+/* Tells whether ray r meets box b at some t with tmin <= t <= tmax: the three slabs'
+ * intervals and [tmin, tmax] overlap. Sets *t_enter to where the overlap begins. */
+static inline bool box_hit(Box b, const BoxRay *r, double tmin, double tmax, double *t_enter)
+{
+    box_slab(b.lo.x, b.hi.x, r->origin.x, r->inv_dir.x, &tmin, &tmax);
+    box_slab(b.lo.y, b.hi.y, r->origin.y, r->inv_dir.y, &tmin, &tmax);
+    box_slab(b.lo.z, b.hi.z, r->origin.z, r->inv_dir.z, &tmin, &tmax);
+    *t_enter = tmin;
+    return tmin <= tmax;
+}
+/* end excerpt: box-slab */
+
+/* Returns the smaller of a and b (inline: the build calls it hundreds of millions of times). */
+static inline double box_min(double a, double b)
+{
+    return a < b ? a : b;
+}
+
+/* Returns the larger of a and b. */
+static inline double box_max(double a, double b)
+{
+    return a > b ? a : b;
+}
+
+/* Returns the smallest box holding a and b. */
+static inline Box box_union(Box a, Box b)
+{
+    return (Box){vec3(box_min(a.lo.x, b.lo.x), box_min(a.lo.y, b.lo.y), box_min(a.lo.z, b.lo.z)),
+                 vec3(box_max(a.hi.x, b.hi.x), box_max(a.hi.y, b.hi.y), box_max(a.hi.z, b.hi.z))};
+}
+
+/* Returns the smallest box holding b and the point p. */
+static inline Box box_add_point(Box b, Vec3 p)
+{
+    return box_union(b, (Box){p, p});
+}
+
+/* Returns half the surface area of box b, the quantity the SAH compares (0 when empty). */
+static inline double box_half_area(Box b)
+{
+    Vec3 e = vec3_sub(b.hi, b.lo);
+    if (!(e.x >= 0 && e.y >= 0 && e.z >= 0))
+        return 0;
+    return e.x * e.y + e.y * e.z + e.z * e.x;
+}
+
+Box box_empty(void);
+Vec3 box_center(Box b);
+bool box_contains(Box outer, Box inner);
+Box box_pad(Box b);
+Box box_of_sphere(const Sphere *s);
+Box box_of_triangle(const Triangle *tri);
+bool box_hit_face(Box b, Ray r, double tmin, double tmax, BoxHit *hit);
+Vec3 box_face_normal(const BoxHit *hit);
+
+#endif

@@ -1,0 +1,92 @@
+/* raytra.c: part 1.4: the tracer of part 1.3 behind bounding boxes and a bounding volume hierarchy. */
+#include <stdio.h>
+#include <stdlib.h>
+
+#include "accel.h"
+#include "app.h"
+#include "light.h"
+#include "trace.h"
+#include "view.h"
+
+/* What every pixel reads: the camera, the tracer, and the geometry behind its Surfaces. */
+typedef struct {
+    View view;
+    Tracer tracer;
+    Accel accel;
+} Part14;
+
+/* excerpt: setup */
+/* Builds the camera, the boxes or the BVH of the mode (the course's third argument,
+ * raytra scene_file output_image [0|1|2|3], or --mode N), and part 1.3's tracer on top. */
+static bool setup(const Scene *scene, const Options *opts, void **ctx)
+{
+    Part14 *part = malloc(sizeof *part);
+    if (part == NULL)
+        return false;
+    if (!accel_build(&part->accel, scene, (AccelMode)opts->mode)) {
+        fprintf(stderr, "raytra: not enough memory for the bounding boxes of %s\n", scene->path);
+        accel_free(&part->accel);
+        free(part);
+        return false;
+    }
+    light_note_area_lights(scene);
+    part->view = (View){camera_make(&scene->camera), scene, opts};
+    part->tracer = tracer_make(scene, accel_surfaces(&part->accel), opts);
+    *ctx = part;
+    return true;
+}
+/* end excerpt: setup */
+
+/* Part 1.4's pixel: part 1.3's, with the mode's Surfaces behind the tracer. */
+static Color trace_pixel(const void *ctx, int i, int j, RayStats *stats)
+{
+    const Part14 *part = ctx;
+    Ray r = camera_ray(&part->view.camera, i + 0.5, j + 0.5);
+    stats->rays[RAY_PRIMARY]++;
+    explain_ray(part->tracer.explain, 0, "camera", r);
+    Path path = {.stats = stats};
+    return trace_radiance(&part->tracer, r, 0, &path);
+}
+
+/* Prints the size and build time of the BVH, or of the boxes, after the summary line. */
+static void report(const void *ctx, const RenderResult *result)
+{
+    (void)result;
+    const Accel *a = &((const Part14 *)ctx)->accel;
+    if (a->mode == ACCEL_BOXED || a->mode == ACCEL_SURFACE_BOXES) {
+        printf("mode %d: %d boxes, made in %.1f ms\n", a->mode,
+               a->scene->sphere_count + a->scene->triangle_count, a->build_seconds * 1e3);
+        return;
+    }
+    const Bvh *b = &a->bvh;
+    printf("mode %d: BVH of %d primitives: %d nodes, %d leaves, depth %d, %.1f bytes per "
+           "primitive, built in %.1f ms\n",
+           a->mode, b->prim_count, b->node_count, b->leaf_count, b->depth,
+           b->prim_count > 0 ? (double)bvh_bytes(b) / b->prim_count : 0.0, a->build_seconds * 1e3);
+}
+
+/* Frees the part's state. */
+static void cleanup(void *ctx)
+{
+    Part14 *part = ctx;
+    accel_free(&part->accel);
+    free(part);
+}
+
+static const Program program = {
+    .cli = {.part = "1.4-bvh",
+            .purpose = "part 1.3's ray tracer, accelerated by bounding boxes and a BVH"},
+    .features = FEATURE_SPHERES | FEATURE_PLANES | FEATURE_TRIANGLES | FEATURE_POINT_LIGHTS |
+                FEATURE_DIRECTIONAL_LIGHTS | FEATURE_AREA_LIGHTS | FEATURE_AMBIENT_LIGHT |
+                FEATURE_MIRRORS | FEATURE_SHADING,
+    .setup = setup,
+    .pixel = trace_pixel,
+    .report = report,
+    .cleanup = cleanup,
+};
+
+/* Renders a scene by the rules of part 1.4. */
+int main(int argc, char **argv)
+{
+    return app_main(&program, argc, argv);
+}

@@ -1,0 +1,307 @@
+/* test_bvh.c: the BVH's invariants, and its answers equal to brute force for random rays. */
+#include <stdint.h>
+#include <stdio.h>
+#include <stdlib.h>
+
+#include "accel.h"
+#include "bvh.h"
+#include "testing.h"
+#include "world.h"
+
+/* A small deterministic random generator (xorshift64*), so that failures repeat. */
+static uint64_t rng_state = 0x9E3779B97F4A7C15u;
+
+/* Returns a uniform random number in [0, 1). */
+static double rnd(void)
+{
+    rng_state ^= rng_state >> 12;
+    rng_state ^= rng_state << 25;
+    rng_state ^= rng_state >> 27;
+    return (double)((rng_state * 0x2545F4914F6CDD1Du) >> 11) * 0x1p-53;
+}
+
+/* Returns a random point in the cube [lo, hi]^3. */
+static Vec3 rnd_point(double lo, double hi)
+{
+    return vec3(lo + (hi - lo) * rnd(), lo + (hi - lo) * rnd(), lo + (hi - lo) * rnd());
+}
+
+/* Returns a random unit direction; one in five has one or two zero components, of
+ * either sign, so that the slab test sees infinite inverse directions. */
+static Vec3 rnd_dir(void)
+{
+    Vec3 d;
+    do
+        d = rnd_point(-1, 1);
+    while (vec3_length_squared(d) > 1 || vec3_length_squared(d) < 1e-6);
+    if (rnd() < 0.2) {
+        double zero = rnd() < 0.5 ? 0.0 : -0.0;
+        if (rnd() < 0.5)
+            d.x = zero;
+        else
+            d.y = zero;
+        if (rnd() < 0.3)
+            d.z = zero;
+        if (d.x == 0 && d.y == 0 && d.z == 0)
+            d.z = 1;
+    }
+    return vec3_normalize(d);
+}
+
+/* Fills scene with n random triangles of size about size in the unit cube, spheres
+ * spheres and planes planes. Some triangles repeat an earlier one exactly (ties of t),
+ * some have no area. */
+static void random_scene(Scene *scene, int n, double size, int spheres, int planes)
+{
+    *scene = (Scene){0};
+    scene->triangles = malloc((size_t)(n > 0 ? n : 1) * sizeof *scene->triangles);
+    scene->spheres = malloc((size_t)(spheres > 0 ? spheres : 1) * sizeof *scene->spheres);
+    scene->planes = malloc((size_t)(planes > 0 ? planes : 1) * sizeof *scene->planes);
+    for (int k = 0; k < n; k++) {
+        Vec3 a = rnd_point(0, 1);
+        Triangle t = {a, vec3_add(a, vec3_scale(rnd_point(-1, 1), size)),
+                      vec3_add(a, vec3_scale(rnd_point(-1, 1), size)), k % 3, 0};
+        double u = rnd();
+        if (k > 0 && u < 0.05)
+            t = scene->triangles[(int)(rnd() * k)]; /* the same triangle again */
+        else if (u < 0.08)
+            t.c = vec3_add(t.a, vec3_scale(vec3_sub(t.b, t.a), 2)); /* no area */
+        scene->triangles[k] = t;
+    }
+    for (int k = 0; k < spheres; k++)
+        scene->spheres[k] = (Sphere){rnd_point(0, 1), 0.01 + 0.1 * rnd(), k % 2, 0};
+    for (int k = 0; k < planes; k++)
+        scene->planes[k] = (Plane){rnd_dir(), -0.5 + rnd(), 2, 0};
+    scene->triangle_count = n;
+    scene->sphere_count = spheres;
+    scene->plane_count = planes;
+    scene->materials = calloc(3, sizeof *scene->materials);
+    scene->material_count = 3;
+}
+
+/* What walking a hierarchy found. */
+typedef struct {
+    const Bvh *bvh;
+    int *seen; /* how often each primitive was met in a leaf */
+    int nodes, leaves, depth;
+} Walk;
+
+/* Checks the subtree under node index, at depth, recursively. */
+static void walk(Walk *w, uint32_t index, int depth)
+{
+    ck_assert_int_lt(index, w->bvh->node_count);
+    const BvhNode *node = &w->bvh->nodes[index];
+    Box box = bvh_node_box(node);
+    w->nodes++;
+    if (depth > w->depth)
+        w->depth = depth;
+    ck_assert_int_lt(depth, BVH_MAX_DEPTH);
+    if (node->count > 0) {
+        w->leaves++;
+        ck_assert_int_le(node->count, BVH_MAX_LEAF);
+        for (uint32_t k = node->index; k < node->index + node->count; k++) {
+            ck_assert_int_lt(k, w->bvh->prim_count);
+            uint32_t p = w->bvh->prims[k];
+            w->seen[p]++;
+            /* Every primitive's own (double) box lies inside its leaf's float box. */
+            ck_assert(box_contains(box, bvh_prim_box(w->bvh->scene, p)));
+        }
+        return;
+    }
+    uint32_t children[2] = {index + 1, node->index};
+    for (int c = 0; c < 2; c++) {
+        ck_assert(box_contains(box, bvh_node_box(&w->bvh->nodes[children[c]])));
+        walk(w, children[c], depth + 1);
+    }
+}
+
+/* Builds the BVH of scene and checks every invariant of its structure. */
+static void check_invariants(const Scene *scene)
+{
+    Bvh bvh;
+    ck_assert(bvh_build(&bvh, scene));
+    int n = scene->sphere_count + scene->triangle_count;
+    ck_assert_int_eq(bvh.prim_count, n);
+    if (n == 0) {
+        ck_assert_int_eq(bvh.node_count, 0);
+        Hit hit;
+        ck_assert(!bvh_hit(&bvh, ray(vec3(0, 0, 0), vec3(0, 0, 1)), 0, INFINITY, &hit));
+        ck_assert(!bvh_blocked(&bvh, ray(vec3(0, 0, 0), vec3(0, 0, 1)), 0, INFINITY));
+        bvh_free(&bvh);
+        return;
+    }
+    ck_assert_int_le(bvh.node_count, 2 * n - 1);
+    Walk w = {&bvh, calloc((size_t)n, sizeof(int)), 0, 0, 0};
+    walk(&w, 0, 0);
+    ck_assert_int_eq(w.nodes, bvh.node_count); /* every node is reached, once */
+    ck_assert_int_eq(w.leaves, bvh.leaf_count);
+    ck_assert_int_eq(w.depth, bvh.depth);
+    for (int p = 0; p < n; p++)
+        ck_assert_msg(w.seen[p] == 1, "primitive %d is in %d leaves", p, w.seen[p]);
+    free(w.seen);
+    bvh_free(&bvh);
+}
+
+START_TEST(invariants_of_random_soups)
+{
+    int sizes[] = {0, 1, 2, 3, 17, 1000, 20000};
+    for (size_t k = 0; k < sizeof sizes / sizeof sizes[0]; k++) {
+        Scene scene;
+        random_scene(&scene, sizes[k], 0.05, sizes[k] / 10, 0);
+        check_invariants(&scene);
+        scene_free(&scene);
+    }
+}
+END_TEST
+
+START_TEST(invariants_of_degenerate_sets)
+{
+    Scene scene;
+    /* 500 copies of one triangle: every centroid equal, nothing for the SAH to split. */
+    random_scene(&scene, 500, 0.05, 0, 0);
+    for (int k = 1; k < 500; k++)
+        scene.triangles[k] = scene.triangles[0];
+    check_invariants(&scene);
+    /* Triangles without area, all on one line. */
+    for (int k = 0; k < 500; k++)
+        scene.triangles[k] = (Triangle){vec3(k, 0, 0), vec3(k + 1, 0, 0), vec3(k + 2, 0, 0), 0, 0};
+    check_invariants(&scene);
+    /* Points: triangles whose three corners coincide, some at the same place. */
+    for (int k = 0; k < 500; k++) {
+        Vec3 p = vec3(k % 7, 0, 0);
+        scene.triangles[k] = (Triangle){p, p, p, 0, 0};
+    }
+    check_invariants(&scene);
+    /* Depth: sizes doubling, each triangle twice as far as the last, a chain for the SAH. */
+    for (int k = 0; k < 500; k++) {
+        double x = ldexp(1, k % 60);
+        scene.triangles[k] = (Triangle){vec3(x, 0, 0), vec3(x, 1, 0), vec3(x, 0, 1), 0, 0};
+    }
+    check_invariants(&scene);
+    scene_free(&scene);
+    /* Planes only: no primitive in the hierarchy at all. */
+    random_scene(&scene, 0, 0.05, 0, 3);
+    check_invariants(&scene);
+    scene_free(&scene);
+}
+END_TEST
+
+/* Compares the BVH's closest hit and blocked() with brute force for count random rays
+ * from points in [lo, hi]^3 on scene, half of them aimed at a point of the scene's box,
+ * half in any direction; tmax is random for half of them. */
+static void compare_with_brute_force(const Scene *scene, int count, double lo, double hi)
+{
+    Bvh bvh;
+    ck_assert(bvh_build(&bvh, scene));
+    Box all = bvh_node_box(&bvh.nodes[0]);
+    int hits = 0, blocked = 0;
+    for (int k = 0; k < count; k++) {
+        Vec3 o = rnd_point(lo, hi), target = vec3_add(all.lo, vec3(rnd() * (all.hi.x - all.lo.x),
+                                                                   rnd() * (all.hi.y - all.lo.y),
+                                                                   rnd() * (all.hi.z - all.lo.z)));
+        Vec3 to = vec3_sub(target, o);
+        Ray r = ray(o, rnd() < 0.5 && vec3_length(to) > 0 ? vec3_normalize(to) : rnd_dir());
+        double tmax = rnd() < 0.5 ? INFINITY : rnd() * (hi - lo);
+        Hit expected, got;
+        bool want = world_hit(scene, r, 0, tmax, &expected);
+        bool have = bvh_hit(&bvh, r, 0, tmax, &got);
+        ck_assert_int_eq(have, want);
+        if (want) {
+            hits++;
+            ck_assert_msg(got.t == expected.t && got.kind == expected.kind &&
+                              got.index == expected.index,
+                          "ray %d: BVH found %d %d at t = %.17g, brute force %d %d at %.17g", k,
+                          got.kind, got.index, got.t, expected.kind, expected.index, expected.t);
+        }
+        bool shadow = bvh_blocked(&bvh, r, 0, tmax);
+        ck_assert_int_eq(shadow, want);
+        blocked += shadow;
+    }
+    /* The rays are worth something only if many of them hit and many miss. */
+    ck_assert_int_gt(hits, count / 10);
+    ck_assert_int_lt(hits, count - count / 10);
+    ck_assert_int_eq(blocked, hits);
+    bvh_free(&bvh);
+}
+
+START_TEST(closest_hit_as_brute_force)
+{
+    Scene scene;
+    random_scene(&scene, 3000, 0.05, 40, 0);
+    compare_with_brute_force(&scene, 100000, -0.2, 1.2);
+    scene_free(&scene);
+    /* Big overlapping triangles: many candidates per ray, many ties broken by order. */
+    random_scene(&scene, 300, 0.6, 10, 0);
+    compare_with_brute_force(&scene, 20000, -0.2, 1.2);
+    scene_free(&scene);
+}
+END_TEST
+
+START_TEST(modes_0_and_3_as_brute_force)
+{
+    Scene scene;
+    random_scene(&scene, 500, 0.1, 20, 3);
+    for (AccelMode mode = ACCEL_BOXED; mode <= ACCEL_BVH; mode += 3) {
+        Accel accel;
+        ck_assert(accel_build(&accel, &scene, mode));
+        Surfaces s = accel_surfaces(&accel);
+        for (int k = 0; k < 20000; k++) {
+            Ray r = ray(rnd_point(-0.2, 1.2), rnd_dir());
+            Hit expected, got;
+            bool want = world_hit(&scene, r, 0, INFINITY, &expected);
+            ck_assert_int_eq(s.hit(s.data, r, 0, INFINITY, &got), want);
+            ck_assert_int_eq(s.blocked(s.data, r, 0, INFINITY), want);
+            if (want) {
+                /* The whole record, point and normal included, is the same. */
+                ck_assert(got.t == expected.t && got.kind == expected.kind &&
+                          got.index == expected.index && got.material == expected.material &&
+                          got.back_face == expected.back_face);
+                ck_assert_vec3_near(got.point, expected.point, 0);
+                ck_assert_vec3_near(got.normal, expected.normal, 0);
+            }
+        }
+        accel_free(&accel);
+    }
+    scene_free(&scene);
+}
+END_TEST
+
+START_TEST(bunny_as_brute_force)
+{
+    const char *mesh = TOP_DIR "/../shared/meshes/bunny.obj";
+    FILE *probe = fopen(mesh, "r");
+    if (probe == NULL) {
+        printf("bunny_as_brute_force: SKIPPED: %s does not exist\n", mesh);
+        return;
+    }
+    fclose(probe);
+    FILE *f = fopen("bunny.scn", "w");
+    fprintf(f, "c 0 0.1 0.5  0 0 -1  35  35 35  10 10\nm 1 1 1 0 0 0 1 0 0 0\nw %s\n", mesh);
+    fclose(f);
+    Scene scene;
+    SceneLoadOptions opts = {0};
+    ck_assert(scene_load(&scene, "bunny.scn", &opts));
+    ck_assert_int_gt(scene.triangle_count, 60000);
+    /* The bunny fills about [-0.1, 0.06] x [0.03, 0.19] x [-0.06, 0.06]: rays from
+     * around and inside it; brute force costs 70 000 tests a ray, so only a few thousand. */
+    compare_with_brute_force(&scene, 3000, -0.12, 0.2);
+    scene_free(&scene);
+}
+END_TEST
+
+/* Collects the tests of bvh.c and accel.c. */
+static Suite *bvh_suite(void)
+{
+    Suite *s = suite_create("bvh");
+    TCase *tc = tcase_create("bvh");
+    tcase_set_timeout(tc, 300);
+    tcase_add_test(tc, invariants_of_random_soups);
+    tcase_add_test(tc, invariants_of_degenerate_sets);
+    tcase_add_test(tc, closest_hit_as_brute_force);
+    tcase_add_test(tc, modes_0_and_3_as_brute_force);
+    tcase_add_test(tc, bunny_as_brute_force);
+    suite_add_tcase(s, tc);
+    return s;
+}
+
+TEST_MAIN(bvh_suite)
