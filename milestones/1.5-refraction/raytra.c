@@ -2,19 +2,22 @@
 #include <stdio.h>
 #include <stdlib.h>
 
+#include "accel.h"
 #include "app.h"
 #include "light.h"
 #include "refract.h"
 #include "solid.h"
 #include "view.h"
 
-/* What every pixel reads: the camera, and the tracer with its scene and settings. */
+/* What every pixel reads: the camera, the tracer, and the geometry behind its Surfaces. */
 typedef struct {
     View view;
     Refractor refractor;
+    Accel accel;
 } Part15;
 
-/* Builds the camera and the tracer of the scene, after checking --fresnel and the glass meshes. */
+/* Builds the camera, part 1.4's BVH (or the boxes of MODE) and the tracer of the scene,
+ * after checking --fresnel and the glass meshes. */
 static bool setup(const Scene *scene, const Options *opts, void **ctx)
 {
     FresnelModel fresnel = FRESNEL_SCHLICK;
@@ -25,15 +28,16 @@ static bool setup(const Scene *scene, const Options *opts, void **ctx)
     Part15 *part = malloc(sizeof *part);
     if (part == NULL)
         return false;
+    if (!accel_build(&part->accel, scene, (AccelMode)opts->mode)) {
+        fprintf(stderr, "raytra: not enough memory for the bounding boxes of %s\n", scene->path);
+        accel_free(&part->accel);
+        free(part);
+        return false;
+    }
     light_note_area_lights(scene);
-    /* Part 1.4's BVH and its box modes take over here, in place of the brute force and
-     * this note, once part 1.4 is merged. */
-    if (opts->mode != 3)
-        fprintf(stderr, "raytra: note: MODE %d needs part 1.4's boxes; part 1.5 is built "
-                        "without them for now and renders the surfaces\n", opts->mode);
     solid_warn(scene, stderr);
     part->view = (View){camera_make(&scene->camera), scene, opts};
-    part->refractor = refract_make(scene, surfaces_brute_force(scene), fresnel, opts);
+    part->refractor = refract_make(scene, accel_surfaces(&part->accel), fresnel, opts);
     *ctx = part;
     return true;
 }
@@ -58,6 +62,14 @@ static void probe_pixel(const void *ctx, int i, int j, Probe *probe)
     trace_probe(&part->refractor.tracer, camera_ray(&part->view.camera, i + 0.5, j + 0.5), probe);
 }
 
+/* Frees the part's state. */
+static void cleanup(void *ctx)
+{
+    Part15 *part = ctx;
+    accel_free(&part->accel);
+    free(part);
+}
+
 static const Program program = {
     .cli = {.part = "1.5-refraction",
             .purpose = "recursive ray tracing with glass: Fresnel reflection, refraction and "
@@ -68,7 +80,7 @@ static const Program program = {
     .setup = setup,
     .pixel = refract_pixel,
     .probe = probe_pixel,
-    .cleanup = free,
+    .cleanup = cleanup,
 };
 
 /* Renders a scene by the rules of part 1.5. */
