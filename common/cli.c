@@ -60,6 +60,15 @@ const CliOption cli_options[] = {
              "2: draw the BVH's leaf boxes; 3 (the default): the BVH",
      .field = FIELD(mode), .fallback = 3, .min = 0, .max = 3, .first_part = 14,
      .last_part = 15, .argument = "MODE"},
+    {.name = "fresnel", .kind = OPTION_TEXT, .metavar = "MODEL",
+     .help = "how much light glass reflects: schlick (Schlick's approximation, the default) "
+             "or exact (the Fresnel equations for unpolarised light)",
+     .field = FIELD(fresnel_name), .first_part = 15},
+    {.name = "min-weight", .kind = OPTION_NUMBER, .metavar = "F",
+     .help = "do not follow mirror, reflected or refracted rays that make up less than F of "
+             "their pixel (default 2^-16, far below a PNG's steps; 0: only --max-depth "
+             "stops them)",
+     .field = FIELD(min_weight), .fallback = 0x1p-16, .min = 0, .max = 1, .first_part = 15},
     {.name = "help", .letter = 'h', .help = "show this help and exit", .field = FIELD(help)},
     {.name = "version", .help = "show the version and exit", .field = FIELD(version)},
     {0},

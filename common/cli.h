@@ -42,6 +42,9 @@ typedef struct {
     double ray_offset; /* where secondary rays start, relative to the coordinates */
     /* Parts 1.4 and 1.5. */
     int mode; /* the course's box modes 0-3 */
+    /* From part 1.5 on. */
+    const char *fresnel_name; /* how glass reflects: "schlick" (NULL: the default) or "exact" */
+    double min_weight;        /* reflected and refracted rays that count less are not traced */
 } Options;
 
 /* excerpt: cli-option */

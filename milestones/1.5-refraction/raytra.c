@@ -1,0 +1,90 @@
+/* raytra.c: part 1.5: glass that reflects and refracts light, and absorbs it, on top of part 1.3. */
+#include <stdio.h>
+#include <stdlib.h>
+
+#include "accel.h"
+#include "app.h"
+#include "light.h"
+#include "refract.h"
+#include "solid.h"
+#include "view.h"
+
+/* What every pixel reads: the camera, the tracer, and the geometry behind its Surfaces. */
+typedef struct {
+    View view;
+    Refractor refractor;
+    Accel accel;
+} Part15;
+
+/* Builds the camera, part 1.4's BVH (or the boxes of MODE) and the tracer of the scene,
+ * after checking --fresnel and the glass meshes. */
+static bool setup(const Scene *scene, const Options *opts, void **ctx)
+{
+    FresnelModel fresnel = FRESNEL_SCHLICK;
+    if (opts->fresnel_name != NULL && !dielectric_fresnel_from_name(opts->fresnel_name, &fresnel)) {
+        fprintf(stderr, "raytra: --fresnel takes schlick or exact, got '%s'\n", opts->fresnel_name);
+        return false;
+    }
+    Part15 *part = malloc(sizeof *part);
+    if (part == NULL)
+        return false;
+    if (!accel_build(&part->accel, scene, (AccelMode)opts->mode)) {
+        fprintf(stderr, "raytra: not enough memory for the bounding boxes of %s\n", scene->path);
+        accel_free(&part->accel);
+        free(part);
+        return false;
+    }
+    light_note_area_lights(scene);
+    solid_warn(scene, stderr);
+    part->view = (View){camera_make(&scene->camera), scene, opts};
+    part->refractor = refract_make(scene, accel_surfaces(&part->accel), fresnel, opts);
+    *ctx = part;
+    return true;
+}
+
+/* excerpt: refract-pixel */
+/* Part 1.5's pixel: the radiance along the primary ray through its centre. */
+static Color refract_pixel(const void *ctx, int i, int j, RayStats *stats)
+{
+    const Part15 *part = ctx;
+    Ray r = camera_ray(&part->view.camera, i + 0.5, j + 0.5);
+    stats->rays[RAY_PRIMARY]++;
+    explain_ray(part->refractor.tracer.explain, 0, "camera", r);
+    Path path = {.stats = stats};
+    return refract_radiance(&part->refractor, r, 0, &path);
+}
+/* end excerpt: refract-pixel */
+
+/* Tells --view what the camera ray meets first, as part 1.3 does. */
+static void probe_pixel(const void *ctx, int i, int j, Probe *probe)
+{
+    const Part15 *part = ctx;
+    trace_probe(&part->refractor.tracer, camera_ray(&part->view.camera, i + 0.5, j + 0.5), probe);
+}
+
+/* Frees the part's state. */
+static void cleanup(void *ctx)
+{
+    Part15 *part = ctx;
+    accel_free(&part->accel);
+    free(part);
+}
+
+static const Program program = {
+    .cli = {.part = "1.5-refraction",
+            .purpose = "recursive ray tracing with glass: Fresnel reflection, refraction and "
+                       "absorption"},
+    .features = FEATURE_SPHERES | FEATURE_PLANES | FEATURE_TRIANGLES | FEATURE_POINT_LIGHTS |
+                FEATURE_DIRECTIONAL_LIGHTS | FEATURE_AREA_LIGHTS | FEATURE_AMBIENT_LIGHT |
+                FEATURE_MIRRORS | FEATURE_REFRACTION | FEATURE_SHADING,
+    .setup = setup,
+    .pixel = refract_pixel,
+    .probe = probe_pixel,
+    .cleanup = cleanup,
+};
+
+/* Renders a scene by the rules of part 1.5. */
+int main(int argc, char **argv)
+{
+    return app_main(&program, argc, argv);
+}

@@ -1,0 +1,155 @@
+/* refract.c: part 1.5's radiance function: mirrors as in part 1.3, and glass that reflects and refracts. */
+#include "refract.h"
+
+#include <math.h>
+
+#include "secondary.h"
+#include "shade.h"
+#include "transmit.h"
+#include "world.h"
+
+/* Returns the tracer of scene with glass, finding hits with surfaces, set up by the
+ * command line; its direct light lets shadow rays through glass (transmit.c). */
+Refractor refract_make(const Scene *scene, Surfaces surfaces, FresnelModel fresnel,
+                       const Options *opts)
+{
+    Refractor rf = {.tracer = tracer_make(scene, surfaces, opts),
+                    .fresnel = fresnel,
+                    .min_weight = opts->min_weight};
+    rf.tracer.direct = transmit_direct_radiance;
+    for (int k = 0; k < scene->material_count; k++)
+        rf.has_glass |= refract_is_glass(&scene->materials[k]);
+    return rf;
+}
+
+/* excerpt: refract-glass-hit */
+/* Returns hit as the shading sees it. The back of a glass triangle or plane is the inside
+ * of a solid, not a wrongly wound face: it keeps its own material, not part 1.2's yellow,
+ * and, like the inside of a sphere, is shaded with the normal turned to face the ray. */
+Hit refract_glass_hit(const Scene *scene, const Hit *hit)
+{
+    Hit seen = *hit;
+    if (hit->back_face && refract_is_glass(&scene->materials[hit->material])) {
+        seen.normal = vec3_neg(hit->normal);
+        seen.back_face = false;
+    }
+    return seen;
+}
+/* end excerpt: refract-glass-hit */
+
+/* Returns the largest of c's channels. */
+static double color_max(Color c)
+{
+    return fmax(c.r, fmax(c.g, c.b));
+}
+
+static Color radiance(const Refractor *rf, Ray r, int depth, double weight, Path *path);
+
+/* excerpt: refract-follow */
+/* Returns the radiance along the ray that leaves hit in direction dir, counted as kind,
+ * or black when its share of the pixel, weight, is too small to see (--min-weight):
+ * Hall and Greenberg's adaptive depth control. */
+static Color follow(const Refractor *rf, const Hit *hit, Ray r, Vec3 dir, RayKind kind, int depth,
+                    double weight, Path *path)
+{
+    const char *name = render_ray_kind_name(kind);
+    if (weight <= 0 || weight < rf->min_weight) {
+        explain_line(rf->tracer.explain, depth + 1, "%s ray not followed: it would count %.3g",
+                     name, weight);
+        return color(0, 0, 0);
+    }
+    /* secondary_ray starts it on the side it goes to: inside when it enters glass. */
+    Ray next = secondary_ray(hit, r, dir, rf->tracer.offset);
+    path->stats->rays[kind]++;
+    explain_ray(rf->tracer.explain, depth + 1, name, next);
+    return radiance(rf, next, depth + 1, weight, path);
+}
+/* end excerpt: refract-follow */
+
+/* excerpt: refract-glass */
+/* Returns the light that the glass surface at hit (of material m) sends back along r
+ * through Fresnel reflection and refraction: R times the radiance along the reflected
+ * ray plus (1 - R) times the radiance along the refracted ray. */
+static Color glass_radiance(const Refractor *rf, const Hit *hit, const Material *m, Ray r,
+                            int depth, double weight, Path *path)
+{
+    /* Which side is which: a ray that meets the front of the surface enters the glass
+     * from the air (n = 1); one that meets the back leaves it. */
+    bool entering = !hit->back_face;
+    Vec3 n = shade_normal(hit); /* facing the ray */
+    double eta = entering ? 1 / m->ior : m->ior;
+    Vec3 t;
+    double reflectance = 1; /* total internal reflection unless a refracted ray exists */
+    bool refracts = dielectric_refract(r.dir, n, eta, &t);
+    if (refracts) {
+        /* Fresnel's R is the same both ways: take the cosine on the air side, the
+         * incident ray's when entering, the refracted ray's when leaving. */
+        double cos_air = entering ? -vec3_dot(r.dir, n) : -vec3_dot(t, n);
+        reflectance = dielectric_reflectance(rf->fresnel, m->ior, cos_air);
+    }
+    explain_line(rf->tracer.explain, depth + 1, "glass of index %g, %s it: %s, R = %.6g",
+                 m->ior, entering ? "entering" : "leaving",
+                 refracts ? "refracted" : "total internal reflection", reflectance);
+    Vec3 mirrored = secondary_reflect(r.dir, n);
+    Color sum = color_scale(
+        follow(rf, hit, r, mirrored, RAY_REFLECTED, depth, weight * reflectance, path),
+        reflectance);
+    if (refracts) {
+        Color seen = follow(rf, hit, r, t, RAY_REFRACTED, depth, weight * (1 - reflectance), path);
+        sum = color_add(sum, color_scale(seen, 1 - reflectance));
+    }
+    return sum;
+}
+/* end excerpt: refract-glass */
+
+/* excerpt: refract-radiance */
+/* Returns the radiance arriving along ray r: the light of the first surface it meets,
+ * straight from the lights, plus k_m times the radiance along the mirror-reflected ray,
+ * plus, for glass, the Fresnel-weighted radiance along the reflected and refracted rays;
+ * all of it dimmed by Beer's law when r travelled inside glass. Replaces part 1.3's
+ * trace_radiance; depth counts the reflections and refractions before r. */
+Color refract_radiance(const Refractor *rf, Ray r, int depth, Path *path)
+{
+    return radiance(rf, r, depth, 1, path);
+}
+
+/* The same, for a ray whose radiance counts weight times in its pixel. */
+static Color radiance(const Refractor *rf, Ray r, int depth, double weight, Path *path)
+{
+    const Tracer *tr = &rf->tracer;
+    Hit found;
+    if (!tr->surfaces.hit(tr->surfaces.data, r, 0, INFINITY, &found)) {
+        explain_line(tr->explain, depth + 1, "hits nothing: the black background");
+        return color(0, 0, 0);
+    }
+    world_explain_hit(tr->explain, depth + 1, &found);
+    Hit hit = refract_glass_hit(tr->scene, &found);
+    const Material *m = shade_material(tr->scene, &hit, tr->two_sided);
+    /* A ray that meets glass from behind travelled inside it, all the way from its
+     * origin: what it carries back is absorbed along those t units of distance. */
+    Color absorbed = color(1, 1, 1);
+    if (found.back_face && refract_is_glass(m))
+        absorbed = dielectric_beer(m->attenuation, found.t);
+    weight *= color_max(absorbed);
+
+    Color radiance = tr->direct(tr, &hit, r, depth, path);
+    /* Mirror, reflected and refracted rays share one budget: at its end, a branch
+     * adds nothing more. */
+    if (depth < tr->max_depth) {
+        /* An ideal mirror, as in part 1.3; its reflected ray may now meet glass. */
+        if (!color_is_black(m->mirror)) {
+            Vec3 dir = secondary_reflect(r.dir, shade_normal(&hit));
+            Color mirrored = follow(rf, &hit, r, dir, RAY_REFLECTED, depth,
+                                    weight * color_max(m->mirror), path);
+            radiance = color_add(radiance, color_mul(m->mirror, mirrored));
+        }
+        if (refract_is_glass(m))
+            radiance = color_add(radiance, glass_radiance(rf, &found, m, r, depth, weight, path));
+    }
+    if (found.back_face && refract_is_glass(m))
+        explain_color(tr->explain, depth + 1, "times a^t, absorbed inside", absorbed);
+    radiance = color_mul(radiance, absorbed);
+    explain_color(tr->explain, depth + 1, "radiance", radiance);
+    return radiance;
+}
+/* end excerpt: refract-radiance */

@@ -1,0 +1,16 @@
+/* transmit.h: how much of a light reaches a point through glass, and the direct light with it. */
+#ifndef RAYTRA_TRANSMIT_H
+#define RAYTRA_TRANSMIT_H
+
+#include "color.h"
+#include "hit.h"
+#include "light.h"
+#include "refract.h"
+
+/* A shadow ray crosses at most this many glass surfaces; beyond, the light counts as blocked. */
+#define TRANSMIT_MAX_CROSSINGS 64
+
+Color transmit_light(const Refractor *rf, const Hit *hit, Ray r, const Incident *in, Path *path);
+Color transmit_direct_radiance(const Tracer *tr, const Hit *hit, Ray r, int depth, Path *path);
+
+#endif
