@@ -16,7 +16,7 @@ top=$(cd "$(dirname "$0")/.." && pwd)
 refs=$top/milestones/1.1-spheres-red/references
 scenes="spheres-three spheres-behind-camera camera-straight-down spheres-grid-wide demo"
 tmp=$(mktemp -d)
-trap 'rm -rf "$tmp"' EXIT
+trap '[ -n "${KEEP:-}" ] || rm -rf "$tmp"' EXIT
 trap 'exit 130' INT TERM
 cd "$tmp" || exit 2
 
@@ -99,6 +99,22 @@ copy_references unreadable
 echo "not an image" >class/unreadable/spheres-three.png
 strange="o'brien, \"jo\" <b>&amp;"
 copy_references "$strange"
+# Names a spreadsheet would run as formulas.
+copy_references '=HYPERLINK("x","y")'
+copy_references '@SUM(1+1)'
+# Links are not images handed in: to a reference, to a classmate's; nor is a FIFO; and a
+# PNG whose header says 8192 x 8192 (of 16 bits) is told apart without being decoded.
+copy_references links
+ln -sf "$refs/spheres-three.png" class/links/spheres-three.png
+ln -sf ../correct/demo.png class/links/demo.png
+copy_references fifo
+rm class/fifo/demo.png
+mkfifo class/fifo/demo.png
+copy_references bomb
+{
+    printf '\211PNG\r\n\032\n\000\000\000\015IHDR\000\000\040\000\000\000\040\000'
+    printf '\020\002\000\000\000\000\000\000\000'
+} >class/bomb/spheres-three.png
 
 # Programs: correct (our raytra behind a script), one that hangs on the demo scene (and
 # forks, and leaves a daemon after another scene), one that crashes, one that asks for
@@ -113,6 +129,16 @@ case \$1 in
 *demo*) sleep 3141 & exec sleep 3141 ;;
 *spheres-three*) setsid sleep 2718 >/dev/null 2>&1 & ;;
 esac
+exec "$raytra" "\$@"
+EOF
+script_submission fifo-program <<EOF
+#!/bin/sh
+case \$1 in *demo*) exec mkfifo "\$2" ;; esac
+exec "$raytra" "\$@"
+EOF
+script_submission link-program <<EOF
+#!/bin/sh
+case \$1 in *demo*) exec ln -s "$refs/demo.png" "\$2" ;; esac
 exec "$raytra" "\$@"
 EOF
 c_submission crashing <<'EOF'
@@ -151,13 +177,28 @@ status=$?
 # The verdicts, exactly; the strange name is quoted, so checked apart.
 {
     echo "submission,scene,verdict"
+    for s in $scenes; do
+        case $s in spheres-three) echo "bomb,$s,WRONG SIZE" ;; *) echo "bomb,$s,PASS" ;; esac
+    done
     for s in $scenes; do echo "build-fails,$s,BUILD FAILED"; done
     for s in $scenes; do echo "correct,$s,PASS"; done
     for s in $scenes; do echo "correct-program,$s,PASS"; done
     for s in $scenes; do echo "crashing,$s,CRASHED"; done
+    for s in $scenes; do
+        case $s in demo) echo "fifo,$s,UNREADABLE" ;; *) echo "fifo,$s,PASS" ;; esac
+    done
+    for s in $scenes; do
+        case $s in demo) echo "fifo-program,$s,UNREADABLE" ;; *) echo "fifo-program,$s,PASS" ;; esac
+    done
     for s in $scenes; do echo "greedy,$s,OUT OF MEMORY"; done
     for s in $scenes; do
         case $s in demo) echo "hanging,$s,TIMEOUT" ;; *) echo "hanging,$s,PASS" ;; esac
+    done
+    for s in $scenes; do
+        case $s in demo) echo "link-program,$s,LINK" ;; *) echo "link-program,$s,PASS" ;; esac
+    done
+    for s in $scenes; do
+        case $s in demo | spheres-three) echo "links,$s,LINK" ;; *) echo "links,$s,PASS" ;; esac
     done
     for s in $scenes; do
         case $s in demo) echo "missing-one,$s,MISSING" ;; *) echo "missing-one,$s,PASS" ;; esac
@@ -184,9 +225,21 @@ check "the CSV's header" grep -qx 'submission,scene,verdict,max_diff_r,max_diff_
 check "the strange name's rows, quoted" \
     test "$(grep -c "^\"o'brien, \"\"jo\"\" <b>&amp;\",[a-z-]*,PASS," "$csv")" -eq 5
 
+check "a formula's name neutralised" \
+    test "$(grep -c '^"'"'"'=HYPERLINK(""x"",""y"")",[a-z-]*,PASS,' "$csv")" -eq 5
+check "a name starting with @ neutralised" \
+    test "$(grep -c '^"'"'"'@SUM(1+1)",[a-z-]*,PASS,' "$csv")" -eq 5
+check "a field starting with = or @ unquoted" test -z "$(grep -E '(^|,)[=@+]' "$csv")"
+
 # The reasons and the figures.
+has 'links,spheres-three,LINK,,,,,,,,,,'"spheres-three.png is a symbolic link to $refs/spheres-three.png: not an image handed in,"
+has 'links,demo,LINK,,,,,,,,,,demo.png is a symbolic link to ../correct/demo.png: not an image handed in,'
+has 'link-program,demo,LINK,,,,,,,,,,'"demo.png is a symbolic link to $refs/demo.png: not an image handed in,"
+has 'fifo,demo,UNREADABLE,,,,,,,,,,demo.png is not a regular file (a FIFO),'
+has 'fifo-program,demo,UNREADABLE,,,,,,,,,,demo.png is not a regular file (a FIFO),'
+has 'bomb,spheres-three,WRONG SIZE,,,,,,,,,,"the image is 8192 x 8192 pixels, the reference 320 x 240",'
 has 'wrong-size,spheres-three,WRONG SIZE,,,,,,,,,,"the image is 160 x 120 pixels, the reference 320 x 240",'
-has 'unreadable,spheres-three,UNREADABLE,,,,,,,,,,the file cannot be read as an image: not a PNG or PFM image,'
+has 'unreadable,spheres-three,UNREADABLE,,,,,,,,,,"the file cannot be read as an image: not a PNG, PFM or EXR image",'
 has 'hanging,demo,TIMEOUT,,,,,,,,,,did not finish within 1 s,'
 has 'crashing,demo,CRASHED,,,,,,,,,,killed by signal 11 (Segmentation fault),'
 has 'greedy,demo,OUT OF MEMORY,,,,,,,,,,ran out of memory (exit status 1; memory limit 2 GiB),'
@@ -207,10 +260,10 @@ check "a link or source outside the page" \
     test -z "$(grep -o '\(src\|href\)="[^"]*' "$html" | grep -v '="\(data:image/png;base64,\|#\)')"
 check "a url() outside the page" \
     test -z "$(grep -o 'url([^)]\{0,26\}' "$html" | grep -v '^url(data:image/png;base64,')"
-check "a section a submission" test "$(grep -c '<section id="s[0-9]*">' "$html")" -eq 13
+check "a section a submission" test "$(grep -c '<section id="s[0-9]*">' "$html")" -eq 20
 check "the strange name escaped" grep -qF "o&#39;brien, &quot;jo&quot; &lt;b&gt;&amp;amp;" "$html"
 check "the strange name unescaped" test "$(grep -cF '<b>&amp;' "$html")" -eq 0
-check "a picture of each image" test "$(grep -o '\(alt\|aria-label\)="submitted image"' "$html" | wc -l)" -eq 42
+check "a picture of each image" test "$(grep -o '\(alt\|aria-label\)="submitted image"' "$html" | wc -l)" -eq 71
 check "the crash's output" grep -q 'Segmentation fault' "$html"
 check "a temporary left in the output folder" \
     test -z "$(find "out dir" -mindepth 1 -maxdepth 1 ! -name report.html ! -name grades.csv ! -name work)"
@@ -219,7 +272,7 @@ check "a temporary left in the output folder" \
 check_no_leftovers "after grading"
 check "a student's folder was built in" test ! -e class/crashing/raytra
 check "progress lines" grep -q '^grading hanging (program): building... 5 scenes: 4 pass, 1 timeout$' stderr.txt
-check "no progress line for a file or a hidden folder" test "$(grep -c '^grading ' stderr.txt)" -eq 13
+check "no progress line for a file or a hidden folder" test "$(grep -c '^grading ' stderr.txt)" -eq 20
 
 # Tolerances from the command line reach imgdiff; a second run replaces the first.
 mkdir small

@@ -36,6 +36,8 @@ f32() {
     0.5078125) printf '\000\000\002\077' ;; # 0.5 + 2^-7
     0.75) printf '\000\000\100\077' ;;
     1) printf '\000\000\200\077' ;;
+    nan) printf '\000\000\300\177' ;;
+    inf) printf '\000\000\200\177' ;;
     *) echo "imgdiff.sh: no bytes for $1" >&2; exit 2 ;;
     esac
 }
@@ -171,7 +173,7 @@ run 2 a.pfm missing.png
 has "imgdiff: cannot read 'missing.png': No such file or directory"
 printf 'hello\n' >text.png
 run 2 text.png a.pfm
-has "imgdiff: cannot read 'text.png': not a PNG or PFM image"
+has "imgdiff: cannot read 'text.png': not a PNG, PFM or EXR image"
 dd if=a.pfm of=cut.pfm bs=1 count=30 2>/dev/null
 run 2 a.pfm cut.pfm
 has "imgdiff: cannot read 'cut.pfm': truncated: expected 144 bytes of pixels, found 18"
@@ -182,7 +184,7 @@ run 1 --diff heat.png a.pfm two.pfm
 has "heat map: black = 0, white = 0.5 (127.5/255), written to heat.png"
 pfm expected.pfm 4 3 0,0,0 2,1=1,1,1 0,0=1,0,0
 run 0 --threshold 0 --allow 0 heat.png expected.pfm
-has "note: comparing a PNG's stored values with a PFM's linear ones"
+has "note: comparing a PNG's stored values with linear ones (PFM, EXR)"
 has "PASS: the images are identical"
 # With --scale 1, 0.5 is red and 0.25 purple (0.5, 0, 0.75): stored as 128/255 and
 # 191/255, within 1/255 of them.
@@ -202,6 +204,48 @@ run 2 --diff nowhere/heat.png a.pfm two.pfm
 has "imgdiff: cannot write 'nowhere/heat.png': folder 'nowhere' does not exist"
 run 2 --diff a.pfm a.pfm two.pfm
 says "would overwrite"
+# However the input is spelt: ./, an absolute path, d/../, a symbolic or a hard link.
+mkdir d
+cp a.pfm keep.pfm
+ln -s a.pfm soft.pfm
+ln a.pfm hard.pfm
+for spelling in ./a.pfm "$tmp/a.pfm" d/../a.pfm soft.pfm hard.pfm; do
+    run 2 --diff "$spelling" a.pfm two.pfm
+    says "would overwrite a.pfm, an image being compared"
+done
+run 0 --threshold 0 --allow 0 a.pfm keep.pfm
+
+# Non-finite pixels are never equal, not even to the same NaN or infinity.
+pfm nan.pfm 4 3 $grey 1,1=nan,0.5,1
+pfm inf.pfm 4 3 $grey 3,2=0.25,inf,1
+for f in nan.pfm inf.pfm; do
+    command="imgdiff $f $f"
+    checks=$((checks + 1))
+    "$imgdiff" "$f" "$f" >out.txt 2>err.txt
+    status=$?
+    [ "$status" -ne 0 ] || fail "two images with a non-finite pixel called a match"
+    [ "$status" -ne 1 ] || grep -qxF "FAIL: 1 pixel is not finite (NaN or infinite)" out.txt ||
+        fail "no line on the non-finite pixel"
+done
+
+# Nothing blocks on a FIFO, nor decodes an image whose header already says the sizes
+# differ or that it is too large: a PNG header of 8192 x 8192 16-bit pixels, no pixels.
+mkfifo fifo.png
+run 2 a.pfm fifo.png
+has "imgdiff: cannot read 'fifo.png': not a regular file (a FIFO)"
+png_header() {
+    printf '\211PNG\r\n\032\n\000\000\000\015IHDR'
+    printf "$1"
+    printf '\020\002\000\000\000\000\000\000\000'
+}
+png_header '\000\000\040\000\000\000\040\000' >bomb.png
+run 2 a.pfm bomb.png
+has "imgdiff: sizes differ: a.pfm is 4 x 3, bomb.png is 8192 x 8192"
+run 2 --machine a.pfm bomb.png
+has "sizes 4 3 8192 8192"
+png_header '\000\001\000\000\000\000\000\001' >wide.png
+run 2 wide.png wide.png
+says "its header gives a size of 65536 x 1 pixels, beyond"
 
 # The command line.
 run 0 --help

@@ -583,7 +583,7 @@ static bool show_references(Grading *g)
         Render *r = &g->renders[k];
         r->reference_show = grade_format("%s/references/%s.png", g->work, r->name);
         char *log = grade_format("%s/references/%s.log", g->work, r->name);
-        bool ok = thumb_make(r->reference, r->reference_show, THUMB_SIDE, THUMB_MEAN, log);
+        bool ok = thumb_make(r->reference, r->reference_show, THUMB_SIDE, THUMB_MEAN, log, 0);
         if (!ok && !stop_requested()) {
             fprintf(stderr, "grade: cannot read the reference image %s:\n", r->reference);
             print_first_line("    ", log);

@@ -12,7 +12,8 @@ typedef enum {
     VERDICT_PASS,          /* matches the reference within the tolerances */
     VERDICT_FAIL,          /* differs from it */
     VERDICT_WRONG_SIZE,    /* has another width or height */
-    VERDICT_UNREADABLE,    /* is not a PNG or PFM image imgdiff can read */
+    VERDICT_LINK,          /* is a symbolic link, or a hard link to the reference */
+    VERDICT_UNREADABLE,    /* is not a regular file holding an image imgdiff can read */
     VERDICT_MISSING,       /* there is no image */
     VERDICT_ERROR,         /* the program exited with a failure status and wrote no image */
     VERDICT_CRASHED,       /* the program was killed by a signal */
@@ -29,14 +30,15 @@ typedef enum { TALLY_PASS, TALLY_FAIL, TALLY_MISSING, TALLY_ERROR, TALLY_COUNT }
 static inline const char *verdict_name(Verdict v)
 {
     static const char *const names[VERDICT_COUNT] = {
-        "PASS",  "FAIL",    "WRONG SIZE", "UNREADABLE",    "MISSING",
-        "ERROR", "CRASHED", "TIMEOUT",    "OUT OF MEMORY", "BUILD FAILED",
+        "PASS",    "FAIL",    "WRONG SIZE", "LINK",          "UNREADABLE",
+        "MISSING", "ERROR",   "CRASHED",    "TIMEOUT",       "OUT OF MEMORY",
+        "BUILD FAILED",
     };
     return names[v];
 }
 
-/* Returns the summary column the verdict counts in: a wrong or unreadable image is a
- * failed image; a program that did not produce one is an error. */
+/* Returns the summary column the verdict counts in: a wrong, linked or unreadable image
+ * is a failed image; a program that did not produce one is an error. */
 static inline Tally verdict_tally(Verdict v)
 {
     if (v == VERDICT_PASS)

@@ -7,6 +7,7 @@
 #include <string.h>
 #include <sys/stat.h>
 
+#include "imgfile.h"
 #include "outfile.h"
 
 /* The largest picture embedded: thumbnails are far smaller; a larger file is a mistake. */
@@ -20,7 +21,8 @@ static const char *const meanings[VERDICT_COUNT] = {
     "the image matches the reference within the tolerances",
     "the image differs from the reference by more than the tolerances allow",
     "the image has another width or height than the reference",
-    "the file is not a PNG or PFM image that imgdiff can read",
+    "the file is a symbolic link, or a hard link to the reference: not an image handed in",
+    "the file is not a PNG, PFM or EXR image that imgdiff can read, or not a regular file",
     "there is no image: none in the folder, or the program ended normally without writing it",
     "the program ended with a failure exit status and wrote no image",
     "the program was killed by a signal: a segmentation fault, an abort, a file too large",
@@ -33,15 +35,20 @@ static const char *const meanings[VERDICT_COUNT] = {
 /* The summary's class (and colour) for each tally. */
 static const char *const tally_class[TALLY_COUNT] = {"pass", "fail", "missing", "error"};
 
-/* Writes text as one CSV field followed by end (',' or '\n'): quoted, its quotes doubled,
- * when it holds a comma, a quote or a line break, or starts or ends with a space. */
-static void csv_field(FILE *f, const char *text, char end)
+/* Writes text as one CSV field followed by end (',' or '\n'): quoted, its quotes doubled
+ * (RFC 4180), when it holds a comma, a quote or a line break, or starts or ends with a
+ * space. A text field (not a figure) that a spreadsheet would take for a formula, starting
+ * with =, +, -, @, a tab or a carriage return, gets a quote ' first, and quotes around. */
+static void csv_field(FILE *f, const char *text, bool is_text, char end)
 {
     size_t len = strlen(text);
-    bool quote =
-        strpbrk(text, ",\"\r\n") != NULL || (len > 0 && (text[0] == ' ' || text[len - 1] == ' '));
+    bool formula = is_text && len > 0 && strchr("=+-@\t\r", text[0]) != NULL;
+    bool quote = formula || strpbrk(text, ",\"\r\n") != NULL ||
+                 (len > 0 && (text[0] == ' ' || text[len - 1] == ' '));
     if (quote) {
         fputc('"', f);
+        if (formula)
+            fputc('\'', f);
         for (const char *p = text; *p != '\0'; p++) {
             if (*p == '"')
                 fputc('"', f);
@@ -64,7 +71,7 @@ static void write_csv(FILE *f, const Grading *g)
     };
     enum { COLUMNS = sizeof columns / sizeof columns[0] };
     for (int c = 0; c < COLUMNS; c++)
-        csv_field(f, columns[c], c + 1 < COLUMNS ? ',' : '\n');
+        csv_field(f, columns[c], true, c + 1 < COLUMNS ? ',' : '\n');
     for (int i = 0; i < g->sub_count; i++)
         for (int k = 0; k < g->render_count; k++) {
             const Submission *s = &g->subs[i];
@@ -86,13 +93,13 @@ static void write_csv(FILE *f, const Grading *g)
             }
             if (res->seconds >= 0)
                 snprintf(v[13], sizeof v[0], "%.3f", res->seconds);
-            csv_field(f, s->name, ',');
-            csv_field(f, g->renders[k].name, ',');
-            csv_field(f, verdict_name(res->verdict), ',');
+            csv_field(f, s->name, true, ',');
+            csv_field(f, g->renders[k].name, true, ',');
+            csv_field(f, verdict_name(res->verdict), true, ',');
             for (int c = 3; c <= 11; c++)
-                csv_field(f, v[c], ',');
-            csv_field(f, res->message, ',');
-            csv_field(f, v[13], '\n');
+                csv_field(f, v[c], false, ',');
+            csv_field(f, res->message, true, ',');
+            csv_field(f, v[13], false, '\n');
         }
 }
 
@@ -137,10 +144,9 @@ static void html_text(FILE *f, const char *text)
 static unsigned char *read_small_file(const char *path, size_t *size)
 {
     struct stat st;
-    FILE *f = NULL;
+    FILE *f = imgfile_fopen(path);
     unsigned char *data = NULL;
-    if (stat(path, &st) == 0 && S_ISREG(st.st_mode) && st.st_size <= EMBED_MAX_BYTES &&
-        (f = fopen(path, "rb")) != NULL) {
+    if (f != NULL && fstat(fileno(f), &st) == 0 && st.st_size <= EMBED_MAX_BYTES) {
         data = grade_alloc((size_t)st.st_size + 1);
         *size = fread(data, 1, (size_t)st.st_size, f);
         if (ferror(f) || *size != (size_t)st.st_size) {

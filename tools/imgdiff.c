@@ -4,6 +4,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/stat.h>
 
 #include "image.h"
 #include "imgdiff.h"
@@ -28,6 +29,7 @@ typedef struct {
 typedef struct {
     double max[3];           /* the largest difference in R, G and B */
     double largest_finite;   /* the largest finite difference in any channel */
+    long nonfinite;          /* pixels with a NaN or infinite channel in either image */
     double sum, sum_squares; /* of the differences of every channel of every pixel */
     long differing;          /* pixels with a channel difference above the threshold */
     int x0, y0, x1, y1;      /* the box around those pixels, y from the top */
@@ -202,10 +204,15 @@ static bool check_diff_path(const DiffOptions *o)
 {
     const char *path = o->diff_path;
     Error err;
-    if (strcmp(path, o->paths[0]) == 0 || strcmp(path, o->paths[1]) == 0) {
-        fprintf(stderr, "imgdiff: --diff %s would overwrite an image being compared\n", path);
-        return false;
-    }
+    /* The same file, however it is spelt (./a.png, d/../a.png, a link, a hard link). */
+    struct stat map, input;
+    for (int k = 0; k < 2 && stat(path, &map) == 0; k++)
+        if (stat(o->paths[k], &input) == 0 && input.st_dev == map.st_dev &&
+            input.st_ino == map.st_ino) {
+            fprintf(stderr, "imgdiff: --diff %s would overwrite %s, an image being compared\n",
+                    path, o->paths[k]);
+            return false;
+        }
     if (image_format_for_path(path) == IMAGE_FORMAT_UNKNOWN) {
         fprintf(stderr, "imgdiff: cannot write '%s': unknown image format (use .png or .pfm)\n",
                 path);
@@ -218,14 +225,13 @@ static bool check_diff_path(const DiffOptions *o)
     return true;
 }
 
-/* Returns the difference of two channel values; NaN against anything but NaN counts
- * as infinite, so that it can never pass as a small difference. */
+/* Returns the difference of two channel values; a NaN or an infinity in either counts as
+ * an infinite difference, even against another: such a pixel is broken, never equal. */
 static double channel_diff(float a, float b)
 {
-    if (a == b || (isnan(a) && isnan(b)))
-        return 0;
-    double d = fabs((double)a - (double)b);
-    return isnan(d) ? INFINITY : d;
+    if (!isfinite(a) || !isfinite(b))
+        return INFINITY;
+    return fabs((double)a - (double)b);
 }
 
 /* Returns the largest difference between the channels of pixel k of a and of b. */
@@ -254,6 +260,7 @@ static Diff diff_images(const Image *a, const Image *b, double threshold)
                 if (isfinite(e))
                     d.largest_finite = fmax(d.largest_finite, e);
             }
+            d.nonfinite += isinf(largest);
             if (largest > threshold) {
                 d.differing++;
                 d.x0 = x < d.x0 ? x : d.x0;
@@ -325,6 +332,8 @@ static void print_report(const Diff *d, int width, int height, double threshold)
            threshold, threshold * 255);
     if (d->differing > 0)
         printf("differing region: (%d,%d)-(%d,%d), y from the top\n", d->x0, d->y0, d->x1, d->y1);
+    if (d->nonfinite > 0)
+        printf("non-finite pixels: %ld (NaN or infinite in either image)\n", d->nonfinite);
 }
 
 /* Prints the measures of d and the tolerances as NAME VALUE lines, with enough digits to
@@ -346,6 +355,8 @@ static void print_machine(const Diff *d, int width, int height, double top, cons
         printf("box %d %d %d %d\n", d->x0, d->y0, d->x1, d->y1);
     if (top > 0)
         printf("heat_scale %.9g\n", top);
+    if (d->nonfinite > 0)
+        printf("nonfinite %ld\n", d->nonfinite);
 }
 
 /* Prints the verdict line; returns the exit status it means. */
@@ -353,9 +364,13 @@ static int print_verdict(const Diff *d, long pixels, const DiffOptions *o)
 {
     double percent = 100.0 * d->differing / pixels;
     bool equal = d->max[0] == 0 && d->max[1] == 0 && d->max[2] == 0;
-    bool pass = (double)d->differing <= o->allow * pixels;
+    /* A NaN or infinite pixel is a bug in the renderer, whatever the tolerances. */
+    bool pass = (double)d->differing <= o->allow * pixels && d->nonfinite == 0;
     if (o->machine)
         printf("verdict %s\n", pass ? "PASS" : "FAIL");
+    else if (d->nonfinite > 0)
+        printf("FAIL: %ld pixel%s not finite (NaN or infinite)\n", d->nonfinite,
+               d->nonfinite == 1 ? " is" : "s are");
     else if (equal)
         printf("PASS: the images are identical\n");
     else if (d->differing == 0)
@@ -369,20 +384,38 @@ static int print_verdict(const Diff *d, long pixels, const DiffOptions *o)
     return pass ? EXIT_MATCH : EXIT_DIFFER;
 }
 
+/* Tells, from the headers alone, whether both images can be read and have the same size;
+ * reports why not. Nothing is decoded before: an image's pixels may be a bomb. */
+static bool check_headers(const DiffOptions *o)
+{
+    ImgFileKind kind;
+    int w[2], h[2];
+    Error err;
+    for (int k = 0; k < 2; k++)
+        if (!imgfile_header(o->paths[k], &kind, &w[k], &h[k], &err)) {
+            fprintf(stderr, "imgdiff: cannot read '%s': %s\n", o->paths[k], err.text);
+            return false;
+        }
+    if (w[0] == w[1] && h[0] == h[1])
+        return true;
+    if (o->machine)
+        printf("sizes %d %d %d %d\n", w[0], h[0], w[1], h[1]);
+    fprintf(stderr, "imgdiff: sizes differ: %s is %d x %d, %s is %d x %d\n", o->paths[0], w[0],
+            h[0], o->paths[1], w[1], h[1]);
+    return false;
+}
+
 /* Compares a and b, reports, writes the heat map if asked; returns the exit status. */
 static int compare(const Image *a, const Image *b, const DiffOptions *o)
 {
     if (a->width != b->width || a->height != b->height) {
-        if (o->machine)
-            printf("sizes %d %d %d %d\n", a->width, a->height, b->width, b->height);
-        fprintf(stderr, "imgdiff: sizes differ: %s is %d x %d, %s is %d x %d\n", o->paths[0],
-                a->width, a->height, o->paths[1], b->width, b->height);
+        fprintf(stderr, "imgdiff: '%s' changed while it was read\n", o->paths[1]);
         return EXIT_TROUBLE;
     }
     Diff d = diff_images(a, b, o->threshold);
     if (!o->quiet && !o->machine) {
-        if (imgfile_is_pfm(o->paths[0]) != imgfile_is_pfm(o->paths[1]))
-            printf("note: comparing a PNG's stored values with a PFM's linear ones\n");
+        if (imgfile_is_linear(o->paths[0]) != imgfile_is_linear(o->paths[1]))
+            printf("note: comparing a PNG's stored values with linear ones (PFM, EXR)\n");
         print_report(&d, a->width, a->height, o->threshold);
     }
     double top = 0;
@@ -420,7 +453,7 @@ int main(int argc, char **argv)
         print_help(stdout);
         return EXIT_MATCH;
     }
-    if (o.diff_path != NULL && !check_diff_path(&o))
+    if ((o.diff_path != NULL && !check_diff_path(&o)) || !check_headers(&o))
         return EXIT_TROUBLE;
     Image a, b;
     if (!read_image(&a, o.paths[0]))
