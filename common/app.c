@@ -174,7 +174,7 @@ int app_main(const Program *program, int argc, char **argv)
     if (!loaded || !apply_scale(&scene, &opts))
         goto done;
     note_ignored(program, &scene);
-    if (program->setup != NULL && !program->setup(&scene, &ctx))
+    if (program->setup != NULL && !program->setup(&scene, &opts, &ctx))
         goto done;
     if (!image_init(&img, scene.camera.nx, scene.camera.ny)) {
         fprintf(stderr, "raytra: not enough memory for a %d x %d image\n", scene.camera.nx,

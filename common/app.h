@@ -13,7 +13,7 @@ typedef struct {
     CliSpec cli;
     unsigned features; /* FEATURE_ bits the part renders; the rest is reported as ignored */
     /* Builds the state pixel reads from the loaded scene; false (reported) on failure. */
-    bool (*setup)(const Scene *scene, void **ctx);
+    bool (*setup)(const Scene *scene, const Options *opts, void **ctx);
     PixelFn pixel;
     /* Prints part-specific figures after the summary line; may be NULL. */
     void (*report)(const void *ctx, const RenderResult *result);

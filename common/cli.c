@@ -1,146 +1,152 @@
-/* cli.c: parsing the shared options, a part's own options and its extra arguments. */
+/* cli.c: the one table of every part's options, and parsing it with getopt_long. */
 #include "cli.h"
 
 #include <errno.h>
+#include <getopt.h>
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
 
 #include "render.h"
 
-/* Where the values of the shared options go while parsing. */
-typedef struct {
-    Options *opts;
-    const char *convention;
-    bool help, version;
-} Shared;
+#define FIELD(name) offsetof(Options, name)
 
-/* Fills table with the shared options, bound to s; returns how many. */
-static int shared_options(CliOption *table, Shared *s)
+/* excerpt: cli-options */
+const CliOption cli_options[] = {
+    {.name = "output", .letter = 'o', .kind = OPTION_TEXT, .metavar = "FILE",
+     .help = "write the image to FILE (same as OUTPUT)", .field = FIELD(output)},
+    {.name = "threads", .letter = 'j', .kind = OPTION_INT, .metavar = "N",
+     .help = "render with N threads (default: one per core)", .field = FIELD(threads),
+     .min = 1, .max = 256},
+    {.name = "quiet", .letter = 'q', .help = "no progress bar and no summary line",
+     .field = FIELD(quiet)},
+    {.name = "check",
+     .help = "read and check the scene, say what it holds, and exit without rendering",
+     .field = FIELD(check_only)},
+    {.name = "convention", .kind = OPTION_TEXT, .metavar = "NAME",
+     .help = "read planes and point lights by convention NAME: lecture (p.N + d = 0, no "
+             "falloff; the default) or fall2016 (p.N = d, 1/r^2 falloff); overrides an "
+             "'o convention' line",
+     .field = FIELD(convention_name)},
+    {.name = "scale", .kind = OPTION_NUMBER, .metavar = "F",
+     .help = "multiply the camera's pixel counts by F (0.25 for a quick look)",
+     .field = FIELD(scale), .fallback = 1, .min = 1e-3, .max = 64},
+    {.name = "linear", .help = "write PNG values linearly, without the sRGB curve",
+     .field = FIELD(linear)},
+    {.name = "strict", .help = "fail (exit 1) when a pixel comes out NaN or infinite",
+     .field = FIELD(strict)},
+    {.name = "two-sided",
+     .help = "shade the backs of triangles and planes with their own material, not lit yellow",
+     .field = FIELD(two_sided), .first_part = 12},
+    {.name = "max-depth", .kind = OPTION_INT, .metavar = "N",
+     .help = "follow at most N mirror reflections along a path (default 20; 0: none)",
+     .field = FIELD(max_depth), .fallback = 20, .min = 0, .max = 1000, .first_part = 13},
+    {.name = "ray-offset", .kind = OPTION_NUMBER, .metavar = "F",
+     .help = "start shadow and reflected rays F times the size of the hit point's "
+             "coordinates off the surface (default 2^-32); 0 shows shadow acne",
+     .field = FIELD(ray_offset), .fallback = 0x1p-32, .min = 0, .max = 1, .first_part = 13},
+    {.name = "mode", .kind = OPTION_INT, .metavar = "MODE",
+     .help = "0: test every surface, each behind its box; 1: draw each surface's box; "
+             "2: draw the BVH's leaf boxes; 3 (the default): the BVH",
+     .field = FIELD(mode), .fallback = 3, .min = 0, .max = 3, .first_part = 14,
+     .last_part = 15, .argument = "MODE"},
+    {.name = "help", .letter = 'h', .help = "show this help and exit", .field = FIELD(help)},
+    {.name = "version", .help = "show the version and exit", .field = FIELD(version)},
+    {0},
+};
+/* end excerpt: cli-options */
+
+enum { MAX_OPTIONS = 64 };
+
+/* Returns the course's number of a part from its name: 13 for "1.3-shadows-mirror". */
+int cli_part_number(const char *part)
 {
-    Options *o = s->opts;
-    const CliOption shared[] = {
-        {"output", 'o', OPTION_TEXT, "FILE", "write the image to FILE (same as OUTPUT)", &o->output,
-         0, 0},
-        {"threads", 'j', OPTION_INT, "N", "render with N threads (default: one per core)",
-         &o->threads, 1, 256},
-        {"quiet", 'q', OPTION_FLAG, NULL, "no progress bar and no summary line", &o->quiet, 0, 0},
-        {"check", 0, OPTION_FLAG, NULL,
-         "read and check the scene, say what it holds, and exit without rendering", &o->check_only,
-         0, 0},
-        {"convention", 0, OPTION_TEXT, "NAME",
-         "read planes and point lights by convention NAME: lecture (p.N + d = 0, "
-         "no falloff; the default) or fall2016 (p.N = d, 1/r^2 falloff); "
-         "overrides an 'o convention' line",
-         &s->convention, 0, 0},
-        {"scale", 0, OPTION_NUMBER, "F",
-         "multiply the camera's pixel counts by F (0.25 for a quick look)", &o->scale, 1e-3, 64},
-        {"linear", 0, OPTION_FLAG, NULL, "write PNG values linearly, without the sRGB curve",
-         &o->linear, 0, 0},
-        {"help", 'h', OPTION_FLAG, NULL, "show this help and exit", &s->help, 0, 0},
-        {"version", 0, OPTION_FLAG, NULL, "show the version and exit", &s->version, 0, 0},
-    };
-    int n = (int)(sizeof shared / sizeof shared[0]);
-    memcpy(table, shared, sizeof shared);
-    return n;
+    int major, minor;
+    return sscanf(part, "%d.%d", &major, &minor) == 2 ? 10 * major + minor : 0;
 }
 
-/* Returns the number of entries before the empty one that ends list (0 for NULL). */
-static int count_options(const CliOption *list)
+/* Tells whether part (11-16) accepts option o. */
+bool cli_option_accepted(const CliOption *o, int part)
 {
-    int n = 0;
-    while (list != NULL && list[n].name != NULL)
-        n++;
-    return n;
+    return (o->first_part == 0 || part >= o->first_part) &&
+           (o->last_part == 0 || part <= o->last_part);
 }
 
-/* Stores text as the value of option o; false (reported) when it is not a valid value. */
-static bool set_value(const CliOption *o, const char *shown, const char *text)
+/* Returns the option with this long name, or NULL. */
+const CliOption *cli_option_named(const char *name)
 {
+    for (const CliOption *o = cli_options; o->name != NULL; o++)
+        if (strcmp(o->name, name) == 0)
+            return o;
+    return NULL;
+}
+
+/* Tells whether text is a plain decimal number: digits, a point, an exponent; no
+ * hexadecimal, no "inf" or "nan", as in scene files. */
+static bool decimal_text(const char *text)
+{
+    return text[0] != '\0' && strspn(text, "0123456789+-.eE") == strlen(text);
+}
+
+/* Stores text as the value of option o in opts; false (reported) when it is not valid. */
+static bool set_value(const CliOption *o, const char *shown, const char *text, Options *opts)
+{
+    char *at = (char *)opts + o->field;
     char *end;
     switch (o->kind) {
-    case OPTION_FLAG: *(bool *)o->value = true; return true;
-    case OPTION_TEXT: *(const char **)o->value = text; return true;
+    case OPTION_FLAG: *(bool *)at = true; return true;
+    case OPTION_TEXT: *(const char **)at = text; return true;
     case OPTION_INT: {
         errno = 0;
         long v = strtol(text, &end, 10);
-        if (end == text || *end != '\0' || errno != 0 || v < o->min || v > o->max) {
+        if (!decimal_text(text) || *end != '\0' || errno != 0 || v < o->min || v > o->max) {
             fprintf(stderr, "raytra: %s takes a whole number from %.0f to %.0f, got '%s'\n", shown,
                     o->min, o->max, text);
             return false;
         }
-        *(int *)o->value = (int)v;
+        *(int *)at = (int)v;
         return true;
     }
     case OPTION_NUMBER: {
         double v = strtod(text, &end);
-        if (end == text || *end != '\0' || !isfinite(v) || v < o->min || v > o->max) {
+        if (!decimal_text(text) || *end != '\0' || !isfinite(v) || v < o->min || v > o->max) {
             fprintf(stderr, "raytra: %s takes a number from %g to %g, got '%s'\n", shown, o->min,
                     o->max, text);
             return false;
         }
-        *(double *)o->value = v;
+        *(double *)at = v;
         return true;
     }
     }
     return false;
 }
 
-/* Finds the option called by a long name (letter 0) or by a letter. */
-static const CliOption *find_option(const CliOption *table, int n, const char *name, size_t len,
-                                    char letter)
+/* Sets every option of the table to its value when not given. */
+static void set_fallbacks(Options *opts)
 {
-    for (int k = 0; k < n; k++) {
-        const CliOption *o = &table[k];
-        if (letter != 0 ? o->letter == letter
-                        : strlen(o->name) == len && strncmp(o->name, name, len) == 0)
-            return o;
+    memset(opts, 0, sizeof *opts);
+    for (const CliOption *o = cli_options; o->name != NULL; o++) {
+        char *at = (char *)opts + o->field;
+        if (o->kind == OPTION_INT)
+            *(int *)at = (int)o->fallback;
+        else if (o->kind == OPTION_NUMBER)
+            *(double *)at = o->fallback;
     }
-    return NULL;
 }
 
-/* Handles argv[*i], an option, taking its value from the next word when needed. */
-static bool parse_option(const CliOption *table, int n, int argc, char **argv, int *i)
+/* Lists the options part accepts in accepted[]; returns how many. */
+static int part_options(int part, const CliOption **accepted)
 {
-    const char *arg = argv[*i];
-    const char *value = NULL;
-    const CliOption *o;
-    if (arg[1] == '-') {
-        const char *name = arg + 2, *eq = strchr(name, '=');
-        size_t len = eq ? (size_t)(eq - name) : strlen(name);
-        o = find_option(table, n, name, len, 0);
-        if (eq != NULL)
-            value = eq + 1;
-    } else {
-        o = find_option(table, n, NULL, 0, arg[1]);
-        if (o != NULL && arg[2] != '\0')
-            value = arg + 2;
-    }
-    if (o == NULL) {
-        fprintf(stderr, "raytra: unknown option '%s' (raytra --help lists them)\n", arg);
-        return false;
-    }
-    if (o->kind == OPTION_FLAG) {
-        if (value != NULL) {
-            fprintf(stderr, "raytra: option '--%s' takes no value\n", o->name);
-            return false;
-        }
-    } else if (value == NULL) {
-        if (*i + 1 >= argc) {
-            fprintf(stderr, "raytra: option '--%s' needs a value (%s)\n", o->name, o->metavar);
-            return false;
-        }
-        value = argv[++*i];
-    }
-    char shown[64];
-    snprintf(shown, sizeof shown, "--%s", o->name);
-    return set_value(o, shown, value);
+    int n = 0;
+    for (const CliOption *o = cli_options; o->name != NULL && n < MAX_OPTIONS; o++)
+        if (cli_option_accepted(o, part))
+            accepted[n++] = o;
+    return n;
 }
 
-/* Handles a positional argument: SCENE, OUTPUT, then the part's own, in order. */
-static bool parse_positional(const CliSpec *spec, Options *opts, int *count, const char *arg)
+/* Handles the k-th positional argument: SCENE, OUTPUT, then the part's own in order. */
+static bool set_positional(int part, int k, const char *arg, Options *opts)
 {
-    int k = (*count)++;
     if (k == 0) {
         opts->scene = arg;
         return true;
@@ -154,61 +160,90 @@ static bool parse_positional(const CliSpec *spec, Options *opts, int *count, con
         opts->output = arg;
         return true;
     }
-    if (k - 2 >= count_options(spec->arguments)) {
-        fprintf(stderr, "raytra: unexpected argument '%s' (raytra --help shows the usage)\n", arg);
-        return false;
-    }
-    const CliOption *a = &spec->arguments[k - 2];
-    return set_value(a, a->name, arg);
+    int seen = 2;
+    for (const CliOption *o = cli_options; o->name != NULL; o++)
+        if (o->argument != NULL && cli_option_accepted(o, part) && seen++ == k)
+            return set_value(o, o->argument, arg, opts);
+    fprintf(stderr, "raytra: unexpected argument '%s' (raytra --help shows the usage)\n", arg);
+    return false;
 }
 
-/* Reads argv into opts and the part's option variables. */
+/* Reports the option getopt_long refused: argv[optind - 1] is the word it was reading. */
+static void report_refused(int argc, char **argv, int optopt_seen, const struct option *longs,
+                           int index_seen)
+{
+    const char *word = optind - 1 < argc ? argv[optind - 1] : "";
+    if (optopt_seen == ':' || (index_seen >= 0 && longs[index_seen].has_arg))
+        fprintf(stderr, "raytra: option '%s' needs a value\n", word);
+    else
+        fprintf(stderr, "raytra: unknown option or wrong use of '%s' (raytra --help lists them)\n",
+                word);
+}
+
+/* Reads argv into opts: the options this part accepts, anywhere, then the positional
+ * arguments in order. */
 CliResult cli_parse(const CliSpec *spec, int argc, char **argv, Options *opts)
 {
-    memset(opts, 0, sizeof *opts);
-    opts->scale = 1.0;
-    Shared s = {.opts = opts};
-    CliOption table[64];
-    int n = shared_options(table, &s);
-    int own = count_options(spec->options);
-    if (own > 64 - n)
-        own = 64 - n;
-    for (int k = 0; k < own; k++)
-        table[n++] = spec->options[k];
+    set_fallbacks(opts);
+    int part = cli_part_number(spec->part);
+    const CliOption *accepted[MAX_OPTIONS];
+    int n = part_options(part, accepted);
 
-    int positionals = 0;
-    bool only_positionals = false;
-    for (int i = 1; i < argc; i++) {
-        const char *arg = argv[i];
-        bool ok;
-        if (!only_positionals && strcmp(arg, "--") == 0) {
-            only_positionals = true;
-            continue;
-        }
-        if (only_positionals || arg[0] != '-' || arg[1] == '\0')
-            ok = parse_positional(spec, opts, &positionals, arg);
-        else
-            ok = parse_option(table, n, argc, argv, &i);
-        if (!ok)
-            return CLI_BAD_USAGE;
-        if (s.help) {
-            cli_print_help(spec, stdout);
-            return CLI_DONE;
-        }
-        if (s.version) {
-            printf("raytra %s (part %s)\n", RAYTRA_VERSION, spec->part);
-            return CLI_DONE;
+    /* getopt_long's tables: option k returns 256 + k. */
+    struct option longs[MAX_OPTIONS + 1];
+    char shorts[2 * MAX_OPTIONS + 2] = ":";
+    for (int k = 0; k < n; k++) {
+        bool valued = accepted[k]->kind != OPTION_FLAG;
+        longs[k] = (struct option){accepted[k]->name, valued ? required_argument : no_argument,
+                                   NULL, 256 + k};
+        if (accepted[k]->letter != 0) {
+            size_t len = strlen(shorts);
+            shorts[len] = accepted[k]->letter;
+            shorts[len + 1] = valued ? ':' : '\0';
+            shorts[len + 2] = '\0';
         }
     }
+    longs[n] = (struct option){0};
+
+    opterr = 0;
+    optind = 0; /* glibc: start afresh, also on a second call */
+    for (int c, index = -1; (c = getopt_long(argc, argv, shorts, longs, &index)) != -1; index = -1) {
+        const CliOption *o = NULL;
+        if (c >= 256)
+            o = accepted[c - 256];
+        else
+            for (int k = 0; k < n; k++)
+                if (c != '?' && c != ':' && accepted[k]->letter == c)
+                    o = accepted[k];
+        if (o == NULL) {
+            report_refused(argc, argv, c, longs, index);
+            return CLI_BAD_USAGE;
+        }
+        char shown[64];
+        snprintf(shown, sizeof shown, "--%s", o->name);
+        if (!set_value(o, shown, optarg, opts))
+            return CLI_BAD_USAGE;
+    }
+    if (opts->help) {
+        cli_print_help(spec, stdout);
+        return CLI_DONE;
+    }
+    if (opts->version) {
+        printf("raytra %s (part %s)\n", RAYTRA_VERSION, spec->part);
+        return CLI_DONE;
+    }
+    for (int k = 0; optind + k < argc; k++)
+        if (!set_positional(part, k, argv[optind + k], opts))
+            return CLI_BAD_USAGE;
     if (opts->scene == NULL) {
         fprintf(stderr, "raytra: no scene file given\nusage: raytra SCENE [OUTPUT] [options]"
                         " (raytra --help for more)\n");
         return CLI_BAD_USAGE;
     }
-    if (s.convention != NULL) {
-        if (!convention_from_name(s.convention, &opts->convention)) {
+    if (opts->convention_name != NULL) {
+        if (!convention_from_name(opts->convention_name, &opts->convention)) {
             fprintf(stderr, "raytra: unknown convention '%s' (lecture or fall2016)\n",
-                    s.convention);
+                    opts->convention_name);
             return CLI_BAD_USAGE;
         }
         opts->convention_given = true;
@@ -248,42 +283,37 @@ static void print_entry(FILE *f, const char *left, const char *help)
         fputc('\n', f);
 }
 
-/* Prints the options of one table under a heading. */
-static void print_options(FILE *f, const CliOption *table, int n)
+/* Prints the usage, the arguments and every option this part accepts, with its help. */
+void cli_print_help(const CliSpec *spec, FILE *f)
 {
+    int part = cli_part_number(spec->part);
+    const CliOption *accepted[MAX_OPTIONS];
+    int n = part_options(part, accepted);
+    fprintf(f, "usage: raytra SCENE [OUTPUT]");
+    for (int k = 0; k < n; k++)
+        if (accepted[k]->argument != NULL)
+            fprintf(f, " [%s]", accepted[k]->argument);
+    fprintf(f, " [options]\n\nraytra %s, part %s: %s\n\narguments:\n", RAYTRA_VERSION, spec->part,
+            spec->purpose);
+    print_entry(f, "SCENE", "the scene file to render (see docs/scene-format.md)");
+    print_entry(f, "OUTPUT",
+                "the image to write: .png (8-bit sRGB), .pfm (32-bit float, linear) or .exr "
+                "(OpenEXR, linear); default: the scene's name with .png, in the working "
+                "directory");
+    for (int k = 0; k < n; k++)
+        if (accepted[k]->argument != NULL) {
+            char help[256];
+            snprintf(help, sizeof help, "the same as --%s", accepted[k]->name);
+            print_entry(f, accepted[k]->argument, help);
+        }
+    fprintf(f, "\noptions:\n");
     for (int k = 0; k < n; k++) {
-        const CliOption *o = &table[k];
+        const CliOption *o = accepted[k];
         char left[64];
         snprintf(left, sizeof left, "%c%c%c --%s%s%s", o->letter ? '-' : ' ',
                  o->letter ? o->letter : ' ', o->letter ? ',' : ' ', o->name, o->metavar ? " " : "",
                  o->metavar ? o->metavar : "");
         print_entry(f, left, o->help);
-    }
-}
-
-/* Prints the usage, the arguments and every option with its help. */
-void cli_print_help(const CliSpec *spec, FILE *f)
-{
-    fprintf(f, "usage: raytra SCENE [OUTPUT]");
-    for (int k = 0; k < count_options(spec->arguments); k++)
-        fprintf(f, " [%s]", spec->arguments[k].name);
-    fprintf(f, " [options]\n\nraytra %s, part %s: %s\n\narguments:\n", RAYTRA_VERSION, spec->part,
-            spec->purpose);
-    print_entry(f, "SCENE", "the scene file to render (see docs/scene-format.md)");
-    print_entry(f, "OUTPUT",
-                "the image to write: .png (8-bit sRGB) or .pfm (32-bit float, linear); "
-                "default: the scene's name with .png, in the working directory");
-    for (int k = 0; k < count_options(spec->arguments); k++)
-        print_entry(f, spec->arguments[k].name, spec->arguments[k].help);
-
-    Options dummy;
-    Shared s = {.opts = &dummy};
-    CliOption table[16];
-    fprintf(f, "\noptions:\n");
-    print_options(f, table, shared_options(table, &s));
-    if (count_options(spec->options) > 0) {
-        fprintf(f, "\noptions of part %s:\n", spec->part);
-        print_options(f, spec->options, count_options(spec->options));
     }
     fprintf(f, "\nexit status: 0 when the image was written, 1 when the scene or the output\n"
                "has a problem (the message says what and where), 2 for a bad command line,\n"

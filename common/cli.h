@@ -1,34 +1,24 @@
-/* cli.h: the command line every part shares: raytra SCENE [OUTPUT] [options]. */
+/* cli.h: the command line of every part, from one table of options: raytra SCENE [OUTPUT] [options]. */
 #ifndef RAYTRA_CLI_H
 #define RAYTRA_CLI_H
 
 #include <stdbool.h>
+#include <stddef.h>
 #include <stdio.h>
 
 #include "image.h"
 #include "scene.h"
 
-#define RAYTRA_VERSION "0.1.0"
+#define RAYTRA_VERSION "0.2.0"
 
 typedef enum {
     OPTION_FLAG,   /* no value; sets a bool */
     OPTION_INT,    /* a whole number in [min, max]; sets an int */
-    OPTION_NUMBER, /* a number in [min, max]; sets a double */
+    OPTION_NUMBER, /* a decimal number in [min, max]; sets a double */
     OPTION_TEXT    /* any word; sets a const char * */
 } OptionKind;
 
-/* An option (or, in CliSpec.arguments, a positional argument) and where its value goes. */
-typedef struct {
-    const char *name; /* long name without the dashes; for arguments, the placeholder */
-    char letter;      /* short name, or 0 */
-    OptionKind kind;
-    const char *metavar; /* placeholder for the value in --help: "N", "FILE" */
-    const char *help;
-    void *value; /* bool *, int *, double * or const char **, by kind */
-    double min, max;
-} CliOption;
-
-/* Everything the shared options set. */
+/* Everything the command line sets, for every part; a part reads the fields it knows. */
 typedef struct {
     const char *scene;
     const char *output; /* NULL: the scene's name with .png, in the working directory */
@@ -36,17 +26,45 @@ typedef struct {
     bool quiet;
     bool check_only; /* read and check the scene, then stop */
     bool linear;
+    bool strict; /* a NaN or infinite pixel fails the render */
+    const char *convention_name;
     Convention convention;
     bool convention_given; /* on the command line: it overrides the scene file */
     double scale;
+    bool help, version;
+    /* From part 1.2 on. */
+    bool two_sided; /* shade back faces with their own material */
+    /* From part 1.3 on. */
+    int max_depth;     /* reflected (and refracted) rays a path may take */
+    double ray_offset; /* where secondary rays start, relative to the coordinates */
+    /* Parts 1.4 and 1.5. */
+    int mode; /* the course's box modes 0-3 */
 } Options;
 
-/* What one part's program accepts beyond the shared options. */
+/* excerpt: cli-option */
+/* One option of one or more parts. Parts are numbered as the course numbers them,
+ * 11 for part 1.1 to 16 for part 1.6. An option that the course gives as a positional
+ * argument (1.4's MODE) names it: students' programs take it by position. */
 typedef struct {
-    const char *part;           /* "1.1-spheres-red" */
-    const char *purpose;        /* one sentence for --help */
-    const CliOption *options;   /* the part's own options, ended by an empty entry; or NULL */
-    const CliOption *arguments; /* optional positional arguments after OUTPUT, likewise */
+    const char *name; /* the long name, without dashes */
+    char letter;      /* the short name, or 0 */
+    OptionKind kind;
+    const char *metavar; /* the value's placeholder in --help: "N", "FILE" */
+    const char *help;
+    size_t field;             /* offsetof(Options, ...) */
+    double fallback;          /* the value when not given (kinds INT and NUMBER) */
+    double min, max;          /* the values accepted (kinds INT and NUMBER) */
+    int first_part, last_part; /* the parts that accept it; 0 and 0 for all */
+    const char *argument;     /* the course's positional argument, or NULL */
+} CliOption;
+/* end excerpt: cli-option */
+
+extern const CliOption cli_options[]; /* ended by an entry whose name is NULL */
+
+/* What one part's program is: its name ("1.3-shadows-mirror") and one sentence for --help. */
+typedef struct {
+    const char *part;
+    const char *purpose;
 } CliSpec;
 
 typedef enum {
@@ -55,6 +73,9 @@ typedef enum {
     CLI_BAD_USAGE /* a message was printed: exit 2 */
 } CliResult;
 
+int cli_part_number(const char *part);
+bool cli_option_accepted(const CliOption *o, int part);
+const CliOption *cli_option_named(const char *name);
 CliResult cli_parse(const CliSpec *spec, int argc, char **argv, Options *opts);
 void cli_print_help(const CliSpec *spec, FILE *f);
 char *cli_default_output(const char *scene_path);

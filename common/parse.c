@@ -554,9 +554,10 @@ static void finish_planes(Scene *s)
     for (int k = 0; k < s->plane_count; k++) {
         Plane *pl = &s->planes[k];
         double len = vec3_length(pl->normal);
+        /* Slide 45: "d is measured in direction of normal", so d stays the distance
+         * along the unit normal, whatever length N was given with; p.N = d is
+         * p.N + (-d) = 0. */
         pl->normal = vec3_scale(pl->normal, 1.0 / len);
-        /* Dividing p.N + d = 0 by |N| keeps the plane; p.N = d is p.N + (-d) = 0. */
-        pl->d /= len;
         if (s->convention == CONVENTION_FALL2016)
             pl->d = -pl->d;
     }

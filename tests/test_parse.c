@@ -223,13 +223,13 @@ END_TEST
 
 START_TEST(plane_lecture_convention)
 {
-    /* p.N + d = 0 with N = (0,2,0), d = 4: 2y + 4 = 0, the plane y = -2, stored as
-     * N = (0,1,0), d = 2. */
+    /* p.N + d = 0 with N = (0,2,0), d = 4: d is the distance along the unit normal
+     * (slide 45), so the plane is y = -4 (not 2y + 4 = 0), stored as N = (0,1,0), d = 4. */
     Loaded l = load(CAMERA "p 0 2 0 4\n");
     ck_assert_msg(l.ok, "%s", l.messages);
     ck_assert_int_eq(l.scene.convention, CONVENTION_LECTURE);
     ck_assert_vec3_near(l.scene.planes[0].normal, vec3(0, 1, 0), 0);
-    ck_assert_double_eq(l.scene.planes[0].d, 2);
+    ck_assert_double_eq(l.scene.planes[0].d, 4);
     ck_assert(!scene_light_falls_off(&l.scene));
     done(&l);
 }
@@ -237,13 +237,14 @@ END_TEST
 
 START_TEST(plane_fall2016_convention_from_an_o_line)
 {
-    /* p.N = d with N = (0,2,0), d = 4: the plane y = 2, which in the lecture's form
-     * p.N + d = 0 has N = (0,1,0), d = -2. The o line may come after the plane. */
+    /* p.N = d with N = (0,2,0) normalised, d = 4: the plane y = 4, which in the
+     * lecture's form p.N + d = 0 has N = (0,1,0), d = -4. The o line may come after
+     * the plane. */
     Loaded l = load(CAMERA "p 0 2 0 4\no convention fall2016\n");
     ck_assert_msg(l.ok, "%s", l.messages);
     ck_assert_int_eq(l.scene.convention, CONVENTION_FALL2016);
     ck_assert_vec3_near(l.scene.planes[0].normal, vec3(0, 1, 0), 0);
-    ck_assert_double_eq(l.scene.planes[0].d, -2);
+    ck_assert_double_eq(l.scene.planes[0].d, -4);
     ck_assert(scene_light_falls_off(&l.scene));
     done(&l);
 }
@@ -254,9 +255,10 @@ START_TEST(plane_fall2016_convention_from_the_command_line)
     write_file("t.scn", CAMERA "p 0 0 -3 6\n");
     Loaded l = load_path_with("t.scn", (SceneLoadOptions){CONVENTION_FALL2016, true, NULL});
     ck_assert_msg(l.ok, "%s", l.messages);
-    /* -3z = 6: z = -2; normal (0,0,-1), so p.N + d = 0 needs d = -2. */
+    /* Unit normal (0,0,-1) at distance 6 along it: -z = 6, z = -6; p.N + d = 0 needs
+     * d = -6. */
     ck_assert_vec3_near(l.scene.planes[0].normal, vec3(0, 0, -1), 0);
-    ck_assert_double_eq(l.scene.planes[0].d, -2);
+    ck_assert_double_eq(l.scene.planes[0].d, -6);
     done(&l);
 }
 END_TEST

@@ -5,13 +5,15 @@
 #include <stdbool.h>
 
 #include "camera.h"
+#include "cli.h"
 #include "scene.h"
 
 typedef struct {
     Camera camera;
     const Scene *scene;
+    const Options *opts; /* the command line, read by later parts */
 } View;
 
-bool view_setup(const Scene *scene, void **ctx);
+bool view_setup(const Scene *scene, const Options *opts, void **ctx);
 
 #endif

@@ -7,15 +7,6 @@
 #include "view.h"
 #include "world.h"
 
-static bool two_sided;
-
-static const CliOption options[] = {
-    {"two-sided", 0, OPTION_FLAG, NULL,
-     "shade the backs of triangles and planes like their fronts, not flat yellow", &two_sided, 0,
-     0},
-    {0},
-};
-
 /* excerpt: shade-pixel */
 /* Part 1.2's pixel: the surface nearest the eye, lit by every light; black where the ray
  * meets nothing. */
@@ -27,23 +18,20 @@ static Color shade_pixel(const void *ctx, int i, int j, RayStats *stats)
     Hit hit;
     if (!world_hit(view->scene, r, 0, INFINITY, &hit))
         return color(0, 0, 0);
-    if (shade_shows_back_face(&hit) && !two_sided)
-        return SHADE_BACK_FACE_COLOR;
-    return shade_lights(view->scene, &hit, r);
+    return shade_direct_radiance(view->scene, &hit, r, view->opts->two_sided);
 }
 /* end excerpt: shade-pixel */
 
 /* Builds the view, saying first how area lights are lit in this part. */
-static bool setup(const Scene *scene, void **ctx)
+static bool setup(const Scene *scene, const Options *opts, void **ctx)
 {
     light_note_area_lights(scene);
-    return view_setup(scene, ctx);
+    return view_setup(scene, opts, ctx);
 }
 
 static const Program program = {
     .cli = {.part = "1.2-shading",
-            .purpose = "the nearest surface of each pixel, lit by Blinn-Phong shading",
-            .options = options},
+            .purpose = "the nearest surface of each pixel, lit by Blinn-Phong shading"},
     .features = FEATURE_SPHERES | FEATURE_PLANES | FEATURE_TRIANGLES | FEATURE_POINT_LIGHTS |
                 FEATURE_DIRECTIONAL_LIGHTS | FEATURE_AREA_LIGHTS | FEATURE_SHADING,
     .setup = setup,

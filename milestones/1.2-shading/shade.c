@@ -36,20 +36,36 @@ Vec3 shade_normal(const Hit *hit)
 }
 
 /* Tells whether the ray hit the back of a triangle or plane, which the course shows
- * flat yellow; a sphere seen from inside is not a wrongly wound surface. */
+ * yellow; a sphere seen from inside is not a wrongly wound surface. */
 bool shade_shows_back_face(const Hit *hit)
 {
     return hit->back_face && hit->kind != SURFACE_SPHERE;
 }
 /* end excerpt: shade-normal */
 
-/* excerpt: shade-lights */
-/* Returns the light that hit's surface reflects back along ray r, summed over the
- * scene's point, directional and area lights, without shadows; the ambient light
- * comes in part 1.3. */
-Color shade_lights(const Scene *scene, const Hit *hit, Ray r)
+/* excerpt: shade-material */
+/* The material of the back of a triangle or plane: yellow, diffuse only. The slides
+ * give no rule; every public renderer of the course's Fall 2016 term shades back
+ * faces so, lit like any surface (docs/1.2-shading.md). */
+const Material shade_back_face_material = {.diffuse = {1, 1, 0}, .attenuation = {1, 1, 1}};
+
+/* Returns the material to shade hit with: its own, or the yellow back-face material
+ * when the ray meets the back of a triangle or plane (unless two_sided). */
+const Material *shade_material(const Scene *scene, const Hit *hit, bool two_sided)
 {
-    const Material *m = &scene->materials[hit->material];
+    if (shade_shows_back_face(hit) && !two_sided)
+        return &shade_back_face_material;
+    return &scene->materials[hit->material];
+}
+/* end excerpt: shade-material */
+
+/* excerpt: shade-direct-radiance */
+/* Returns the light that hit's surface reflects back along ray r straight from the
+ * scene's point, directional and area lights, without shadows; part 1.3's
+ * direct_radiance replaces it, with shadows and the ambient light. */
+Color shade_direct_radiance(const Scene *scene, const Hit *hit, Ray r, bool two_sided)
+{
+    const Material *m = shade_material(scene, hit, two_sided);
     Vec3 n = shade_normal(hit);
     Vec3 v = vec3_neg(r.dir);
     Color sum = color(0, 0, 0);
@@ -59,4 +75,4 @@ Color shade_lights(const Scene *scene, const Hit *hit, Ray r)
     }
     return sum;
 }
-/* end excerpt: shade-lights */
+/* end excerpt: shade-direct-radiance */

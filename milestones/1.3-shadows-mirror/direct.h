@@ -10,7 +10,7 @@
 #include "render.h"
 #include "trace.h"
 
-bool direct_in_shadow(const Tracer *tr, const Hit *hit, Ray r, const Incident *in, RayStats *stats);
-Color direct_radiance(const Tracer *tr, const Hit *hit, Ray r, RayStats *stats);
+bool direct_in_shadow(const Tracer *tr, const Hit *hit, Ray r, const Incident *in, Path *path);
+Color direct_radiance(const Tracer *tr, const Hit *hit, Ray r, int depth, Path *path);
 
 #endif

@@ -8,23 +8,6 @@
 #include "trace.h"
 #include "view.h"
 
-static int max_depth = TRACE_MAX_DEPTH;
-static bool two_sided;
-static double offset = SECONDARY_OFFSET;
-
-static const CliOption options[] = {
-    {"max-depth", 0, OPTION_INT, "N",
-     "follow at most N mirror reflections along a path (default 20; 0: none)", &max_depth, 0, 1000},
-    {"two-sided", 0, OPTION_FLAG, NULL,
-     "shade the backs of triangles and planes like their fronts, not flat yellow", &two_sided, 0,
-     0},
-    {"ray-offset", 0, OPTION_NUMBER, "F",
-     "start shadow and reflected rays F times the size of the hit point's coordinates off "
-     "the surface (default 2^-32); 0 shows shadow acne, large values detach shadows",
-     &offset, 0, 1},
-    {0},
-};
-
 /* What every pixel reads: the camera, and the tracer with its scene and settings. */
 typedef struct {
     View view;
@@ -32,18 +15,14 @@ typedef struct {
 } Part13;
 
 /* Builds the camera and the tracer of the scene. */
-static bool setup(const Scene *scene, void **ctx)
+static bool setup(const Scene *scene, const Options *opts, void **ctx)
 {
     Part13 *part = malloc(sizeof *part);
     if (part == NULL)
         return false;
     light_note_area_lights(scene);
-    part->view = (View){camera_make(&scene->camera), scene};
-    part->tracer = (Tracer){.scene = scene,
-                            .surfaces = surfaces_brute_force(scene),
-                            .max_depth = max_depth,
-                            .two_sided = two_sided,
-                            .offset = offset};
+    part->view = (View){camera_make(&scene->camera), scene, opts};
+    part->tracer = tracer_make(scene, surfaces_brute_force(scene), opts);
     *ctx = part;
     return true;
 }
@@ -55,14 +34,14 @@ static Color trace_pixel(const void *ctx, int i, int j, RayStats *stats)
     const Part13 *part = ctx;
     Ray r = camera_ray(&part->view.camera, i + 0.5, j + 0.5);
     stats->rays[RAY_PRIMARY]++;
-    return trace_radiance(&part->tracer, r, 0, stats);
+    Path path = {.stats = stats};
+    return trace_radiance(&part->tracer, r, 0, &path);
 }
 /* end excerpt: trace-pixel */
 
 static const Program program = {
     .cli = {.part = "1.3-shadows-mirror",
-            .purpose = "Blinn-Phong shading with shadows, ambient light and mirror reflection",
-            .options = options},
+            .purpose = "Blinn-Phong shading with shadows, ambient light and mirror reflection"},
     .features = FEATURE_SPHERES | FEATURE_PLANES | FEATURE_TRIANGLES | FEATURE_POINT_LIGHTS |
                 FEATURE_DIRECTIONAL_LIGHTS | FEATURE_AREA_LIGHTS | FEATURE_AMBIENT_LIGHT |
                 FEATURE_MIRRORS | FEATURE_SHADING,

@@ -4,26 +4,38 @@
 
 #include <stdbool.h>
 
+#include "cli.h"
 #include "color.h"
 #include "ray.h"
 #include "render.h"
 #include "scene.h"
 #include "surfaces.h"
 
-/* The default of --max-depth: how many mirror bounces a path may take. */
-#define TRACE_MAX_DEPTH 20
+/* What one path carries down its bounces: its ray counts and, from part 1.6 on,
+ * the random numbers of its pixel sample (NULL before). */
+typedef struct {
+    RayStats *stats;
+    const void *sample;
+} Path;
+
+typedef struct Tracer Tracer;
+
+/* The light a hit receives straight from the lights; depth counts the bounces before r. */
+typedef Color (*DirectFn)(const Tracer *tr, const Hit *hit, Ray r, int depth, Path *path);
 
 /* excerpt: tracer-struct */
 /* Everything a traced ray needs besides the ray, shared by every thread: read only. */
-typedef struct {
+struct Tracer {
     const Scene *scene;
     Surfaces surfaces; /* how a ray finds what it hits */
     int max_depth;     /* reflected rays a path may take */
-    bool two_sided;    /* shade back faces instead of showing them yellow */
+    bool two_sided;    /* shade back faces with their own material, not yellow */
     double offset;     /* where secondary rays start: see secondary_ray */
-} Tracer;
+    DirectFn direct;   /* direct_radiance; part 1.6 plugs in area-light sampling */
+};
 /* end excerpt: tracer-struct */
 
-Color trace_radiance(const Tracer *tr, Ray r, int depth, RayStats *stats);
+Tracer tracer_make(const Scene *scene, Surfaces surfaces, const Options *opts);
+Color trace_radiance(const Tracer *tr, Ray r, int depth, Path *path);
 
 #endif

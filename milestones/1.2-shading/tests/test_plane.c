@@ -83,8 +83,10 @@ START_TEST(both_conventions)
     ck_assert_double_eq(floor_height("p 0 1 0 40", CONVENTION_LECTURE), -40);
     ck_assert_double_eq(floor_height("p 0 1 0 40", CONVENTION_FALL2016), 40);
     ck_assert_double_eq(floor_height("p 0 1 0 -40", CONVENTION_FALL2016), -40);
-    /* A normal of length 4 and d scaled with it: still y = -3 (lecture). */
-    ck_assert_double_eq(floor_height("p 0 4 0 12", CONVENTION_LECTURE), -3);
+    /* A normal of length 4: N is normalised and d stays the distance along it (slide
+     * 45, "d is measured in direction of normal"), as every Fall 2016 renderer reads it. */
+    ck_assert_double_eq(floor_height("p 0 4 0 12", CONVENTION_LECTURE), -12);
+    ck_assert_double_eq(floor_height("p 0 2 0 -40", CONVENTION_FALL2016), -40);
 }
 END_TEST
 

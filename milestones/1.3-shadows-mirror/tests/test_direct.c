@@ -13,7 +13,8 @@ static Tracer tracer(Scene *scene)
     return (Tracer){.scene = scene,
                     .surfaces = surfaces_brute_force(scene),
                     .max_depth = 20,
-                    .offset = SECONDARY_OFFSET};
+                    .offset = SECONDARY_OFFSET,
+                    .direct = direct_radiance};
 }
 
 /* A hit on the floor y = 0 at the origin, seen from above. */
@@ -28,7 +29,8 @@ static bool shadowed(Sphere *spheres, int count, Light light)
     Tracer tr = tracer(&scene);
     Incident in = light_incident(&light, floor_hit.point, false);
     RayStats stats = {{0}};
-    bool blocked = direct_in_shadow(&tr, &floor_hit, from_above, &in, &stats);
+    Path path = {.stats = &stats};
+    bool blocked = direct_in_shadow(&tr, &floor_hit, from_above, &in, &path);
     ck_assert_int_eq(stats.rays[RAY_SHADOW], 1);
     return blocked;
 }
@@ -75,9 +77,26 @@ START_TEST(ambient_only_gives_kd_times_ambient)
     Scene scene = {.ambient = {0.2, 0.5, 1.0}};
     Tracer tr = tracer(&scene);
     RayStats stats = {{0}};
-    Color c = direct_radiance(&tr, &floor_hit, from_above, &stats);
+    Path path = {.stats = &stats};
+    Color c = direct_radiance(&tr, &floor_hit, from_above, 0, &path);
     ck_assert_color_near(c, color(0.1, 0.2, 0.2), 0);
     ck_assert_int_eq(stats.rays[RAY_SHADOW], 0);
+}
+END_TEST
+
+START_TEST(fall2016_ambient_only_where_camera_rays_hit)
+{
+    Scene scene = {.ambient = {0.2, 0.5, 1.0}, .convention = CONVENTION_FALL2016};
+    Tracer tr = tracer(&scene);
+    RayStats stats = {{0}};
+    Path path = {.stats = &stats};
+    ck_assert_color_near(direct_radiance(&tr, &floor_hit, from_above, 0, &path),
+                         color(0.1, 0.2, 0.2), 0);
+    ck_assert_color_near(direct_radiance(&tr, &floor_hit, from_above, 1, &path),
+                         color(0, 0, 0), 0);
+    scene.convention = CONVENTION_LECTURE;
+    ck_assert_color_near(direct_radiance(&tr, &floor_hit, from_above, 3, &path),
+                         color(0.1, 0.2, 0.2), 0);
 }
 END_TEST
 
@@ -92,11 +111,12 @@ START_TEST(shadowed_light_leaves_ambient_only)
                    .ambient = {0.2, 0.2, 0.2}};
     Tracer tr = tracer(&scene);
     RayStats stats = {{0}};
-    ck_assert_color_near(direct_radiance(&tr, &floor_hit, from_above, &stats),
+    Path path = {.stats = &stats};
+    ck_assert_color_near(direct_radiance(&tr, &floor_hit, from_above, 0, &path),
                          color(0.1, 0.08, 0.04), 1e-16);
     /* Without the sphere, kd (ambient + I cos 0) = kd * 1.2. */
     scene.sphere_count = 0;
-    ck_assert_color_near(direct_radiance(&tr, &floor_hit, from_above, &stats),
+    ck_assert_color_near(direct_radiance(&tr, &floor_hit, from_above, 0, &path),
                          color(0.6, 0.48, 0.24), 1e-15);
 }
 END_TEST
@@ -107,7 +127,8 @@ START_TEST(no_shadow_ray_for_a_light_behind_the_surface)
     Scene scene = {.lights = &below, .light_count = 1};
     Tracer tr = tracer(&scene);
     RayStats stats = {{0}};
-    ck_assert_color_near(direct_radiance(&tr, &floor_hit, from_above, &stats), color(0, 0, 0), 0);
+    Path path = {.stats = &stats};
+    ck_assert_color_near(direct_radiance(&tr, &floor_hit, from_above, 0, &path), color(0, 0, 0), 0);
     ck_assert_int_eq(stats.rays[RAY_SHADOW], 0);
 }
 END_TEST
@@ -125,7 +146,8 @@ START_TEST(the_shadow_reaches_the_contact_point)
     near_contact.point = vec3(0.001, 0, 0);
     Incident in = light_incident(&bulb, near_contact.point, false);
     RayStats stats = {{0}};
-    ck_assert(direct_in_shadow(&tr, &near_contact, from_above, &in, &stats));
+    Path path = {.stats = &stats};
+    ck_assert(direct_in_shadow(&tr, &near_contact, from_above, &in, &path));
 }
 END_TEST
 
@@ -142,12 +164,13 @@ START_TEST(no_light_leaks_through_a_thin_wall)
     behind.point = vec3(1 - 1e-6, 0, 0);
     Incident in = light_incident(&bulb, behind.point, false);
     RayStats stats = {{0}};
-    ck_assert(direct_in_shadow(&tr, &behind, from_above, &in, &stats));
+    Path path = {.stats = &stats};
+    ck_assert(direct_in_shadow(&tr, &behind, from_above, &in, &path));
     /* And a point on the wall's lit face is not shadowed by the wall itself. */
     Hit on_face = {
         .t = 1, .point = {1 + 1e-6, 0.5, 0}, .normal = {1, 0, 0}, .kind = SURFACE_TRIANGLE};
     in = light_incident(&bulb, on_face.point, false);
-    ck_assert(!direct_in_shadow(&tr, &on_face, ray(vec3(5, 0.5, 3), vec3(-1, 0, 0)), &in, &stats));
+    ck_assert(!direct_in_shadow(&tr, &on_face, ray(vec3(5, 0.5, 3), vec3(-1, 0, 0)), &in, &path));
 }
 END_TEST
 
@@ -160,6 +183,7 @@ static Suite *direct_suite(void)
     tcase_add_test(tc, sphere_behind_the_light_or_the_point_does_not);
     tcase_add_test(tc, directional_light_blocked);
     tcase_add_test(tc, ambient_only_gives_kd_times_ambient);
+    tcase_add_test(tc, fall2016_ambient_only_where_camera_rays_hit);
     tcase_add_test(tc, shadowed_light_leaves_ambient_only);
     tcase_add_test(tc, no_shadow_ray_for_a_light_behind_the_surface);
     tcase_add_test(tc, the_shadow_reaches_the_contact_point);
