@@ -305,7 +305,7 @@ check_no_leftovers "interrupted"
 # not raytra's options.
 mkdir -p part/references
 cp "$refs/spheres-three.png" part/references/
-echo 'spheres-three.png scenes/spheres-three.scn --convention lecture 7 -j 2 --scale=1 last' \
+echo 'spheres-three.png scenes/spheres-three.scn --convention lecture 7 -j 2 --max-depth 3 --two-sided --scale=1 last' \
     >part/references/renders.txt
 script_submission arguments <<EOF
 #!/bin/sh
@@ -320,6 +320,35 @@ check "a part given by its folder" grep -q '^arguments,spheres-three,PASS,' "$cs
 check "the arguments a program gets" test "$(cat arguments.txt)" = "4 7 last"
 check "the note on raytra's options" grep -qF \
     "grade: note: spheres-three.png: raytra's option --convention lecture is not given to students' programs" stderr.txt
+
+# Each part's own raytra, handed in as a student's program, passes every graded scene of
+# its part; the illustrations (!IMAGE in renders.txt) are not graded, and say so. A part
+# whose raytra is not built (make -C tools grade-test builds them all) is skipped, told.
+for dir in "$top"/milestones/*/; do
+    part=$(basename "$dir")
+    [ -f "$dir/references/renders.txt" ] || continue
+    if [ ! -x "$dir/raytra" ]; then
+        echo "grade.sh: skipping part $part: $dir/raytra is not built"
+        continue
+    fi
+    rm -rf own && mkdir own
+    script_submission "$part" <<EOF
+#!/bin/sh
+exec "$dir/raytra" "\$@"
+EOF
+    mv "class/$part" own/
+    graded=$(grep -c '^[^#![:space:]]' "$dir/references/renders.txt")
+    illustrations=$(grep -c '^!' "$dir/references/renders.txt")
+    checks=$((checks + 1))
+    "$grade" --out "own-out" "$part" own >stdout.txt 2>stderr.txt || fail "grade $part own failed"
+    check "$part's own raytra passes its $graded graded scenes" \
+        test "$(grep -c "^$part,[a-z0-9-]*,PASS," own-out/grades.csv)" -eq "$graded"
+    check "$part: only graded scenes in the CSV" test "$(($(wc -l <own-out/grades.csv) - 1))" -eq "$graded"
+    [ "$illustrations" -eq 0 ] ||
+        check "$part: the illustrations named" grep -q '^grade: not graded (illustrations): ' stderr.txt
+    [ "$illustrations" -eq 0 ] ||
+        check "$part: the illustrations in the report" grep -q 'Not graded (illustrations): ' own-out/report.html
+done
 
 # The command line, and troubles found before any grading.
 refuse() {

@@ -13,6 +13,7 @@
 #include <time.h>
 #include <unistd.h>
 
+#include "cli.h"
 #include "grade_report.h"
 #include "grade_run.h"
 #include "grade_submission.h"
@@ -372,21 +373,22 @@ static char *find_part(const char *top, const char *part)
     return found;
 }
 
-/* Tells whether raytra's option `word`, given without "=VALUE", takes the next word as its
- * value; these are the shared options of common/cli.c that do. */
-static bool takes_value(const char *word)
+/* Returns raytra's option that `word` names (--name, --name=VALUE or -L), from the one
+ * table of common/cli.c; NULL when none does. */
+static const CliOption *option_of(const char *word)
 {
-    static const char *const with_value[] = {"-o",        "--output", "-j",
-                                             "--threads", "--scale",  "--convention"};
-    for (size_t k = 0; k < sizeof with_value / sizeof with_value[0]; k++)
-        if (strcmp(word, with_value[k]) == 0)
-            return true;
-    return false;
+    size_t len = strcspn(word + 2, "=");
+    for (const CliOption *o = cli_options; o->name != NULL; o++)
+        if (word[1] == '-' ? strlen(o->name) == len && strncmp(word + 2, o->name, len) == 0
+                           : o->letter != 0 && word[1] == o->letter && word[2] == '\0')
+            return o;
+    return NULL;
 }
 
-/* Fills r->args with the positional words of a renders.txt line (words[0..n)), which
- * students' programs get; raytra's options are left out, with a note. */
-static void keep_positional(Render *r, char **words, int n, bool quiet)
+/* Fills r->args with the words of a renders.txt line (words[0..n)) that students' programs
+ * get: the positional words, and the value of an option the course gives as a positional
+ * argument (1.4's MODE); raytra's own options are left out, with a note. */
+static void keep_positional(Render *r, char **words, int n, int part, bool quiet)
 {
     r->args = grade_alloc(((size_t)n + 1) * sizeof *r->args);
     int kept = 0;
@@ -395,14 +397,18 @@ static void keep_positional(Render *r, char **words, int n, bool quiet)
             r->args[kept++] = grade_copy(words[k]);
             continue;
         }
-        bool value = takes_value(words[k]) && k + 1 < n;
-        if (!quiet)
+        const CliOption *o = option_of(words[k]);
+        const char *eq = strchr(words[k], '=');
+        bool next = o != NULL && o->kind != OPTION_FLAG && eq == NULL && k + 1 < n;
+        const char *value = eq != NULL ? eq + 1 : next ? words[k + 1] : NULL;
+        if (o != NULL && o->argument != NULL && value != NULL && cli_option_accepted(o, part))
+            r->args[kept++] = grade_copy(value);
+        else if (!quiet)
             fprintf(stderr,
                     "grade: note: %s: raytra's option %s%s%s is not given to students' "
                     "programs\n",
-                    r->image, words[k], value ? " " : "", value ? words[k + 1] : "");
-        if (value)
-            k++;
+                    r->image, words[k], next ? " " : "", next ? words[k + 1] : "");
+        k += next;
     }
 }
 
@@ -413,6 +419,17 @@ static bool add_render(Grading *g, const char *top, char **words, int n, const c
 {
     const char *image = words[0];
     const char *dot = strrchr(image, '.');
+    if (image[0] == '!') {
+        /* An illustration: raytra's own picture (an option students do not have, a
+         * robustness case), which the references keep but no student is graded on. */
+        char *more = grade_format("%s%s%.*s", g->illustrations != NULL ? g->illustrations : "",
+                                  g->illustrations != NULL ? ", " : "",
+                                  dot != NULL ? (int)(dot - image - 1) : (int)strlen(image + 1),
+                                  image + 1);
+        free(g->illustrations);
+        g->illustrations = more;
+        return true;
+    }
     if (n < 2 || strchr(image, '/') != NULL || dot == NULL ||
         (strcmp(dot, ".png") != 0 && strcmp(dot, ".pfm") != 0)) {
         fprintf(stderr, "grade: %s: expected IMAGE SCENE [options], IMAGE a .png or .pfm name\n",
@@ -425,7 +442,7 @@ static bool add_render(Grading *g, const char *top, char **words, int n, const c
     r->scene_path =
         words[1][0] == '/' ? grade_copy(words[1]) : grade_format("%s/%s", top, words[1]);
     r->reference = grade_format("%s/%s", g->references, image);
-    keep_positional(r, words + 2, n - 2, quiet);
+    keep_positional(r, words + 2, n - 2, cli_part_number(g->part), quiet);
     g->render_count++;
     if (!is_file(r->scene_path)) {
         fprintf(stderr, "grade: %s: no scene file %s\n", where, r->scene_path);
@@ -742,6 +759,7 @@ static void grading_free(Grading *g)
         free(r->reference_show);
     }
     free(g->renders);
+    free(g->illustrations);
     for (int k = 0; k < g->sub_count; k++) {
         Submission *s = &g->subs[k];
         for (int j = 0; s->results != NULL && j < g->render_count; j++) {
@@ -791,6 +809,8 @@ static int grade(const GradeOptions *o, Grading *g, const char *argv0)
     if (!o->quiet)
         fprintf(stderr, "grade: part %s, %d scene%s, %d submission%s\n", g->part, g->render_count,
                 g->render_count == 1 ? "" : "s", g->sub_count, g->sub_count == 1 ? "" : "s");
+    if (!o->quiet && g->illustrations != NULL)
+        fprintf(stderr, "grade: not graded (illustrations): %s\n", g->illustrations);
     if (grade_all(g, o->quiet) && write_results(g, o->quiet))
         status = EXIT_REPORTED;
 done:

@@ -106,6 +106,7 @@ typedef struct {
     char *references; /* its references folder */
     Render *renders;
     int render_count;
+    char *illustrations; /* the names of the renders marked '!', not graded; or NULL */
     Submission *subs;
     int sub_count;
     const char *submissions; /* the submissions folder, as given */

@@ -15,7 +15,9 @@ grade: $(GRADE) $(IMGDIFF)
 $(GRADE): $(GRADE_OBJECTS) $(COMMON_LIB)
 	$(CC) $(ALL_LDFLAGS) -o $@ $^ $(PNG_LIBS) -lm
 
-# The script makes its class of submissions in a temporary folder.
+# The script makes its class of submissions in a temporary folder; every part's program is
+# also graded as a student's, against its own references.
 grade-test: $(GRADE) $(IMGDIFF)
-	@$(SUBMAKE) -C $(GRADE_PART) SANITIZE=0
+	@for part in $(wildcard $(TOP)/milestones/*/Makefile); do \
+	    $(SUBMAKE) -C $$(dirname $$part) SANITIZE=0 || exit 1; done
 	@sh $(TOP)/tests/grade.sh $(GRADE) $(GRADE_PART)/raytra

@@ -354,8 +354,14 @@ static void write_heading(FILE *f, const Grading *g)
     grade_size_text(g->memory_limit, limit, sizeof limit);
     fprintf(f,
             " of its pixels differ. A program gets %g s a scene and %g s to build; memory "
-            "limit: %s.</p>\n</div></header>\n<main>\n",
+            "limit: %s.</p>\n",
             g->time_limit, g->build_time_limit, limit);
+    if (g->illustrations != NULL) {
+        fputs("<p class=\"meta\">Not graded (illustrations): ", f);
+        html_text(f, g->illustrations);
+        fputs(".</p>\n", f);
+    }
+    fputs("</div></header>\n<main>\n", f);
 }
 
 /* Writes the summary: a row a submission, linking to its details, and the legend. */
