@@ -350,6 +350,28 @@ EOF
         check "$part: the illustrations in the report" grep -q 'Not graded (illustrations): ' own-out/report.html
 done
 
+# A student checks their own program: --self grades one folder, prints each verdict and
+# the heat map of each scene that fails, and exits 1 unless every scene passes.
+script_submission self-check <<EOF
+#!/bin/sh
+exec "$raytra" "\$@"
+EOF
+checks=$((checks + 1))
+"$grade" --self -q --out self-out 1.1 class/self-check >stdout.txt 2>stderr.txt ||
+    fail "grade --self of a correct program failed"
+check "--self: a line a scene" test "$(grep -c '^PASS  *[a-z-]*: identical to the reference$' stdout.txt)" -eq 5
+check "--self: the summary" grep -q '^5 of 5 scenes pass; the report: self-out/report.html$' stdout.txt
+script_submission self-wrong <<EOF
+#!/bin/sh
+case \$1 in *spheres-three*) exec "$raytra" "$tmp/moved.scn" "\$2" ;; esac
+exec "$raytra" "\$@"
+EOF
+checks=$((checks + 1))
+"$grade" --self -q --out self-out 1.1 class/self-wrong >stdout.txt 2>stderr.txt
+status=$?
+[ "$status" -eq 1 ] || fail "grade --self of a failing program: exit status $status, expected 1"
+check "--self: the failure and its heat map" grep -qx ' *heat map: .*/self-out/work/1-self/spheres-three.heat.png' stdout.txt
+
 # The command line, and troubles found before any grading.
 refuse() {
     expected=$1

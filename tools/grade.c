@@ -30,6 +30,7 @@ typedef struct {
     double time_limit, build_time_limit;
     long long memory_limit;
     bool quiet, help;
+    bool self; /* SUBMISSIONS is one student's folder: a check before handing in */
 } GradeOptions;
 
 /* Prints the usage, the options and their defaults. */
@@ -37,6 +38,7 @@ static void print_help(FILE *f)
 {
     fprintf(f,
             "Usage: grade [options] PART SUBMISSIONS\n"
+            "       grade --self [options] PART FOLDER\n"
             "Grades every submission in the folder SUBMISSIONS against the reference images\n"
             "of PART and writes a report (report.html) and a table (grades.csv).\n"
             "\n"
@@ -62,6 +64,9 @@ static void print_help(FILE *f)
             "                          differs by more than T (default %s)\n"
             "  --allow F               imgdiff's: an image passes when at most the fraction\n"
             "                          F of its pixels differ (default %s)\n"
+            "  --self                  FOLDER is one student's program (or images): grade\n"
+            "                          it alone, print each scene's verdict and heat map,\n"
+            "                          and exit 1 unless every scene passes\n"
             "  -q, --quiet             no progress lines\n"
             "  -h, --help              show this help and exit\n"
             "\n"
@@ -171,6 +176,10 @@ static bool parse_option(int argc, char **argv, int *i, GradeOptions *o)
     }
     if (strcmp(arg, "-h") == 0 || strcmp(arg, "--help") == 0) {
         o->help = true;
+        return true;
+    }
+    if (strcmp(arg, "--self") == 0) {
+        o->self = true;
         return true;
     }
     if (is_option(argc, argv, i, "out", &v))
@@ -639,10 +648,27 @@ static bool has_makefile(const char *folder)
 
 /* Lists the submissions: the folders in g->submissions but hidden ones and the output
  * folder, in the order of their names; false (reported) when there are none. */
-static bool list_submissions(Grading *g)
+static bool list_submissions(Grading *g, bool self)
 {
     int count = 0;
-    char **names = list_folders(g->submissions, &count);
+    char **names = NULL;
+    if (self) {
+        /* One student's folder: it is the one submission, named as the folder. */
+        const char *end = g->submissions + strlen(g->submissions);
+        while (end > g->submissions + 1 && end[-1] == '/')
+            end--;
+        const char *start = end;
+        while (start > g->submissions && start[-1] != '/')
+            start--;
+        g->subs = grade_alloc(sizeof *g->subs);
+        Submission *s = &g->subs[g->sub_count++];
+        s->name = grade_format("%.*s", (int)(end - start), start);
+        s->path = grade_copy(g->submissions);
+        s->work = grade_format("%s/1-self", g->work);
+        s->program = has_makefile(s->path);
+        return true;
+    }
+    names = list_folders(g->submissions, &count);
     if (names == NULL) {
         fprintf(stderr, "grade: cannot read the folder %s: %s\n", g->submissions, strerror(errno));
         return false;
@@ -725,6 +751,25 @@ static bool grade_all(Grading *g, bool quiet)
     return true;
 }
 
+/* Prints, for a student checking their own work, each scene's verdict and reason, and the
+ * heat map to look at when it did not pass; returns the exit status: 0 when every scene
+ * passes, 1 otherwise. */
+static int print_self(const Grading *g)
+{
+    const Submission *s = &g->subs[0];
+    for (int k = 0; k < g->render_count; k++) {
+        const SceneResult *res = &s->results[k];
+        char *heat = grade_format("%s/%s.heat.png", s->work, g->renders[k].name);
+        printf("%-12s %s: %s\n", verdict_name(res->verdict), g->renders[k].name, res->message);
+        if (res->verdict != VERDICT_PASS && access(heat, F_OK) == 0)
+            printf("%12s heat map: %s\n", "", heat);
+        free(heat);
+    }
+    printf("%d of %d scenes pass; the report: %s/report.html\n", s->tally[TALLY_PASS],
+           g->render_count, g->out);
+    return s->tally[TALLY_PASS] == g->render_count ? 0 : 1;
+}
+
 /* Writes report.html and grades.csv into g->out; false (reported) when it cannot. */
 static bool write_results(const Grading *g, bool quiet)
 {
@@ -804,7 +849,7 @@ static int grade(const GradeOptions *o, Grading *g, const char *argv0)
         goto done;
     }
     if (!read_renders(g, top, o->quiet) || !prepare_work(g) || !check_imgdiff(g) ||
-        !show_references(g) || !list_submissions(g))
+        !show_references(g) || !list_submissions(g, o->self))
         goto done;
     if (!o->quiet)
         fprintf(stderr, "grade: part %s, %d scene%s, %d submission%s\n", g->part, g->render_count,
@@ -812,7 +857,7 @@ static int grade(const GradeOptions *o, Grading *g, const char *argv0)
     if (!o->quiet && g->illustrations != NULL)
         fprintf(stderr, "grade: not graded (illustrations): %s\n", g->illustrations);
     if (grade_all(g, o->quiet) && write_results(g, o->quiet))
-        status = EXIT_REPORTED;
+        status = o->self ? print_self(g) : EXIT_REPORTED;
 done:
     if (stop_requested()) {
         fprintf(stderr, "grade: interrupted: no report written\n");
