@@ -245,7 +245,7 @@ has 'crashing,demo,CRASHED,,,,,,,,,,killed by signal 11 (Segmentation fault),'
 has 'greedy,demo,OUT OF MEMORY,,,,,,,,,,ran out of memory (exit status 1; memory limit 2 GiB),'
 has 'quitter,demo,ERROR,,,,,,,,,,ended with exit status 3 and wrote no image,'
 has 'quitter,spheres-three,MISSING,,,,,,,,,,ended normally but wrote no spheres-three.png,'
-has 'missing-one,demo,MISSING,,,,,,,,,,no demo.png (nor demo.pfm) in the submission,'
+has 'missing-one,demo,MISSING,,,,,,,,,,"no demo.png, .pfm or .exr in the submission",'
 has 'build-fails,demo,BUILD FAILED,,,,,,,,,,make failed (exit status 2),'
 # The moved sphere's figures, in their form: their last digits may change with the compiler.
 number='[0-9.e-]+'

@@ -36,6 +36,10 @@ f32() {
     0.5078125) printf '\000\000\002\077' ;; # 0.5 + 2^-7
     0.75) printf '\000\000\100\077' ;;
     1) printf '\000\000\200\077' ;;
+    0.21484375) printf '\000\000\134\076' ;;
+    0.5234375) printf '\000\000\006\077' ;;
+    7) printf '\000\000\340\100' ;;
+    -1) printf '\000\000\200\277' ;;
     nan) printf '\000\000\300\177' ;;
     inf) printf '\000\000\200\177' ;;
     *) echo "imgdiff.sh: no bytes for $1" >&2; exit 2 ;;
@@ -184,14 +188,22 @@ run 1 --diff heat.png a.pfm two.pfm
 has "heat map: black = 0, white = 0.5 (127.5/255), written to heat.png"
 pfm expected.pfm 4 3 0,0,0 2,1=1,1,1 0,0=1,0,0
 run 0 --threshold 0 --allow 0 heat.png expected.pfm
-has "note: comparing a PNG's stored values with linear ones (PFM, EXR)"
+has "note: expected.pfm holds linear values: compared as raytra would write them to a PNG (clamped to [0, 1], sRGB, 8 bits)"
 has "PASS: the images are identical"
-# With --scale 1, 0.5 is red and 0.25 purple (0.5, 0, 0.75): stored as 128/255 and
-# 191/255, within 1/255 of them.
-run 1 --diff heat2.png --scale 1 a.pfm two.pfm
-has "heat map: black = 0, white = 1 (255.0/255), written to heat2.png"
+# With --scale 1, 0.5 is red and 0.25 purple (0.5, 0, 0.75), exactly in a PFM.
+run 1 --diff heat2.pfm --scale 1 a.pfm two.pfm
+has "heat map: black = 0, white = 1 (255.0/255), written to heat2.pfm"
 pfm expected2.pfm 4 3 0,0,0 2,1=1,0,0 0,0=0.5,0,0.75
-run 0 --threshold 1/255 --allow 0 heat2.png expected2.pfm
+run 0 --threshold 0 --allow 0 heat2.pfm expected2.pfm
+# A PNG against a linear image: the linear one is clamped, sRGB-encoded and rounded to
+# 8 bits first. The same map as a PNG stores red (1, 0, 0) and purple as 128/255 and
+# 191/255; 7 and -1 clamp to 1 and 0; 0.21484375 encodes to 127.7/255 and 0.5234375 to
+# 191.4/255.
+run 1 --diff heat2.png --scale 1 a.pfm two.pfm
+pfm encoded.pfm 4 3 0,0,0 2,1=7,-1,0 0,0=0.21484375,0,0.5234375
+run 0 --threshold 0 --allow 0 heat2.png encoded.pfm
+has "note: encoded.pfm holds linear values: compared as raytra would write them to a PNG (clamped to [0, 1], sRGB, 8 bits)"
+has "PASS: the images are identical"
 # Identical images make an all-black map, and a PNG compared with itself is identical.
 run 0 --diff heat3.png a.pfm same.pfm
 run 0 --threshold 0 --allow 0 heat3.png black.pfm

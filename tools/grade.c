@@ -440,8 +440,8 @@ static bool add_render(Grading *g, const char *top, char **words, int n, const c
         return true;
     }
     if (n < 2 || strchr(image, '/') != NULL || dot == NULL ||
-        (strcmp(dot, ".png") != 0 && strcmp(dot, ".pfm") != 0)) {
-        fprintf(stderr, "grade: %s: expected IMAGE SCENE [options], IMAGE a .png or .pfm name\n",
+        (strcmp(dot, ".png") != 0 && strcmp(dot, ".pfm") != 0 && strcmp(dot, ".exr") != 0)) {
+        fprintf(stderr, "grade: %s: expected IMAGE SCENE [options], IMAGE a .png, .pfm or .exr name\n",
                 where);
         return false;
     }

@@ -224,25 +224,7 @@ static void compare_image(const Grading *g, const Submission *s, int k, const ch
     SceneResult *res = &s->results[k];
     char *log = grade_format("%s/%s.diff.txt", s->work, r->name);
     char *heat = grade_format("%s/%s.heat.png", s->work, r->name);
-    char *as_png = grade_format("%s/%s.as-png.png", s->work, r->name);
     const char *reference = r->reference, *compared = image;
-    /* A PFM holds linear values, a PNG encoded ones: the PFM is encoded as raytra encodes
-     * its PNGs, and the two PNGs compared. */
-    bool image_linear = imgfile_is_linear(image);
-    if (image_linear != imgfile_is_linear(reference)) {
-        if (!thumb_make(image_linear ? image : reference, as_png, 0, THUMB_MEAN, log,
-                        g->memory_limit)) {
-            char *reason = log_tail(log);
-            set_verdict(res, VERDICT_UNREADABLE, "the linear image cannot be read: %s",
-                        reason != NULL ? reason : "no reason given");
-            free(reason);
-            goto done;
-        }
-        if (image_linear)
-            compared = as_png;
-        else
-            reference = as_png;
-    }
     char *argv[] = {g->imgdiff, "--machine",       "--threshold",    (char *)g->threshold,
                     "--allow",  (char *)g->allow,  "--diff",         heat,
                     "--",       (char *)reference, (char *)compared, NULL};
@@ -275,7 +257,6 @@ static void compare_image(const Grading *g, const Submission *s, int k, const ch
     free(show);
     free(heat_show);
 done:
-    free(as_png);
     free(heat);
     free(log);
 }
@@ -311,25 +292,27 @@ static bool handed_in(const Render *r, SceneResult *res, const char *path)
 }
 
 /* Grades render k of a submission of images: finds the image, by the reference's name or
- * with the other of .png and .pfm, and compares it. */
+ * with another of .png, .pfm and .exr, and compares it. */
 static void grade_image(const Grading *g, Submission *s, int k)
 {
     const Render *r = &g->renders[k];
     SceneResult *res = &s->results[k];
-    const char *other = strcmp(strrchr(r->image, '.'), ".png") == 0 ? "pfm" : "png";
-    char *path = grade_format("%s/%s", s->path, r->image);
-    char *other_path = grade_format("%s/%s.%s", s->path, r->name, other);
+    static const char *const endings[] = {"", ".png", ".pfm", ".exr"};
+    char *found = NULL;
     struct stat st;
-    const char *found = lstat(path, &st) == 0         ? path
-                        : lstat(other_path, &st) == 0 ? other_path
-                                                      : NULL;
+    for (size_t e = 0; e < sizeof endings / sizeof endings[0] && found == NULL; e++) {
+        found = e == 0 ? grade_format("%s/%s", s->path, r->image)
+                       : grade_format("%s/%s%s", s->path, r->name, endings[e]);
+        if (lstat(found, &st) != 0) {
+            free(found);
+            found = NULL;
+        }
+    }
     if (found == NULL)
-        set_verdict(res, VERDICT_MISSING, "no %s (nor %s.%s) in the submission", r->image, r->name,
-                    other);
+        set_verdict(res, VERDICT_MISSING, "no %s.png, .pfm or .exr in the submission", r->name);
     else if (handed_in(r, res, found))
         compare_image(g, s, k, found);
-    free(path);
-    free(other_path);
+    free(found);
 }
 
 /* Copies submission s into its work folder and runs make there under the limits; returns

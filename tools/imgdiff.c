@@ -51,11 +51,12 @@ static void print_help(FILE *f)
     fprintf(f,
             "Usage: imgdiff [options] A B\n"
             "Compares two images of the same size, each a PNG (8 or 16 bits, any colour\n"
-            "type) or a PFM, and tells whether they match.\n"
+            "type), a PFM or an EXR, and tells whether they match.\n"
             "\n"
             "Values are compared on a scale of 0 to 1 as the files hold them: a PNG's\n"
             "as stored (raytra writes them sRGB-encoded unless given --linear), a PFM's\n"
-            "linear; so compare a PFM with a PFM, or with a PNG written with --linear.\n"
+            "or an EXR's linear. A PNG compared with a linear image meets it as raytra\n"
+            "would write it to a PNG: clamped to [0, 1], sRGB-encoded, rounded to 8 bits.\n"
             "Transparent PNG pixels are taken as drawn over black.\n"
             "\n"
             "Options:\n"
@@ -413,11 +414,8 @@ static int compare(const Image *a, const Image *b, const DiffOptions *o)
         return EXIT_TROUBLE;
     }
     Diff d = diff_images(a, b, o->threshold);
-    if (!o->quiet && !o->machine) {
-        if (imgfile_is_linear(o->paths[0]) != imgfile_is_linear(o->paths[1]))
-            printf("note: comparing a PNG's stored values with linear ones (PFM, EXR)\n");
+    if (!o->quiet && !o->machine)
         print_report(&d, a->width, a->height, o->threshold);
-    }
     double top = 0;
     if (o->diff_path != NULL) {
         /* Equal images get an all-black map; the scale then only needs to be positive. */
@@ -431,6 +429,18 @@ static int compare(const Image *a, const Image *b, const DiffOptions *o)
     if (o->machine)
         print_machine(&d, a->width, a->height, top, o);
     return print_verdict(&d, (long)a->width * a->height, o);
+}
+
+/* Encodes the linear image img (a PFM's, an EXR's) as raytra encodes its PNGs: each value
+ * clamped to [0, 1], given the sRGB curve and rounded to 8 bits, so that it compares
+ * with a PNG's stored values. A non-finite value stays as it is, to be reported. */
+static void encode_like_png(Image *img)
+{
+    for (long k = 0; k < 3L * img->width * img->height; k++) {
+        double v = img->pixels[k];
+        if (isfinite(v))
+            img->pixels[k] = (float)((int)(image_srgb_encode(fmin(fmax(v, 0), 1)) * 255 + 0.5) / 255.0);
+    }
 }
 
 /* Reads the image at path into img; false (reported) when it cannot. */
@@ -460,6 +470,15 @@ int main(int argc, char **argv)
         return EXIT_TROUBLE;
     int status = EXIT_TROUBLE;
     if (read_image(&b, o.paths[1])) {
+        /* A PNG against linear values: the linear image is encoded as a PNG would be. */
+        bool linear[2] = {imgfile_is_linear(o.paths[0]), imgfile_is_linear(o.paths[1])};
+        if (linear[0] != linear[1]) {
+            encode_like_png(linear[0] ? &a : &b);
+            if (!o.quiet && !o.machine)
+                printf("note: %s holds linear values: compared as raytra would write them to "
+                       "a PNG (clamped to [0, 1], sRGB, 8 bits)\n",
+                       o.paths[linear[0] ? 0 : 1]);
+        }
         status = compare(&a, &b, &o);
         image_free(&b);
     }
