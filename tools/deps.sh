@@ -3,7 +3,8 @@
 #
 # Usage: tools/deps.sh [build|test]
 #   build  needs a C compiler, make, pkg-config and libpng's headers;
-#   test   needs, in addition, the Check unit-test framework.
+#   test   needs, in addition, the Check unit-test framework, and Chromium, in which
+#          tests/grade-report.sh opens the grading report (headless).
 #
 # On Debian and Ubuntu it installs what is missing with apt-get when it may
 # (as root, or through sudo without a password); otherwise it names the exact
@@ -21,6 +22,9 @@ if ! pkg-config --exists libpng 2>/dev/null && [ ! -f /usr/include/png.h ]; then
 fi
 if [ $need_check = yes ] && ! pkg-config --exists check 2>/dev/null; then
     missing="$missing check"
+fi
+if [ $need_check = yes ] && [ ! -x /usr/bin/chromium ] && command -v apt-get >/dev/null 2>&1; then
+    missing="$missing chromium"
 fi
 [ -z "$missing" ] && exit 0
 
