@@ -3,6 +3,7 @@
 
 #include <dirent.h>
 #include <errno.h>
+#include <getopt.h>
 #include <limits.h>
 #include <math.h>
 #include <stdarg.h>
@@ -134,115 +135,84 @@ static bool parse_size(const char *text, long long *bytes)
 {
     char *end;
     double v = strtod(text, &end);
-    double unit = *end == 'K' || *end == 'k'   ? 1024.0
-                  : *end == 'M' || *end == 'm' ? 1024.0 * 1024
-                  : *end == 'G' || *end == 'g' ? 1024.0 * 1024 * 1024
-                                               : 1;
-    if (unit > 1)
-        end++;
-    if (end == text || *end != '\0' || !isfinite(v) || v < 0 || v * unit > 1e18 ||
-        (v > 0 && v * unit < 1024.0 * 1024))
+    const char *units = "KkMmGg", *unit = *end != '\0' ? strchr(units, *end) : NULL;
+    double scale = unit != NULL ? pow(1024.0, (double)((unit - units) / 2 + 1)) : 1;
+    end += unit != NULL;
+    if (end == text || *end != '\0' || !isfinite(v) || v < 0 || v * scale > 1e18 ||
+        (v > 0 && v * scale < 1024.0 * 1024))
         return false;
-    *bytes = (long long)(v * unit);
+    *bytes = (long long)(v * scale);
     return true;
 }
 
-/* Tells whether argv[*i] is option --name, as --name VALUE or --name=VALUE; then sets
- * *value (NULL when the value is missing) and steps over it. */
-static bool is_option(int argc, char **argv, int *i, const char *name, const char **value)
-{
-    const char *arg = argv[*i];
-    size_t len = strlen(name);
-    if (strncmp(arg, "--", 2) != 0 || strncmp(arg + 2, name, len) != 0)
-        return false;
-    if (arg[2 + len] == '=') {
-        *value = arg + 3 + len;
-        return true;
-    }
-    if (arg[2 + len] != '\0')
-        return false;
-    *value = *i + 1 < argc ? argv[++*i] : NULL;
-    return true;
-}
-
-/* Handles the option argv[*i]; false (reported) when it is not a valid one. */
-static bool parse_option(int argc, char **argv, int *i, GradeOptions *o)
-{
-    const char *arg = argv[*i], *v = NULL;
-    bool ok = true;
-    if (strcmp(arg, "-q") == 0 || strcmp(arg, "--quiet") == 0) {
-        o->quiet = true;
-        return true;
-    }
-    if (strcmp(arg, "-h") == 0 || strcmp(arg, "--help") == 0) {
-        o->help = true;
-        return true;
-    }
-    if (strcmp(arg, "--self") == 0) {
-        o->self = true;
-        return true;
-    }
-    if (is_option(argc, argv, i, "out", &v))
-        o->out = v;
-    else if (is_option(argc, argv, i, "time-limit", &v))
-        ok = v == NULL || parse_seconds(v, &o->time_limit);
-    else if (is_option(argc, argv, i, "build-time-limit", &v))
-        ok = v == NULL || parse_seconds(v, &o->build_time_limit);
-    else if (is_option(argc, argv, i, "memory-limit", &v))
-        ok = v == NULL || parse_size(v, &o->memory_limit);
-    else if (is_option(argc, argv, i, "threshold", &v))
-        o->threshold = v;
-    else if (is_option(argc, argv, i, "allow", &v))
-        o->allow = v;
-    else {
-        fprintf(stderr, "grade: unknown option '%s' (grade --help lists them)\n", arg);
-        return false;
-    }
-    if (v == NULL) {
-        fprintf(stderr, "grade: %s needs a value\n", arg);
-        return false;
-    }
-    if (!ok)
-        fprintf(stderr, "grade: %s takes %s, got '%s'\n", arg,
-                strstr(arg, "memory") != NULL ? "a size such as 512M or 2G, or 0"
-                                              : "a number of seconds, or 0",
-                v);
-    return ok;
-}
-
-/* Reads the command line into o; false (reported) when it is not a valid one. */
+/* Reads the command line into o, with getopt_long (options may follow the words); false
+ * (reported) when it is not a valid one. */
 static bool parse_args(int argc, char **argv, GradeOptions *o)
 {
+    enum { OPT_OUT = 256, OPT_TIME, OPT_BUILD_TIME, OPT_MEMORY, OPT_THRESHOLD, OPT_ALLOW, OPT_SELF };
+    static const struct option options[] = {
+        {"out", required_argument, NULL, OPT_OUT},
+        {"time-limit", required_argument, NULL, OPT_TIME},
+        {"build-time-limit", required_argument, NULL, OPT_BUILD_TIME},
+        {"memory-limit", required_argument, NULL, OPT_MEMORY},
+        {"threshold", required_argument, NULL, OPT_THRESHOLD},
+        {"allow", required_argument, NULL, OPT_ALLOW},
+        {"self", no_argument, NULL, OPT_SELF},
+        {"quiet", no_argument, NULL, 'q'},
+        {"help", no_argument, NULL, 'h'},
+        {0},
+    };
     *o = (GradeOptions){.threshold = IMGDIFF_THRESHOLD_TEXT,
                         .allow = IMGDIFF_ALLOW_TEXT,
                         .time_limit = 60,
                         .build_time_limit = 300,
                         .memory_limit = 2LL << 30};
-    const char *words[2];
-    int count = 0;
-    bool only_words = false;
-    for (int i = 1; i < argc; i++) {
-        const char *arg = argv[i];
-        if (!only_words && strcmp(arg, "--") == 0) {
-            only_words = true;
-        } else if (!only_words && arg[0] == '-' && arg[1] != '\0') {
-            if (!parse_option(argc, argv, &i, o))
-                return false;
-        } else if (count == 2) {
-            fprintf(stderr, "grade: unexpected argument '%s': give a part and a folder\n", arg);
+    opterr = 0;
+    int c;
+    bool ok = true;
+    while (ok && (c = getopt_long(argc, argv, ":qh", options, NULL)) != -1) {
+        const char *arg = argv[optind - 1];
+        switch (c) {
+        case OPT_OUT: o->out = optarg; break;
+        case OPT_THRESHOLD: o->threshold = optarg; break;
+        case OPT_ALLOW: o->allow = optarg; break;
+        case OPT_SELF: o->self = true; break;
+        case 'q': o->quiet = true; break;
+        case 'h': o->help = true; break;
+        case OPT_TIME:
+        case OPT_BUILD_TIME:
+            if (!parse_seconds(optarg, c == OPT_TIME ? &o->time_limit : &o->build_time_limit)) {
+                fprintf(stderr, "grade: %.*s takes a number of seconds, or 0, got '%s'\n",
+                        (int)strcspn(arg, "="), arg, optarg);
+                ok = false;
+            }
+            break;
+        case OPT_MEMORY:
+            if (!parse_size(optarg, &o->memory_limit)) {
+                fprintf(stderr, "grade: --memory-limit takes a size such as 512M or 2G, or 0, "
+                                "got '%s'\n", optarg);
+                ok = false;
+            }
+            break;
+        case ':': fprintf(stderr, "grade: %s needs a value\n", arg); return false;
+        default:
+            fprintf(stderr, "grade: unknown option '%s' (grade --help lists them)\n", arg);
             return false;
-        } else {
-            words[count++] = arg;
         }
     }
-    if (o->help)
-        return true;
-    if (count < 2) {
+    if (!ok || o->help)
+        return ok;
+    if (argc - optind > 2) {
+        fprintf(stderr, "grade: unexpected argument '%s': give a part and a folder\n",
+                argv[optind + 2]);
+        return false;
+    }
+    if (argc - optind < 2) {
         fprintf(stderr, "usage: grade [options] PART SUBMISSIONS (grade --help for more)\n");
         return false;
     }
-    o->part = words[0];
-    o->submissions = words[1];
+    o->part = argv[optind];
+    o->submissions = argv[optind + 1];
     return true;
 }
 
@@ -292,40 +262,30 @@ static char *find_top(const char *argv0, char **tools_build)
     return top;
 }
 
-/* Orders names as strcmp does, for qsort. */
-static int compare_names(const void *a, const void *b)
+/* Tells whether a folder's entry is not hidden, for scandir. */
+static int visible(const struct dirent *e)
 {
-    return strcmp(*(char *const *)a, *(char *const *)b);
+    return e->d_name[0] != '.';
 }
 
 /* Returns the names of the folders in `folder`, hidden ones left out, in strcmp's order;
  * sets *count. NULL (and errno) when the folder cannot be read. */
 static char **list_folders(const char *folder, int *count)
 {
-    DIR *d = opendir(folder);
-    if (d == NULL)
+    struct dirent **entries;
+    int n = scandir(folder, &entries, visible, alphasort);
+    if (n < 0)
         return NULL;
-    char **names = grade_alloc(sizeof *names);
-    int capacity = 1;
-    struct dirent *e;
+    char **names = grade_alloc(((size_t)n + 1) * sizeof *names);
     *count = 0;
-    while ((e = readdir(d)) != NULL) {
-        char *path = grade_format("%s/%s", folder, e->d_name);
-        bool wanted = e->d_name[0] != '.' && is_folder(path);
+    for (int k = 0; k < n; k++) {
+        char *path = grade_format("%s/%s", folder, entries[k]->d_name);
+        if (is_folder(path))
+            names[(*count)++] = grade_copy(entries[k]->d_name);
         free(path);
-        if (!wanted)
-            continue;
-        if (*count + 1 == capacity) {
-            capacity *= 2;
-            char **grown = grade_alloc((size_t)capacity * sizeof *grown);
-            memcpy(grown, names, (size_t)*count * sizeof *grown);
-            free(names);
-            names = grown;
-        }
-        names[(*count)++] = grade_copy(e->d_name);
+        free(entries[k]);
     }
-    closedir(d);
-    qsort(names, (size_t)*count, sizeof *names, compare_names);
+    free(entries);
     return names;
 }
 
@@ -788,43 +748,6 @@ static bool write_results(const Grading *g, bool quiet)
     return ok;
 }
 
-/* Frees everything g holds. */
-static void grading_free(Grading *g)
-{
-    for (int k = 0; k < g->render_count; k++) {
-        Render *r = &g->renders[k];
-        for (char **a = r->args; a != NULL && *a != NULL; a++)
-            free(*a);
-        free(r->args);
-        free(r->image);
-        free(r->name);
-        free(r->scene);
-        free(r->scene_path);
-        free(r->reference);
-        free(r->reference_show);
-    }
-    free(g->renders);
-    free(g->illustrations);
-    for (int k = 0; k < g->sub_count; k++) {
-        Submission *s = &g->subs[k];
-        for (int j = 0; s->results != NULL && j < g->render_count; j++) {
-            free(s->results[j].image_show);
-            free(s->results[j].heat_show);
-            free(s->results[j].log_tail);
-        }
-        free(s->results);
-        free(s->name);
-        free(s->path);
-        free(s->work);
-        free(s->build_log_tail);
-    }
-    free(g->subs);
-    free(g->references);
-    free(g->out);
-    free(g->work);
-    free(g->imgdiff);
-}
-
 /* Does all the grading but reading the command line; returns the exit status. */
 static int grade(const GradeOptions *o, Grading *g, const char *argv0)
 {
@@ -881,13 +804,13 @@ int main(int argc, char **argv)
         return EXIT_REPORTED;
     }
     run_init();
-    Grading g = {.submissions = o.submissions,
+    /* Static: what grading gathers lives until the exit, which frees it. */
+    static Grading g;
+    g = (Grading){.submissions = o.submissions,
                  .threshold = o.threshold,
                  .allow = o.allow,
                  .time_limit = o.time_limit,
                  .build_time_limit = o.build_time_limit,
                  .memory_limit = o.memory_limit};
-    int status = grade(&o, &g, argv[0]);
-    grading_free(&g);
-    return status;
+    return grade(&o, &g, argv[0]);
 }
