@@ -141,6 +141,12 @@ script_submission link-program <<EOF
 case \$1 in *demo*) exec ln -s "$refs/demo.png" "\$2" ;; esac
 exec "$raytra" "\$@"
 EOF
+script_submission planter <<EOF
+#!/bin/sh
+case \$1 in *spheres-three*) ln -s "$tmp/precious.txt" "\$(dirname "\$2")/../spheres-behind-camera.log" ;; esac
+exec "$raytra" "\$@"
+EOF
+echo "precious" >precious.txt
 c_submission crashing <<'EOF'
 #include <signal.h>
 int main(void) { raise(SIGSEGV); return 0; }
@@ -205,6 +211,9 @@ status=$?
     done
     for s in $scenes; do echo "pfm,$s,PASS"; done
     for s in $scenes; do
+        case $s in spheres-behind-camera) echo "planter,$s,ERROR" ;; *) echo "planter,$s,PASS" ;; esac
+    done
+    for s in $scenes; do
         case $s in demo) echo "quitter,$s,ERROR" ;; *) echo "quitter,$s,MISSING" ;; esac
     done
     for s in $scenes; do
@@ -260,19 +269,20 @@ check "a link or source outside the page" \
     test -z "$(grep -o '\(src\|href\)="[^"]*' "$html" | grep -v '="\(data:image/png;base64,\|#\)')"
 check "a url() outside the page" \
     test -z "$(grep -o 'url([^)]\{0,26\}' "$html" | grep -v '^url(data:image/png;base64,')"
-check "a section a submission" test "$(grep -c '<section id="s[0-9]*">' "$html")" -eq 20
+check "a section a submission" test "$(grep -c '<section id="s[0-9]*">' "$html")" -eq 21
 check "the strange name escaped" grep -qF "o&#39;brien, &quot;jo&quot; &lt;b&gt;&amp;amp;" "$html"
 check "the strange name unescaped" test "$(grep -cF '<b>&amp;' "$html")" -eq 0
-check "a picture of each image" test "$(grep -o '\(alt\|aria-label\)="submitted image"' "$html" | wc -l)" -eq 71
+check "a picture of each image" test "$(grep -o '\(alt\|aria-label\)="submitted image"' "$html" | wc -l)" -eq 75
 check "the crash's output" grep -q 'Segmentation fault' "$html"
 check "a temporary left in the output folder" \
     test -z "$(find "out dir" -mindepth 1 -maxdepth 1 ! -name report.html ! -name grades.csv ! -name work)"
 
 # The grader leaves no process behind and does not touch the students' folders.
 check_no_leftovers "after grading"
+check "a link a program planted at a log's path was followed" test "$(cat precious.txt)" = precious
 check "a student's folder was built in" test ! -e class/crashing/raytra
 check "progress lines" grep -q '^grading hanging (program): building... 5 scenes: 4 pass, 1 timeout$' stderr.txt
-check "no progress line for a file or a hidden folder" test "$(grep -c '^grading ' stderr.txt)" -eq 20
+check "no progress line for a file or a hidden folder" test "$(grep -c '^grading ' stderr.txt)" -eq 21
 
 # Tolerances from the command line reach imgdiff; a second run replaces the first.
 mkdir small

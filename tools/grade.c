@@ -149,7 +149,15 @@ static bool parse_size(const char *text, long long *bytes)
  * (reported) when it is not a valid one. */
 static bool parse_args(int argc, char **argv, GradeOptions *o)
 {
-    enum { OPT_OUT = 256, OPT_TIME, OPT_BUILD_TIME, OPT_MEMORY, OPT_THRESHOLD, OPT_ALLOW, OPT_SELF };
+    enum {
+        OPT_OUT = 256,
+        OPT_TIME,
+        OPT_BUILD_TIME,
+        OPT_MEMORY,
+        OPT_THRESHOLD,
+        OPT_ALLOW,
+        OPT_SELF
+    };
     static const struct option options[] = {
         {"out", required_argument, NULL, OPT_OUT},
         {"time-limit", required_argument, NULL, OPT_TIME},
@@ -189,8 +197,10 @@ static bool parse_args(int argc, char **argv, GradeOptions *o)
             break;
         case OPT_MEMORY:
             if (!parse_size(optarg, &o->memory_limit)) {
-                fprintf(stderr, "grade: --memory-limit takes a size such as 512M or 2G, or 0, "
-                                "got '%s'\n", optarg);
+                fprintf(stderr,
+                        "grade: --memory-limit takes a size such as 512M or 2G, or 0, "
+                        "got '%s'\n",
+                        optarg);
                 ok = false;
             }
             break;
@@ -391,17 +401,18 @@ static bool add_render(Grading *g, const char *top, char **words, int n, const c
     if (image[0] == '!') {
         /* An illustration: raytra's own picture (an option students do not have, a
          * robustness case), which the references keep but no student is graded on. */
-        char *more = grade_format("%s%s%.*s", g->illustrations != NULL ? g->illustrations : "",
-                                  g->illustrations != NULL ? ", " : "",
-                                  dot != NULL ? (int)(dot - image - 1) : (int)strlen(image + 1),
-                                  image + 1);
+        char *more =
+            grade_format("%s%s%.*s", g->illustrations != NULL ? g->illustrations : "",
+                         g->illustrations != NULL ? ", " : "",
+                         dot != NULL ? (int)(dot - image - 1) : (int)strlen(image + 1), image + 1);
         free(g->illustrations);
         g->illustrations = more;
         return true;
     }
     if (n < 2 || strchr(image, '/') != NULL || dot == NULL ||
         (strcmp(dot, ".png") != 0 && strcmp(dot, ".pfm") != 0 && strcmp(dot, ".exr") != 0)) {
-        fprintf(stderr, "grade: %s: expected IMAGE SCENE [options], IMAGE a .png, .pfm or .exr name\n",
+        fprintf(stderr,
+                "grade: %s: expected IMAGE SCENE [options], IMAGE a .png, .pfm or .exr name\n",
                 where);
         return false;
     }
@@ -807,10 +818,10 @@ int main(int argc, char **argv)
     /* Static: what grading gathers lives until the exit, which frees it. */
     static Grading g;
     g = (Grading){.submissions = o.submissions,
-                 .threshold = o.threshold,
-                 .allow = o.allow,
-                 .time_limit = o.time_limit,
-                 .build_time_limit = o.build_time_limit,
-                 .memory_limit = o.memory_limit};
+                  .threshold = o.threshold,
+                  .allow = o.allow,
+                  .time_limit = o.time_limit,
+                  .build_time_limit = o.build_time_limit,
+                  .memory_limit = o.memory_limit};
     return grade(&o, &g, argv[0]);
 }

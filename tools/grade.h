@@ -30,9 +30,8 @@ typedef enum { TALLY_PASS, TALLY_FAIL, TALLY_MISSING, TALLY_ERROR, TALLY_COUNT }
 static inline const char *verdict_name(Verdict v)
 {
     static const char *const names[VERDICT_COUNT] = {
-        "PASS",    "FAIL",    "WRONG SIZE", "LINK",          "UNREADABLE",
-        "MISSING", "ERROR",   "CRASHED",    "TIMEOUT",       "OUT OF MEMORY",
-        "BUILD FAILED",
+        "PASS",  "FAIL",    "WRONG SIZE", "LINK",          "UNREADABLE",   "MISSING",
+        "ERROR", "CRASHED", "TIMEOUT",    "OUT OF MEMORY", "BUILD FAILED",
     };
     return names[v];
 }

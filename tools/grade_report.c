@@ -223,7 +223,8 @@ static const char style[] =
     "border:1px solid var(--line);border-radius:4px;background:#000 no-repeat;"
     "background-size:100% 100%}\n.px{image-rendering:pixelated}\n"
     ".pic.none{display:flex;align-items:center;justify-content:center;padding:8px;"
-    "color:var(--muted);background:repeating-linear-gradient(45deg,#f6f8fa 0 8px,#eef1f4 8px 16px)}\n"
+    "color:var(--muted);background:repeating-linear-gradient(45deg,#f6f8fa 0 8px,#eef1f4 8px "
+    "16px)}\n"
     ".pic.black{background:#000}\nfigcaption{font-size:12px;color:var(--muted);margin-top:4px}\n"
     "table.figures{font-size:12.5px}\ntable.figures th{text-align:left;font-weight:500;"
     "color:var(--muted);padding:2px 10px 2px 0;white-space:nowrap}\n"
@@ -333,9 +334,9 @@ static void write_style(FILE *f, const Grading *g)
  * or FAIL; *tally gets its colour. */
 static const char *overall_verdict(const Grading *g, const Submission *s, Tally *tally)
 {
-    *tally = s->build_message[0] != '\0'                ? TALLY_ERROR
+    *tally = s->build_message[0] != '\0'               ? TALLY_ERROR
              : s->tally[TALLY_PASS] == g->render_count ? TALLY_PASS
-                                                        : TALLY_FAIL;
+                                                       : TALLY_FAIL;
     return *tally == TALLY_ERROR ? "BUILD FAILED" : *tally == TALLY_PASS ? "PASS" : "FAIL";
 }
 
@@ -407,9 +408,10 @@ static void write_figure(FILE *f, const char *path, const char *same, double wid
     if (path == NULL && same != NULL) {
         html_put(f, "<div class=\"pic %S%d\" role=\"img\" aria-label=\"%S\"></div>", same, k, alt);
     } else if (picture_read(path, &p)) {
-        fprintf(f, "<img class=\"pic%s\" width=\"%d\" height=\"%d\" style=\"width:%.1f%%\" "
-                   "alt=\"%s\" src=\"", p.width <= PIXELATED_WIDTH ? " px" : "", p.width, p.height,
-                100 * width, alt);
+        fprintf(f,
+                "<img class=\"pic%s\" width=\"%d\" height=\"%d\" style=\"width:%.1f%%\" "
+                "alt=\"%s\" src=\"",
+                p.width <= PIXELATED_WIDTH ? " px" : "", p.width, p.height, 100 * width, alt);
         write_picture(f, &p);
         fputs("\">", f);
     } else {
@@ -454,10 +456,10 @@ static void write_pictures(FILE *f, const SceneResult *res, int k)
     const char *heat = res->identical ? NULL : res->heat_show;
     fputs("<div class=\"pictures\">\n", f);
     write_figure(f, NULL, "ref", 1, k, "reference image", "Reference", NULL);
-    write_figure(f, image, res->identical ? "ref" : NULL, width, k, "submitted image",
-                 "Submission", "no image");
-    write_figure(f, heat, res->identical ? "black ref" : NULL, 1, k,
-                 "heat map of the differences", caption, "no comparison");
+    write_figure(f, image, res->identical ? "ref" : NULL, width, k, "submitted image", "Submission",
+                 "no image");
+    write_figure(f, heat, res->identical ? "black ref" : NULL, 1, k, "heat map of the differences",
+                 caption, "no comparison");
     if (res->compared)
         write_figures(f, &res->figures);
     fputs("</div>\n", f);
@@ -500,8 +502,10 @@ static void write_submission(FILE *f, const Grading *g, int i)
              "&uarr; summary</a></h2>\n",
              i + 1, s->name, s->program ? "program" : "images", tally_class[tally], verdict);
     if (s->build_message[0] != '\0') {
-        html_put(f, "<div class=\"broken\"><strong>The build failed:</strong> %s. No scene "
-                    "could be rendered.", s->build_message);
+        html_put(f,
+                 "<div class=\"broken\"><strong>The build failed:</strong> %s. No scene "
+                 "could be rendered.",
+                 s->build_message);
         write_log(f, "Build output (the last lines)", s->build_log_tail, true);
         fputs("</div>\n</section>\n", f);
         return;

@@ -252,7 +252,8 @@ static void compare_image(const Grading *g, const Submission *s, int k, const ch
     char *heat_show = grade_format("%s/%s.heat-show.png", s->work, r->name);
     if (thumb_make(compared, show, THUMB_SIDE, THUMB_MEAN, NULL, g->memory_limit))
         res->image_show = grade_copy(show);
-    if (res->compared && thumb_make(heat, heat_show, THUMB_SIDE, THUMB_PEAKS, NULL, g->memory_limit))
+    if (res->compared &&
+        thumb_make(heat, heat_show, THUMB_SIDE, THUMB_PEAKS, NULL, g->memory_limit))
         res->heat_show = grade_copy(heat_show);
     free(show);
     free(heat_show);
@@ -275,8 +276,8 @@ static bool handed_in(const Render *r, SceneResult *res, const char *path)
     } else if (S_ISLNK(st.st_mode)) {
         ssize_t n = readlink(path, target, sizeof target - 1);
         target[n > 0 ? n : 0] = '\0';
-        set_verdict(res, VERDICT_LINK, "%s is a symbolic link to %s: not an image handed in",
-                    name, target);
+        set_verdict(res, VERDICT_LINK, "%s is a symbolic link to %s: not an image handed in", name,
+                    target);
     } else if (!S_ISREG(st.st_mode)) {
         set_verdict(res, VERDICT_UNREADABLE, "%s is not a regular file (%s)", name,
                     S_ISFIFO(st.st_mode)  ? "a FIFO"

@@ -1,6 +1,7 @@
 /* grade_thumb.c: shrinking images into PNG thumbnails, and writing PFMs as PNGs, in a child. */
 #include "grade_thumb.h"
 
+#include <fcntl.h>
 #include <stdio.h>
 
 #include "grade.h"
@@ -70,11 +71,11 @@ static int thumb_job(void *arg)
         }
     /* A PNG's values are read as stored and go back as they were; a PFM's are linear
      * radiance, encoded as raytra encodes its PNGs, so that it can be compared with one. */
-    PngEncoding encoding =
-        kind == IMGFILE_PNG ? PNG_ENCODING_LINEAR : PNG_ENCODING_SRGB;
+    PngEncoding encoding = kind == IMGFILE_PNG ? PNG_ENCODING_LINEAR : PNG_ENCODING_SRGB;
     /* Written directly, without image_write's temporary and flush to the disk: the grader
      * uses the file only when this child reports success. */
-    FILE *f = fopen(job->to, "wb");
+    int fd = open(job->to, O_WRONLY | O_CREAT | O_TRUNC | O_NOFOLLOW | O_NONBLOCK, 0644);
+    FILE *f = fd >= 0 ? fdopen(fd, "wb") : NULL;
     bool ok = f != NULL && image_write_png(&dst, f, encoding, &err);
     if (f != NULL && fclose(f) != 0)
         ok = false;

@@ -439,7 +439,8 @@ static void encode_like_png(Image *img)
     for (long k = 0; k < 3L * img->width * img->height; k++) {
         double v = img->pixels[k];
         if (isfinite(v))
-            img->pixels[k] = (float)((int)(image_srgb_encode(fmin(fmax(v, 0), 1)) * 255 + 0.5) / 255.0);
+            img->pixels[k] =
+                (float)((int)(image_srgb_encode(fmin(fmax(v, 0), 1)) * 255 + 0.5) / 255.0);
     }
 }
 

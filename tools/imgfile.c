@@ -25,10 +25,11 @@ int imgfile_open(const char *path, Error *err)
         return -1;
     }
     if (S_ISLNK(st.st_mode) || !S_ISREG(st.st_mode)) {
-        error_set(err, "not a regular file (%s)", S_ISLNK(st.st_mode) ? "a symbolic link"
-                                                  : S_ISFIFO(st.st_mode) ? "a FIFO"
-                                                  : S_ISDIR(st.st_mode)  ? "a folder"
-                                                                         : "a special file");
+        error_set(err, "not a regular file (%s)",
+                  S_ISLNK(st.st_mode)    ? "a symbolic link"
+                  : S_ISFIFO(st.st_mode) ? "a FIFO"
+                  : S_ISDIR(st.st_mode)  ? "a folder"
+                                         : "a special file");
         return -1;
     }
     int fd = open(path, O_RDONLY | O_NONBLOCK | O_NOFOLLOW | O_CLOEXEC);
@@ -128,9 +129,10 @@ bool imgfile_header(const char *path, ImgFileKind *kind, int *width, int *height
         return false;
     }
     if (!image_size_ok(w, ht)) {
-        error_set(err, "its header gives a size of %ld x %ld pixels, beyond the %d x %d (and "
-                  "%ld pixels) imgdiff reads", w, ht, IMAGE_MAX_SIDE, IMAGE_MAX_SIDE,
-                  IMAGE_MAX_PIXELS);
+        error_set(err,
+                  "its header gives a size of %ld x %ld pixels, beyond the %d x %d (and "
+                  "%ld pixels) imgdiff reads",
+                  w, ht, IMAGE_MAX_SIDE, IMAGE_MAX_SIDE, IMAGE_MAX_PIXELS);
         return false;
     }
     *width = (int)w;
