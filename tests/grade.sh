@@ -311,25 +311,27 @@ check "interrupted: exit status $status, expected 130" test "$status" -eq 130
 check "interrupted: a report" test ! -e interrupted/report.html
 check_no_leftovers "interrupted"
 
-# A part given by its folder; students' programs get the positional words of renders.txt,
-# not raytra's options.
-mkdir -p part/references
-cp "$refs/spheres-three.png" part/references/
-echo 'spheres-three.png scenes/spheres-three.scn --convention lecture 7 -j 2 --max-depth 3 --two-sided --scale=1 last' \
-    >part/references/renders.txt
+# A part given by its folder; students' programs get the positional words of renders.txt
+# and the value of an option the course gives as a positional argument (1.4's MODE, for a
+# part numbered 1.4), not raytra's own options, nor their values.
+mkdir -p 1.4-test/references
+cp "$refs/spheres-three.png" 1.4-test/references/
+echo 'spheres-three.png scenes/spheres-three.scn --convention lecture 7 -j 2 --mode 1 --max-depth 3 --two-sided --scale=1 last' \
+    >1.4-test/references/renders.txt
 script_submission arguments <<EOF
 #!/bin/sh
-echo "\$#" "\$3" "\$4" >"$tmp/arguments.txt"
+echo "\$#" "\$3" "\$4" "\$5" >"$tmp/arguments.txt"
 exec "$raytra" "\$1" "\$2"
 EOF
 mkdir words
 mv class/arguments words/
 checks=$((checks + 1))
-"$grade" --out "out dir" ./part words >stdout.txt 2>stderr.txt || fail "grade ./part failed"
+"$grade" --out "out dir" ./1.4-test words >stdout.txt 2>stderr.txt || fail "grade ./1.4-test failed"
 check "a part given by its folder" grep -q '^arguments,spheres-three,PASS,' "$csv"
-check "the arguments a program gets" test "$(cat arguments.txt)" = "4 7 last"
+check "the arguments a program gets" test "$(cat arguments.txt)" = "5 7 1 last"
 check "the note on raytra's options" grep -qF \
     "grade: note: spheres-three.png: raytra's option --convention lecture is not given to students' programs" stderr.txt
+check "the note on an option with a value" grep -qF "raytra's option --max-depth 3 is not given" stderr.txt
 
 # Each part's own raytra, handed in as a student's program, passes every graded scene of
 # its part; the illustrations (!IMAGE in renders.txt) are not graded, and say so. A part
