@@ -107,6 +107,7 @@ copy_references '@SUM(1+1)'
 copy_references links
 ln -sf "$refs/spheres-three.png" class/links/spheres-three.png
 ln -sf ../correct/demo.png class/links/demo.png
+ln -s correct class/copycat
 copy_references fifo
 rm class/fifo/demo.png
 mkfifo class/fifo/demo.png
@@ -187,6 +188,7 @@ status=$?
         case $s in spheres-three) echo "bomb,$s,WRONG SIZE" ;; *) echo "bomb,$s,PASS" ;; esac
     done
     for s in $scenes; do echo "build-fails,$s,BUILD FAILED"; done
+    for s in $scenes; do echo "copycat,$s,LINK"; done
     for s in $scenes; do echo "correct,$s,PASS"; done
     for s in $scenes; do echo "correct-program,$s,PASS"; done
     for s in $scenes; do echo "crashing,$s,CRASHED"; done
@@ -244,6 +246,7 @@ check "a field starting with = or @ unquoted" test -z "$(grep -E '(^|,)[=@+]' "$
 has 'links,spheres-three,LINK,,,,,,,,,,'"spheres-three.png is a symbolic link to $refs/spheres-three.png: not an image handed in,"
 has 'links,demo,LINK,,,,,,,,,,demo.png is a symbolic link to ../correct/demo.png: not an image handed in,'
 has 'link-program,demo,LINK,,,,,,,,,,'"demo.png is a symbolic link to $refs/demo.png: not an image handed in,"
+has "copycat,demo,LINK,,,,,,,,,,the submission's folder is a symbolic link to correct,"
 has 'fifo,demo,UNREADABLE,,,,,,,,,,demo.png is not a regular file (a FIFO),'
 has 'fifo-program,demo,UNREADABLE,,,,,,,,,,demo.png is not a regular file (a FIFO),'
 has 'bomb,spheres-three,WRONG SIZE,,,,,,,,,,"the image is 8192 x 8192 pixels, the reference 320 x 240",'
@@ -269,7 +272,7 @@ check "a link or source outside the page" \
     test -z "$(grep -o '\(src\|href\)="[^"]*' "$html" | grep -v '="\(data:image/png;base64,\|#\)')"
 check "a url() outside the page" \
     test -z "$(grep -o 'url([^)]\{0,26\}' "$html" | grep -v '^url(data:image/png;base64,')"
-check "a section a submission" test "$(grep -c '<section id="s[0-9]*">' "$html")" -eq 21
+check "a section a submission" test "$(grep -c '<section id="s[0-9]*">' "$html")" -eq 22
 check "the strange name escaped" grep -qF "o&#39;brien, &quot;jo&quot; &lt;b&gt;&amp;amp;" "$html"
 check "the strange name unescaped" test "$(grep -cF '<b>&amp;' "$html")" -eq 0
 check "a picture of each image" test "$(grep -o '\(alt\|aria-label\)="submitted image"' "$html" | wc -l)" -eq 75
@@ -282,7 +285,7 @@ check_no_leftovers "after grading"
 check "a link a program planted at a log's path was followed" test "$(cat precious.txt)" = precious
 check "a student's folder was built in" test ! -e class/crashing/raytra
 check "progress lines" grep -q '^grading hanging (program): building... 5 scenes: 4 pass, 1 timeout$' stderr.txt
-check "no progress line for a file or a hidden folder" test "$(grep -c '^grading ' stderr.txt)" -eq 21
+check "no progress line for a file or a hidden folder" test "$(grep -c '^grading ' stderr.txt)" -eq 22
 
 # Tolerances from the command line reach imgdiff; a second run replaces the first.
 mkdir small

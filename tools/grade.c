@@ -661,6 +661,10 @@ static bool list_submissions(Grading *g, bool self)
         s->path = path;
         s->work = grade_format("%s/%0*d-%s", g->work, digits, g->sub_count, safe);
         s->program = has_makefile(s->path);
+        char target[PATH_MAX];
+        ssize_t n = readlink(s->path, target, sizeof target - 1);
+        if (n >= 0)
+            s->link = grade_format("%.*s", (int)n, target);
         free(safe);
     }
     free_names(names, count);

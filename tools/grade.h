@@ -92,6 +92,7 @@ typedef struct {
     char *path;              /* the folder */
     char *work;              /* its work folder, named safely: OUT/work/03-alice */
     bool program;            /* it has a Makefile: built and run rather than read */
+    char *link;              /* the folder is a symbolic link to this: not graded; or NULL */
     char build_message[512]; /* why the build failed; empty when it did not */
     char *build_log_tail;    /* the end of make's output, or NULL */
     SceneResult *results;    /* one a render */

@@ -439,7 +439,7 @@ bool submission_grade(const Grading *g, Submission *s)
     if (!make_folder(s->work))
         return false;
     char *program = NULL;
-    if (s->program) {
+    if (s->program && s->link == NULL) {
         char *images = grade_format("%s/images", s->work);
         char *scratch = grade_format("%s/run", s->work);
         bool ok = make_folder(images) && make_folder(scratch);
@@ -450,7 +450,11 @@ bool submission_grade(const Grading *g, Submission *s)
         program = build(g, s);
     }
     for (int k = 0; k < g->render_count && !stop_requested(); k++) {
-        if (!s->program)
+        /* A folder that is a link (to a classmate's) is not a submission of its own. */
+        if (s->link != NULL)
+            set_verdict(&s->results[k], VERDICT_LINK,
+                        "the submission's folder is a symbolic link to %s", s->link);
+        else if (!s->program)
             grade_image(g, s, k);
         else if (program != NULL)
             run_scene(g, s, k, program);
