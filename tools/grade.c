@@ -48,7 +48,7 @@ static void print_help(FILE *f)
             "reference images and the scenes they were rendered from.\n"
             "\n"
             "SUBMISSIONS holds a folder a student, either\n"
-            "  - images named as the references (spheres-three.png; a .pfm is accepted too),\n"
+            "  - images named as the references (spheres-three.png; .pfm, .exr accepted too),\n"
             "  - or sources with a Makefile: make, run in a copy, must build an executable\n"
             "    raytra beside it, which is run as  raytra SCENE OUTPUT [arguments]  for\n"
             "    every scene, in a scratch folder, under the limits below.\n"
