@@ -1,4 +1,5 @@
 /* imgdiff.c: compares two images, PNG or PFM, and tells whether they match. */
+#include <getopt.h>
 #include <math.h>
 #include <stdbool.h>
 #include <stdio.h>
@@ -114,13 +115,11 @@ static bool parse_number(const char *text, double *value)
 /* Stores the value of option --name; false (reported) when it is not a valid one. */
 static bool set_value(DiffOptions *o, const char *name, const char *value)
 {
-    if (strcmp(name, "diff") == 0) {
-        o->diff_path = value;
-        return true;
-    }
     double v = 0;
     bool number = parse_number(value, &v);
-    if (strcmp(name, "threshold") == 0 && number && v >= 0)
+    if (strcmp(name, "diff") == 0)
+        o->diff_path = value;
+    else if (strcmp(name, "threshold") == 0 && number && v >= 0)
         o->threshold = v;
     else if (strcmp(name, "allow") == 0 && number && v >= 0 && v <= 1)
         o->allow = v;
@@ -137,61 +136,43 @@ static bool set_value(DiffOptions *o, const char *name, const char *value)
     return true;
 }
 
-/* Handles the option argv[*i], taking its value from the next word when it needs one. */
-static bool parse_option(DiffOptions *o, int argc, char **argv, int *i)
-{
-    const char *arg = argv[*i];
-    if (strcmp(arg, "-q") == 0 || strcmp(arg, "--quiet") == 0) {
-        o->quiet = true;
-        return true;
-    }
-    if (strcmp(arg, "-h") == 0 || strcmp(arg, "--help") == 0) {
-        o->help = true;
-        return true;
-    }
-    if (strcmp(arg, "--machine") == 0) {
-        o->machine = true;
-        return true;
-    }
-    /* The other options take a value: --name VALUE or --name=VALUE. */
-    static const char *const with_value[] = {"threshold", "allow", "scale", "diff"};
-    const char *eq = strchr(arg, '=');
-    size_t len = eq != NULL ? (size_t)(eq - arg) : strlen(arg);
-    for (size_t k = 0; k < sizeof with_value / sizeof with_value[0]; k++) {
-        const char *name = with_value[k];
-        if (strncmp(arg, "--", 2) != 0 || len != 2 + strlen(name) ||
-            strncmp(arg + 2, name, len - 2) != 0)
-            continue;
-        if (eq != NULL)
-            return set_value(o, name, eq + 1);
-        if (*i + 1 >= argc) {
-            fprintf(stderr, "imgdiff: --%s needs a value\n", name);
-            return false;
-        }
-        return set_value(o, name, argv[++*i]);
-    }
-    fprintf(stderr, "imgdiff: unknown option '%s' (imgdiff --help lists them)\n", arg);
-    return false;
-}
-
-/* Reads the command line into o; false (reported) when it is not a valid one. */
+/* Reads the command line into o, with getopt_long (options may follow the images); false
+ * (reported) when it is not a valid one. */
 static bool parse_args(int argc, char **argv, DiffOptions *o)
 {
+    static const struct option options[] = {
+        {"threshold", required_argument, NULL, 't'},
+        {"allow", required_argument, NULL, 'a'},
+        {"scale", required_argument, NULL, 's'},
+        {"diff", required_argument, NULL, 'd'},
+        {"machine", no_argument, NULL, 'm'},
+        {"quiet", no_argument, NULL, 'q'},
+        {"help", no_argument, NULL, 'h'},
+        {0},
+    };
     *o = (DiffOptions){.threshold = IMGDIFF_THRESHOLD, .allow = IMGDIFF_ALLOW};
-    bool only_paths = false;
-    for (int i = 1; i < argc; i++) {
-        const char *arg = argv[i];
-        if (!only_paths && strcmp(arg, "--") == 0) {
-            only_paths = true;
-        } else if (!only_paths && arg[0] == '-' && arg[1] != '\0') {
-            if (!parse_option(o, argc, argv, &i))
-                return false;
-        } else if (o->path_count == 2) {
-            fprintf(stderr, "imgdiff: unexpected argument '%s': give two images\n", arg);
+    opterr = 0;
+    int c, index = 0;
+    while ((c = getopt_long(argc, argv, ":qh", options, &index)) != -1) {
+        if (c == 'q' || c == 'h' || c == 'm') {
+            *(c == 'q' ? &o->quiet : c == 'h' ? &o->help : &o->machine) = true;
+        } else if (c == ':') {
+            fprintf(stderr, "imgdiff: %s needs a value\n", argv[optind - 1]);
             return false;
-        } else {
-            o->paths[o->path_count++] = arg;
+        } else if (c == '?') {
+            fprintf(stderr, "imgdiff: unknown option '%s' (imgdiff --help lists them)\n",
+                    argv[optind - 1]);
+            return false;
+        } else if (!set_value(o, options[index].name, optarg)) {
+            return false;
         }
+    }
+    for (; optind < argc; optind++) {
+        if (o->path_count == 2) {
+            fprintf(stderr, "imgdiff: unexpected argument '%s': give two images\n", argv[optind]);
+            return false;
+        }
+        o->paths[o->path_count++] = argv[optind];
     }
     if (!o->help && o->path_count < 2) {
         fprintf(stderr, "imgdiff: give two images to compare (imgdiff --help shows how)\n");
