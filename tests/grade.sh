@@ -71,9 +71,11 @@ c_submission() {
 }
 
 # Prints the pids of the processes the class's programs must not leave running: their
-# command lines are "sleep", NUL, "3141" or "2718", NUL.
+# command lines are "sleep", NUL, "$nap1" or "$nap2", NUL; numbers of this run's own, so
+# that a test running beside it (another checkout's) is not taken for a leftover of it.
+nap1=3141$$ nap2=2718$$
 leftovers() {
-    grep -lasx -e 'sleep.3141.' -e 'sleep.2718.' /proc/[0-9]*/cmdline | sed 's|/proc/\([0-9]*\)/.*|\1|'
+    grep -lasx -e "sleep.$nap1." -e "sleep.$nap2." /proc/[0-9]*/cmdline | sed 's|/proc/\([0-9]*\)/.*|\1|'
 }
 
 # Checks that no such process runs, ending any that does ($1 names the moment).
@@ -127,8 +129,8 @@ EOF
 script_submission hanging <<EOF
 #!/bin/sh
 case \$1 in
-*demo*) sleep 3141 & exec sleep 3141 ;;
-*spheres-three*) setsid sleep 2718 >/dev/null 2>&1 & ;;
+*demo*) sleep $nap1 & exec sleep $nap1 ;;
+*spheres-three*) setsid sleep $nap2 >/dev/null 2>&1 & ;;
 esac
 exec "$raytra" "\$@"
 EOF
