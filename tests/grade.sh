@@ -16,7 +16,7 @@ top=$(cd "$(dirname "$0")/.." && pwd)
 refs=$top/milestones/1.1-spheres-red/references
 scenes="spheres-three spheres-behind-camera camera-straight-down spheres-grid-wide demo"
 tmp=$(mktemp -d)
-trap 'rm -rf "$tmp"' EXIT
+trap '[ -n "${KEEP:-}" ] || rm -rf "$tmp"' EXIT
 trap 'exit 130' INT TERM
 cd "$tmp" || exit 2
 
@@ -71,9 +71,11 @@ c_submission() {
 }
 
 # Prints the pids of the processes the class's programs must not leave running: their
-# command lines are "sleep", NUL, "3141" or "2718", NUL.
+# command lines are "sleep", NUL, "$nap1" or "$nap2", NUL; numbers of this run's own, so
+# that a test running beside it (another checkout's) is not taken for a leftover of it.
+nap1=3141$$ nap2=2718$$
 leftovers() {
-    grep -lasx -e 'sleep.3141.' -e 'sleep.2718.' /proc/[0-9]*/cmdline | sed 's|/proc/\([0-9]*\)/.*|\1|'
+    grep -lasx -e "sleep.$nap1." -e "sleep.$nap2." /proc/[0-9]*/cmdline | sed 's|/proc/\([0-9]*\)/.*|\1|'
 }
 
 # Checks that no such process runs, ending any that does ($1 names the moment).
@@ -99,6 +101,23 @@ copy_references unreadable
 echo "not an image" >class/unreadable/spheres-three.png
 strange="o'brien, \"jo\" <b>&amp;"
 copy_references "$strange"
+# Names a spreadsheet would run as formulas.
+copy_references '=HYPERLINK("x","y")'
+copy_references '@SUM(1+1)'
+# Links are not images handed in: to a reference, to a classmate's; nor is a FIFO; and a
+# PNG whose header says 8192 x 8192 (of 16 bits) is told apart without being decoded.
+copy_references links
+ln -sf "$refs/spheres-three.png" class/links/spheres-three.png
+ln -sf ../correct/demo.png class/links/demo.png
+ln -s correct class/copycat
+copy_references fifo
+rm class/fifo/demo.png
+mkfifo class/fifo/demo.png
+copy_references bomb
+{
+    printf '\211PNG\r\n\032\n\000\000\000\015IHDR\000\000\040\000\000\000\040\000'
+    printf '\020\002\000\000\000\000\000\000\000'
+} >class/bomb/spheres-three.png
 
 # Programs: correct (our raytra behind a script), one that hangs on the demo scene (and
 # forks, and leaves a daemon after another scene), one that crashes, one that asks for
@@ -110,11 +129,27 @@ EOF
 script_submission hanging <<EOF
 #!/bin/sh
 case \$1 in
-*demo*) sleep 3141 & exec sleep 3141 ;;
-*spheres-three*) setsid sleep 2718 >/dev/null 2>&1 & ;;
+*demo*) sleep $nap1 & exec sleep $nap1 ;;
+*spheres-three*) setsid sleep $nap2 >/dev/null 2>&1 & ;;
 esac
 exec "$raytra" "\$@"
 EOF
+script_submission fifo-program <<EOF
+#!/bin/sh
+case \$1 in *demo*) exec mkfifo "\$2" ;; esac
+exec "$raytra" "\$@"
+EOF
+script_submission link-program <<EOF
+#!/bin/sh
+case \$1 in *demo*) exec ln -s "$refs/demo.png" "\$2" ;; esac
+exec "$raytra" "\$@"
+EOF
+script_submission planter <<EOF
+#!/bin/sh
+case \$1 in *spheres-three*) ln -s "$tmp/precious.txt" "\$(dirname "\$2")/../spheres-behind-camera.log" ;; esac
+exec "$raytra" "\$@"
+EOF
+echo "precious" >precious.txt
 c_submission crashing <<'EOF'
 #include <signal.h>
 int main(void) { raise(SIGSEGV); return 0; }
@@ -151,18 +186,37 @@ status=$?
 # The verdicts, exactly; the strange name is quoted, so checked apart.
 {
     echo "submission,scene,verdict"
+    for s in $scenes; do
+        case $s in spheres-three) echo "bomb,$s,WRONG SIZE" ;; *) echo "bomb,$s,PASS" ;; esac
+    done
     for s in $scenes; do echo "build-fails,$s,BUILD FAILED"; done
+    for s in $scenes; do echo "copycat,$s,LINK"; done
     for s in $scenes; do echo "correct,$s,PASS"; done
     for s in $scenes; do echo "correct-program,$s,PASS"; done
     for s in $scenes; do echo "crashing,$s,CRASHED"; done
+    for s in $scenes; do
+        case $s in demo) echo "fifo,$s,UNREADABLE" ;; *) echo "fifo,$s,PASS" ;; esac
+    done
+    for s in $scenes; do
+        case $s in demo) echo "fifo-program,$s,UNREADABLE" ;; *) echo "fifo-program,$s,PASS" ;; esac
+    done
     for s in $scenes; do echo "greedy,$s,OUT OF MEMORY"; done
     for s in $scenes; do
         case $s in demo) echo "hanging,$s,TIMEOUT" ;; *) echo "hanging,$s,PASS" ;; esac
     done
     for s in $scenes; do
+        case $s in demo) echo "link-program,$s,LINK" ;; *) echo "link-program,$s,PASS" ;; esac
+    done
+    for s in $scenes; do
+        case $s in demo | spheres-three) echo "links,$s,LINK" ;; *) echo "links,$s,PASS" ;; esac
+    done
+    for s in $scenes; do
         case $s in demo) echo "missing-one,$s,MISSING" ;; *) echo "missing-one,$s,PASS" ;; esac
     done
     for s in $scenes; do echo "pfm,$s,PASS"; done
+    for s in $scenes; do
+        case $s in spheres-behind-camera) echo "planter,$s,ERROR" ;; *) echo "planter,$s,PASS" ;; esac
+    done
     for s in $scenes; do
         case $s in demo) echo "quitter,$s,ERROR" ;; *) echo "quitter,$s,MISSING" ;; esac
     done
@@ -184,7 +238,20 @@ check "the CSV's header" grep -qx 'submission,scene,verdict,max_diff_r,max_diff_
 check "the strange name's rows, quoted" \
     test "$(grep -c "^\"o'brien, \"\"jo\"\" <b>&amp;\",[a-z-]*,PASS," "$csv")" -eq 5
 
+check "a formula's name neutralised" \
+    test "$(grep -c '^"'"'"'=HYPERLINK(""x"",""y"")",[a-z-]*,PASS,' "$csv")" -eq 5
+check "a name starting with @ neutralised" \
+    test "$(grep -c '^"'"'"'@SUM(1+1)",[a-z-]*,PASS,' "$csv")" -eq 5
+check "a field starting with = or @ unquoted" test -z "$(grep -E '(^|,)[=@+]' "$csv")"
+
 # The reasons and the figures.
+has 'links,spheres-three,LINK,,,,,,,,,,'"spheres-three.png is a symbolic link to $refs/spheres-three.png: not an image handed in,"
+has 'links,demo,LINK,,,,,,,,,,demo.png is a symbolic link to ../correct/demo.png: not an image handed in,'
+has 'link-program,demo,LINK,,,,,,,,,,'"demo.png is a symbolic link to $refs/demo.png: not an image handed in,"
+has "copycat,demo,LINK,,,,,,,,,,the submission's folder is a symbolic link to correct,"
+has 'fifo,demo,UNREADABLE,,,,,,,,,,demo.png is not a regular file (a FIFO),'
+has 'fifo-program,demo,UNREADABLE,,,,,,,,,,demo.png is not a regular file (a FIFO),'
+has 'bomb,spheres-three,WRONG SIZE,,,,,,,,,,"the image is 8192 x 8192 pixels, the reference 320 x 240",'
 has 'wrong-size,spheres-three,WRONG SIZE,,,,,,,,,,"the image is 160 x 120 pixels, the reference 320 x 240",'
 has 'unreadable,spheres-three,UNREADABLE,,,,,,,,,,"the file cannot be read as an image: not a PNG, PFM or OpenEXR image",'
 has 'hanging,demo,TIMEOUT,,,,,,,,,,did not finish within 1 s,'
@@ -192,7 +259,7 @@ has 'crashing,demo,CRASHED,,,,,,,,,,killed by signal 11 (Segmentation fault),'
 has 'greedy,demo,OUT OF MEMORY,,,,,,,,,,ran out of memory (exit status 1; memory limit 2 GiB),'
 has 'quitter,demo,ERROR,,,,,,,,,,ended with exit status 3 and wrote no image,'
 has 'quitter,spheres-three,MISSING,,,,,,,,,,ended normally but wrote no spheres-three.png,'
-has 'missing-one,demo,MISSING,,,,,,,,,,no demo.png (nor demo.pfm) in the submission,'
+has 'missing-one,demo,MISSING,,,,,,,,,,"no demo.png, .pfm or .exr in the submission",'
 has 'build-fails,demo,BUILD FAILED,,,,,,,,,,make failed (exit status 2),'
 # The moved sphere's figures, in their form: their last digits may change with the compiler.
 number='[0-9.e-]+'
@@ -207,19 +274,20 @@ check "a link or source outside the page" \
     test -z "$(grep -o '\(src\|href\)="[^"]*' "$html" | grep -v '="\(data:image/png;base64,\|#\)')"
 check "a url() outside the page" \
     test -z "$(grep -o 'url([^)]\{0,26\}' "$html" | grep -v '^url(data:image/png;base64,')"
-check "a section a submission" test "$(grep -c '<section id="s[0-9]*">' "$html")" -eq 13
+check "a section a submission" test "$(grep -c '<section id="s[0-9]*">' "$html")" -eq 22
 check "the strange name escaped" grep -qF "o&#39;brien, &quot;jo&quot; &lt;b&gt;&amp;amp;" "$html"
 check "the strange name unescaped" test "$(grep -cF '<b>&amp;' "$html")" -eq 0
-check "a picture of each image" test "$(grep -o '\(alt\|aria-label\)="submitted image"' "$html" | wc -l)" -eq 42
+check "a picture of each image" test "$(grep -o '\(alt\|aria-label\)="submitted image"' "$html" | wc -l)" -eq 75
 check "the crash's output" grep -q 'Segmentation fault' "$html"
 check "a temporary left in the output folder" \
     test -z "$(find "out dir" -mindepth 1 -maxdepth 1 ! -name report.html ! -name grades.csv ! -name work)"
 
 # The grader leaves no process behind and does not touch the students' folders.
 check_no_leftovers "after grading"
+check "a link a program planted at a log's path was followed" test "$(cat precious.txt)" = precious
 check "a student's folder was built in" test ! -e class/crashing/raytra
 check "progress lines" grep -q '^grading hanging (program): building... 5 scenes: 4 pass, 1 timeout$' stderr.txt
-check "no progress line for a file or a hidden folder" test "$(grep -c '^grading ' stderr.txt)" -eq 13
+check "no progress line for a file or a hidden folder" test "$(grep -c '^grading ' stderr.txt)" -eq 22
 
 # Tolerances from the command line reach imgdiff; a second run replaces the first.
 mkdir small
@@ -248,25 +316,78 @@ check "interrupted: exit status $status, expected 130" test "$status" -eq 130
 check "interrupted: a report" test ! -e interrupted/report.html
 check_no_leftovers "interrupted"
 
-# A part given by its folder; students' programs get the positional words of renders.txt,
-# not raytra's options.
-mkdir -p part/references
-cp "$refs/spheres-three.png" part/references/
-echo 'spheres-three.png scenes/spheres-three.scn --convention lecture 7 -j 2 --scale=1 last' \
-    >part/references/renders.txt
+# A part given by its folder; students' programs get the positional words of renders.txt
+# and the value of an option the course gives as a positional argument (1.4's MODE, for a
+# part numbered 1.4), not raytra's own options, nor their values.
+mkdir -p 1.4-test/references
+cp "$refs/spheres-three.png" 1.4-test/references/
+echo 'spheres-three.png scenes/spheres-three.scn --convention lecture 7 -j 2 --mode 1 --max-depth 3 --two-sided --scale=1 last' \
+    >1.4-test/references/renders.txt
 script_submission arguments <<EOF
 #!/bin/sh
-echo "\$#" "\$3" "\$4" >"$tmp/arguments.txt"
+echo "\$#" "\$3" "\$4" "\$5" >"$tmp/arguments.txt"
 exec "$raytra" "\$1" "\$2"
 EOF
 mkdir words
 mv class/arguments words/
 checks=$((checks + 1))
-"$grade" --out "out dir" ./part words >stdout.txt 2>stderr.txt || fail "grade ./part failed"
+"$grade" --out "out dir" ./1.4-test words >stdout.txt 2>stderr.txt || fail "grade ./1.4-test failed"
 check "a part given by its folder" grep -q '^arguments,spheres-three,PASS,' "$csv"
-check "the arguments a program gets" test "$(cat arguments.txt)" = "4 7 last"
+check "the arguments a program gets" test "$(cat arguments.txt)" = "5 7 1 last"
 check "the note on raytra's options" grep -qF \
     "grade: note: spheres-three.png: raytra's option --convention lecture is not given to students' programs" stderr.txt
+check "the note on an option with a value" grep -qF "raytra's option --max-depth 3 is not given" stderr.txt
+
+# Each part's own raytra, handed in as a student's program, passes every graded scene of
+# its part; the illustrations (!IMAGE in renders.txt) are not graded, and say so. A part
+# whose raytra is not built (make -C tools grade-test builds them all) is skipped, told.
+for dir in "$top"/milestones/*/; do
+    part=$(basename "$dir")
+    [ -f "$dir/references/renders.txt" ] || continue
+    if [ ! -x "$dir/raytra" ]; then
+        echo "grade.sh: skipping part $part: $dir/raytra is not built"
+        continue
+    fi
+    rm -rf own && mkdir own
+    script_submission "$part" <<EOF
+#!/bin/sh
+exec "$dir/raytra" "\$@"
+EOF
+    mv "class/$part" own/
+    graded=$(grep -c '^[^#![:space:]]' "$dir/references/renders.txt")
+    illustrations=$(grep -c '^!' "$dir/references/renders.txt")
+    checks=$((checks + 1))
+    "$grade" --out "own-out" "$part" own >stdout.txt 2>stderr.txt || fail "grade $part own failed"
+    check "$part's own raytra passes its $graded graded scenes" \
+        test "$(grep -c "^$part,[a-z0-9-]*,PASS," own-out/grades.csv)" -eq "$graded"
+    check "$part: only graded scenes in the CSV" test "$(($(wc -l <own-out/grades.csv) - 1))" -eq "$graded"
+    [ "$illustrations" -eq 0 ] ||
+        check "$part: the illustrations named" grep -q '^grade: not graded (illustrations): ' stderr.txt
+    [ "$illustrations" -eq 0 ] ||
+        check "$part: the illustrations in the report" grep -q 'Not graded (illustrations): ' own-out/report.html
+done
+
+# A student checks their own program: --self grades one folder, prints each verdict and
+# the heat map of each scene that fails, and exits 1 unless every scene passes.
+script_submission self-check <<EOF
+#!/bin/sh
+exec "$raytra" "\$@"
+EOF
+checks=$((checks + 1))
+"$grade" --self -q --out self-out 1.1 class/self-check >stdout.txt 2>stderr.txt ||
+    fail "grade --self of a correct program failed"
+check "--self: a line a scene" test "$(grep -c '^PASS  *[a-z-]*: identical to the reference$' stdout.txt)" -eq 5
+check "--self: the summary" grep -q '^5 of 5 scenes pass; the report: self-out/report.html$' stdout.txt
+script_submission self-wrong <<EOF
+#!/bin/sh
+case \$1 in *spheres-three*) exec "$raytra" "$tmp/moved.scn" "\$2" ;; esac
+exec "$raytra" "\$@"
+EOF
+checks=$((checks + 1))
+"$grade" --self -q --out self-out 1.1 class/self-wrong >stdout.txt 2>stderr.txt
+status=$?
+[ "$status" -eq 1 ] || fail "grade --self of a failing program: exit status $status, expected 1"
+check "--self: the failure and its heat map" grep -qx ' *heat map: .*/self-out/work/1-self/spheres-three.heat.png' stdout.txt
 
 # The command line, and troubles found before any grading.
 refuse() {

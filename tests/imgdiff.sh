@@ -36,6 +36,12 @@ f32() {
     0.5078125) printf '\000\000\002\077' ;; # 0.5 + 2^-7
     0.75) printf '\000\000\100\077' ;;
     1) printf '\000\000\200\077' ;;
+    0.21484375) printf '\000\000\134\076' ;;
+    0.5234375) printf '\000\000\006\077' ;;
+    7) printf '\000\000\340\100' ;;
+    -1) printf '\000\000\200\277' ;;
+    nan) printf '\000\000\300\177' ;;
+    inf) printf '\000\000\200\177' ;;
     *) echo "imgdiff.sh: no bytes for $1" >&2; exit 2 ;;
     esac
 }
@@ -182,14 +188,22 @@ run 1 --diff heat.png a.pfm two.pfm
 has "heat map: black = 0, white = 0.5 (127.5/255), written to heat.png"
 pfm expected.pfm 4 3 0,0,0 2,1=1,1,1 0,0=1,0,0
 run 0 --threshold 0 --allow 0 heat.png expected.pfm
-has "note: comparing a PNG's stored values with a PFM's linear ones"
+has "note: expected.pfm holds linear values: compared as raytra would write them to a PNG (clamped to [0, 1], sRGB, 8 bits)"
 has "PASS: the images are identical"
-# With --scale 1, 0.5 is red and 0.25 purple (0.5, 0, 0.75): stored as 128/255 and
-# 191/255, within 1/255 of them.
-run 1 --diff heat2.png --scale 1 a.pfm two.pfm
-has "heat map: black = 0, white = 1 (255.0/255), written to heat2.png"
+# With --scale 1, 0.5 is red and 0.25 purple (0.5, 0, 0.75), exactly in a PFM.
+run 1 --diff heat2.pfm --scale 1 a.pfm two.pfm
+has "heat map: black = 0, white = 1 (255.0/255), written to heat2.pfm"
 pfm expected2.pfm 4 3 0,0,0 2,1=1,0,0 0,0=0.5,0,0.75
-run 0 --threshold 1/255 --allow 0 heat2.png expected2.pfm
+run 0 --threshold 0 --allow 0 heat2.pfm expected2.pfm
+# A PNG against a linear image: the linear one is clamped, sRGB-encoded and rounded to
+# 8 bits first. The same map as a PNG stores red (1, 0, 0) and purple as 128/255 and
+# 191/255; 7 and -1 clamp to 1 and 0; 0.21484375 encodes to 127.7/255 and 0.5234375 to
+# 191.4/255.
+run 1 --diff heat2.png --scale 1 a.pfm two.pfm
+pfm encoded.pfm 4 3 0,0,0 2,1=7,-1,0 0,0=0.21484375,0,0.5234375
+run 0 --threshold 0 --allow 0 heat2.png encoded.pfm
+has "note: encoded.pfm holds linear values: compared as raytra would write them to a PNG (clamped to [0, 1], sRGB, 8 bits)"
+has "PASS: the images are identical"
 # Identical images make an all-black map, and a PNG compared with itself is identical.
 run 0 --diff heat3.png a.pfm same.pfm
 run 0 --threshold 0 --allow 0 heat3.png black.pfm
@@ -202,6 +216,48 @@ run 2 --diff nowhere/heat.png a.pfm two.pfm
 has "imgdiff: cannot write 'nowhere/heat.png': folder 'nowhere' does not exist"
 run 2 --diff a.pfm a.pfm two.pfm
 says "would overwrite"
+# However the input is spelt: ./, an absolute path, d/../, a symbolic or a hard link.
+mkdir d
+cp a.pfm keep.pfm
+ln -s a.pfm soft.pfm
+ln a.pfm hard.pfm
+for spelling in ./a.pfm "$tmp/a.pfm" d/../a.pfm soft.pfm hard.pfm; do
+    run 2 --diff "$spelling" a.pfm two.pfm
+    says "would overwrite a.pfm, an image being compared"
+done
+run 0 --threshold 0 --allow 0 a.pfm keep.pfm
+
+# Non-finite pixels are never equal, not even to the same NaN or infinity.
+pfm nan.pfm 4 3 $grey 1,1=nan,0.5,1
+pfm inf.pfm 4 3 $grey 3,2=0.25,inf,1
+for f in nan.pfm inf.pfm; do
+    command="imgdiff $f $f"
+    checks=$((checks + 1))
+    "$imgdiff" "$f" "$f" >out.txt 2>err.txt
+    status=$?
+    [ "$status" -ne 0 ] || fail "two images with a non-finite pixel called a match"
+    [ "$status" -ne 1 ] || grep -qxF "FAIL: 1 pixel is not finite (NaN or infinite)" out.txt ||
+        fail "no line on the non-finite pixel"
+done
+
+# Nothing blocks on a FIFO, nor decodes an image whose header already says the sizes
+# differ or that it is too large: a PNG header of 8192 x 8192 16-bit pixels, no pixels.
+mkfifo fifo.png
+run 2 a.pfm fifo.png
+has "imgdiff: cannot read 'fifo.png': not a regular file (a FIFO)"
+png_header() {
+    printf '\211PNG\r\n\032\n\000\000\000\015IHDR'
+    printf "$1"
+    printf '\020\002\000\000\000\000\000\000\000'
+}
+png_header '\000\000\040\000\000\000\040\000' >bomb.png
+run 2 a.pfm bomb.png
+has "imgdiff: sizes differ: a.pfm is 4 x 3, bomb.png is 8192 x 8192"
+run 2 --machine a.pfm bomb.png
+has "sizes 4 3 8192 8192"
+png_header '\000\001\000\000\000\000\000\001' >wide.png
+run 2 wide.png wide.png
+says "its header gives a size of 65536 x 1 pixels, beyond"
 
 # The command line.
 run 0 --help

@@ -7,6 +7,8 @@
 # one image a line:   IMAGE  SCENE  [arguments...]
 # with SCENE relative to the top of the repository; the arguments (a part's own
 # positional arguments, then raytra options) follow SCENE and OUTPUT on the command line.
+# An IMAGE written !IMAGE is an illustration, which tools/grade does not grade; it is a
+# reference all the same.
 #   check   renders each scene with 2 threads and compares it with IMAGE, using
 #           imgdiff's default tolerances; renders it again with 1 thread and checks
 #           that the two files are byte for byte the same.
@@ -26,6 +28,7 @@ failed=0
 count=0
 while read -r image scene options; do
     case $image in '' | '#'*) continue ;; esac
+    image=${image#!}
     count=$((count + 1))
     two=$tmp/two-$image
     one=$tmp/one-$image

@@ -4,7 +4,8 @@
 # Usage: tools/deps.sh [build|test|bench]
 #   build  needs a C compiler, make, pkg-config, and the headers of libpng and of
 #          OpenEXR 3 (its C API, openexr.h);
-#   test   needs, in addition, the Check unit-test framework;
+#   test   needs, in addition, the Check unit-test framework, and Chromium, in which
+#          tests/grade-report.sh opens the grading report (headless);
 #   bench  needs, in addition to build, Embree 3 for the benchmark's baseline.
 #
 # On Debian and Ubuntu it installs what is missing with apt-get when it may
@@ -31,6 +32,9 @@ if [ $need_check = yes ] && ! pkg-config --exists check 2>/dev/null; then
 fi
 if [ $need_embree = yes ] && [ ! -f /usr/include/embree3/rtcore.h ]; then
     missing="$missing libembree-dev"
+fi
+if [ $need_check = yes ] && [ ! -x /usr/bin/chromium ] && command -v apt-get >/dev/null 2>&1; then
+    missing="$missing chromium"
 fi
 [ -z "$missing" ] && exit 0
 

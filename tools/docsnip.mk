@@ -1,13 +1,14 @@
-# docsnip.mk: building and testing docsnip, which keeps the code excerpts in the docs true
-# to the source. Included by tools/Makefile after common/build.mk; it needs nothing from
-# common/, so it does not link libraytra.a.
+# docsnip.mk: docsnip, which keeps the code excerpts in the docs true to the source: a POSIX
+# sh and awk script (docsnip.sh), put where the Makefiles run it. Included by tools/Makefile.
 
 .PHONY: docsnip docsnip-test
 docsnip: $(BUILD)/docsnip
 	@:
 
-$(BUILD)/docsnip: $(BUILD)/docsnip.o
-	$(CC) $(ALL_LDFLAGS) -o $@ $^
+$(BUILD)/docsnip: docsnip.sh
+	@mkdir -p $(BUILD)
+	cp docsnip.sh $@
+	chmod +x $@
 
 # The script writes its own fixtures into a temporary folder.
 docsnip-test: $(BUILD)/docsnip

@@ -3,6 +3,7 @@
 
 #include <dirent.h>
 #include <errno.h>
+#include <getopt.h>
 #include <limits.h>
 #include <math.h>
 #include <stdarg.h>
@@ -13,6 +14,7 @@
 #include <time.h>
 #include <unistd.h>
 
+#include "cli.h"
 #include "grade_report.h"
 #include "grade_run.h"
 #include "grade_submission.h"
@@ -29,6 +31,7 @@ typedef struct {
     double time_limit, build_time_limit;
     long long memory_limit;
     bool quiet, help;
+    bool self; /* SUBMISSIONS is one student's folder: a check before handing in */
 } GradeOptions;
 
 /* Prints the usage, the options and their defaults. */
@@ -36,6 +39,7 @@ static void print_help(FILE *f)
 {
     fprintf(f,
             "Usage: grade [options] PART SUBMISSIONS\n"
+            "       grade --self [options] PART FOLDER\n"
             "Grades every submission in the folder SUBMISSIONS against the reference images\n"
             "of PART and writes a report (report.html) and a table (grades.csv).\n"
             "\n"
@@ -44,7 +48,7 @@ static void print_help(FILE *f)
             "reference images and the scenes they were rendered from.\n"
             "\n"
             "SUBMISSIONS holds a folder a student, either\n"
-            "  - images named as the references (spheres-three.png; a .pfm is accepted too),\n"
+            "  - images named as the references (spheres-three.png; .pfm, .exr accepted too),\n"
             "  - or sources with a Makefile: make, run in a copy, must build an executable\n"
             "    raytra beside it, which is run as  raytra SCENE OUTPUT [arguments]  for\n"
             "    every scene, in a scratch folder, under the limits below.\n"
@@ -61,6 +65,9 @@ static void print_help(FILE *f)
             "                          differs by more than T (default %s)\n"
             "  --allow F               imgdiff's: an image passes when at most the fraction\n"
             "                          F of its pixels differ (default %s)\n"
+            "  --self                  FOLDER is one student's program (or images): grade\n"
+            "                          it alone, print each scene's verdict and heat map,\n"
+            "                          and exit 1 unless every scene passes\n"
             "  -q, --quiet             no progress lines\n"
             "  -h, --help              show this help and exit\n"
             "\n"
@@ -128,111 +135,94 @@ static bool parse_size(const char *text, long long *bytes)
 {
     char *end;
     double v = strtod(text, &end);
-    double unit = *end == 'K' || *end == 'k'   ? 1024.0
-                  : *end == 'M' || *end == 'm' ? 1024.0 * 1024
-                  : *end == 'G' || *end == 'g' ? 1024.0 * 1024 * 1024
-                                               : 1;
-    if (unit > 1)
-        end++;
-    if (end == text || *end != '\0' || !isfinite(v) || v < 0 || v * unit > 1e18 ||
-        (v > 0 && v * unit < 1024.0 * 1024))
+    const char *units = "KkMmGg", *unit = *end != '\0' ? strchr(units, *end) : NULL;
+    double scale = unit != NULL ? pow(1024.0, (double)((unit - units) / 2 + 1)) : 1;
+    end += unit != NULL;
+    if (end == text || *end != '\0' || !isfinite(v) || v < 0 || v * scale > 1e18 ||
+        (v > 0 && v * scale < 1024.0 * 1024))
         return false;
-    *bytes = (long long)(v * unit);
+    *bytes = (long long)(v * scale);
     return true;
 }
 
-/* Tells whether argv[*i] is option --name, as --name VALUE or --name=VALUE; then sets
- * *value (NULL when the value is missing) and steps over it. */
-static bool is_option(int argc, char **argv, int *i, const char *name, const char **value)
-{
-    const char *arg = argv[*i];
-    size_t len = strlen(name);
-    if (strncmp(arg, "--", 2) != 0 || strncmp(arg + 2, name, len) != 0)
-        return false;
-    if (arg[2 + len] == '=') {
-        *value = arg + 3 + len;
-        return true;
-    }
-    if (arg[2 + len] != '\0')
-        return false;
-    *value = *i + 1 < argc ? argv[++*i] : NULL;
-    return true;
-}
-
-/* Handles the option argv[*i]; false (reported) when it is not a valid one. */
-static bool parse_option(int argc, char **argv, int *i, GradeOptions *o)
-{
-    const char *arg = argv[*i], *v = NULL;
-    bool ok = true;
-    if (strcmp(arg, "-q") == 0 || strcmp(arg, "--quiet") == 0) {
-        o->quiet = true;
-        return true;
-    }
-    if (strcmp(arg, "-h") == 0 || strcmp(arg, "--help") == 0) {
-        o->help = true;
-        return true;
-    }
-    if (is_option(argc, argv, i, "out", &v))
-        o->out = v;
-    else if (is_option(argc, argv, i, "time-limit", &v))
-        ok = v == NULL || parse_seconds(v, &o->time_limit);
-    else if (is_option(argc, argv, i, "build-time-limit", &v))
-        ok = v == NULL || parse_seconds(v, &o->build_time_limit);
-    else if (is_option(argc, argv, i, "memory-limit", &v))
-        ok = v == NULL || parse_size(v, &o->memory_limit);
-    else if (is_option(argc, argv, i, "threshold", &v))
-        o->threshold = v;
-    else if (is_option(argc, argv, i, "allow", &v))
-        o->allow = v;
-    else {
-        fprintf(stderr, "grade: unknown option '%s' (grade --help lists them)\n", arg);
-        return false;
-    }
-    if (v == NULL) {
-        fprintf(stderr, "grade: %s needs a value\n", arg);
-        return false;
-    }
-    if (!ok)
-        fprintf(stderr, "grade: %s takes %s, got '%s'\n", arg,
-                strstr(arg, "memory") != NULL ? "a size such as 512M or 2G, or 0"
-                                              : "a number of seconds, or 0",
-                v);
-    return ok;
-}
-
-/* Reads the command line into o; false (reported) when it is not a valid one. */
+/* Reads the command line into o, with getopt_long (options may follow the words); false
+ * (reported) when it is not a valid one. */
 static bool parse_args(int argc, char **argv, GradeOptions *o)
 {
+    enum {
+        OPT_OUT = 256,
+        OPT_TIME,
+        OPT_BUILD_TIME,
+        OPT_MEMORY,
+        OPT_THRESHOLD,
+        OPT_ALLOW,
+        OPT_SELF
+    };
+    static const struct option options[] = {
+        {"out", required_argument, NULL, OPT_OUT},
+        {"time-limit", required_argument, NULL, OPT_TIME},
+        {"build-time-limit", required_argument, NULL, OPT_BUILD_TIME},
+        {"memory-limit", required_argument, NULL, OPT_MEMORY},
+        {"threshold", required_argument, NULL, OPT_THRESHOLD},
+        {"allow", required_argument, NULL, OPT_ALLOW},
+        {"self", no_argument, NULL, OPT_SELF},
+        {"quiet", no_argument, NULL, 'q'},
+        {"help", no_argument, NULL, 'h'},
+        {0},
+    };
     *o = (GradeOptions){.threshold = IMGDIFF_THRESHOLD_TEXT,
                         .allow = IMGDIFF_ALLOW_TEXT,
                         .time_limit = 60,
                         .build_time_limit = 300,
                         .memory_limit = 2LL << 30};
-    const char *words[2];
-    int count = 0;
-    bool only_words = false;
-    for (int i = 1; i < argc; i++) {
-        const char *arg = argv[i];
-        if (!only_words && strcmp(arg, "--") == 0) {
-            only_words = true;
-        } else if (!only_words && arg[0] == '-' && arg[1] != '\0') {
-            if (!parse_option(argc, argv, &i, o))
-                return false;
-        } else if (count == 2) {
-            fprintf(stderr, "grade: unexpected argument '%s': give a part and a folder\n", arg);
+    opterr = 0;
+    int c;
+    bool ok = true;
+    while (ok && (c = getopt_long(argc, argv, ":qh", options, NULL)) != -1) {
+        const char *arg = argv[optind - 1];
+        switch (c) {
+        case OPT_OUT: o->out = optarg; break;
+        case OPT_THRESHOLD: o->threshold = optarg; break;
+        case OPT_ALLOW: o->allow = optarg; break;
+        case OPT_SELF: o->self = true; break;
+        case 'q': o->quiet = true; break;
+        case 'h': o->help = true; break;
+        case OPT_TIME:
+        case OPT_BUILD_TIME:
+            if (!parse_seconds(optarg, c == OPT_TIME ? &o->time_limit : &o->build_time_limit)) {
+                fprintf(stderr, "grade: %.*s takes a number of seconds, or 0, got '%s'\n",
+                        (int)strcspn(arg, "="), arg, optarg);
+                ok = false;
+            }
+            break;
+        case OPT_MEMORY:
+            if (!parse_size(optarg, &o->memory_limit)) {
+                fprintf(stderr,
+                        "grade: --memory-limit takes a size such as 512M or 2G, or 0, "
+                        "got '%s'\n",
+                        optarg);
+                ok = false;
+            }
+            break;
+        case ':': fprintf(stderr, "grade: %s needs a value\n", arg); return false;
+        default:
+            fprintf(stderr, "grade: unknown option '%s' (grade --help lists them)\n", arg);
             return false;
-        } else {
-            words[count++] = arg;
         }
     }
-    if (o->help)
-        return true;
-    if (count < 2) {
+    if (!ok || o->help)
+        return ok;
+    if (argc - optind > 2) {
+        fprintf(stderr, "grade: unexpected argument '%s': give a part and a folder\n",
+                argv[optind + 2]);
+        return false;
+    }
+    if (argc - optind < 2) {
         fprintf(stderr, "usage: grade [options] PART SUBMISSIONS (grade --help for more)\n");
         return false;
     }
-    o->part = words[0];
-    o->submissions = words[1];
+    o->part = argv[optind];
+    o->submissions = argv[optind + 1];
     return true;
 }
 
@@ -282,40 +272,30 @@ static char *find_top(const char *argv0, char **tools_build)
     return top;
 }
 
-/* Orders names as strcmp does, for qsort. */
-static int compare_names(const void *a, const void *b)
+/* Tells whether a folder's entry is not hidden, for scandir. */
+static int visible(const struct dirent *e)
 {
-    return strcmp(*(char *const *)a, *(char *const *)b);
+    return e->d_name[0] != '.';
 }
 
 /* Returns the names of the folders in `folder`, hidden ones left out, in strcmp's order;
  * sets *count. NULL (and errno) when the folder cannot be read. */
 static char **list_folders(const char *folder, int *count)
 {
-    DIR *d = opendir(folder);
-    if (d == NULL)
+    struct dirent **entries;
+    int n = scandir(folder, &entries, visible, alphasort);
+    if (n < 0)
         return NULL;
-    char **names = grade_alloc(sizeof *names);
-    int capacity = 1;
-    struct dirent *e;
+    char **names = grade_alloc(((size_t)n + 1) * sizeof *names);
     *count = 0;
-    while ((e = readdir(d)) != NULL) {
-        char *path = grade_format("%s/%s", folder, e->d_name);
-        bool wanted = e->d_name[0] != '.' && is_folder(path);
+    for (int k = 0; k < n; k++) {
+        char *path = grade_format("%s/%s", folder, entries[k]->d_name);
+        if (is_folder(path))
+            names[(*count)++] = grade_copy(entries[k]->d_name);
         free(path);
-        if (!wanted)
-            continue;
-        if (*count + 1 == capacity) {
-            capacity *= 2;
-            char **grown = grade_alloc((size_t)capacity * sizeof *grown);
-            memcpy(grown, names, (size_t)*count * sizeof *grown);
-            free(names);
-            names = grown;
-        }
-        names[(*count)++] = grade_copy(e->d_name);
+        free(entries[k]);
     }
-    closedir(d);
-    qsort(names, (size_t)*count, sizeof *names, compare_names);
+    free(entries);
     return names;
 }
 
@@ -372,21 +352,22 @@ static char *find_part(const char *top, const char *part)
     return found;
 }
 
-/* Tells whether raytra's option `word`, given without "=VALUE", takes the next word as its
- * value; these are the shared options of common/cli.c that do. */
-static bool takes_value(const char *word)
+/* Returns raytra's option that `word` names (--name, --name=VALUE or -L), from the one
+ * table of common/cli.c; NULL when none does. */
+static const CliOption *option_of(const char *word)
 {
-    static const char *const with_value[] = {"-o",        "--output", "-j",
-                                             "--threads", "--scale",  "--convention"};
-    for (size_t k = 0; k < sizeof with_value / sizeof with_value[0]; k++)
-        if (strcmp(word, with_value[k]) == 0)
-            return true;
-    return false;
+    size_t len = strcspn(word + 2, "=");
+    for (const CliOption *o = cli_options; o->name != NULL; o++)
+        if (word[1] == '-' ? strlen(o->name) == len && strncmp(word + 2, o->name, len) == 0
+                           : o->letter != 0 && word[1] == o->letter && word[2] == '\0')
+            return o;
+    return NULL;
 }
 
-/* Fills r->args with the positional words of a renders.txt line (words[0..n)), which
- * students' programs get; raytra's options are left out, with a note. */
-static void keep_positional(Render *r, char **words, int n, bool quiet)
+/* Fills r->args with the words of a renders.txt line (words[0..n)) that students' programs
+ * get: the positional words, and the value of an option the course gives as a positional
+ * argument (1.4's MODE); raytra's own options are left out, with a note. */
+static void keep_positional(Render *r, char **words, int n, int part, bool quiet)
 {
     r->args = grade_alloc(((size_t)n + 1) * sizeof *r->args);
     int kept = 0;
@@ -395,14 +376,18 @@ static void keep_positional(Render *r, char **words, int n, bool quiet)
             r->args[kept++] = grade_copy(words[k]);
             continue;
         }
-        bool value = takes_value(words[k]) && k + 1 < n;
-        if (!quiet)
+        const CliOption *o = option_of(words[k]);
+        const char *eq = strchr(words[k], '=');
+        bool next = o != NULL && o->kind != OPTION_FLAG && eq == NULL && k + 1 < n;
+        const char *value = eq != NULL ? eq + 1 : next ? words[k + 1] : NULL;
+        if (o != NULL && o->argument != NULL && value != NULL && cli_option_accepted(o, part))
+            r->args[kept++] = grade_copy(value);
+        else if (!quiet)
             fprintf(stderr,
                     "grade: note: %s: raytra's option %s%s%s is not given to students' "
                     "programs\n",
-                    r->image, words[k], value ? " " : "", value ? words[k + 1] : "");
-        if (value)
-            k++;
+                    r->image, words[k], next ? " " : "", next ? words[k + 1] : "");
+        k += next;
     }
 }
 
@@ -413,9 +398,21 @@ static bool add_render(Grading *g, const char *top, char **words, int n, const c
 {
     const char *image = words[0];
     const char *dot = strrchr(image, '.');
+    if (image[0] == '!') {
+        /* An illustration: raytra's own picture (an option students do not have, a
+         * robustness case), which the references keep but no student is graded on. */
+        char *more =
+            grade_format("%s%s%.*s", g->illustrations != NULL ? g->illustrations : "",
+                         g->illustrations != NULL ? ", " : "",
+                         dot != NULL ? (int)(dot - image - 1) : (int)strlen(image + 1), image + 1);
+        free(g->illustrations);
+        g->illustrations = more;
+        return true;
+    }
     if (n < 2 || strchr(image, '/') != NULL || dot == NULL ||
-        (strcmp(dot, ".png") != 0 && strcmp(dot, ".pfm") != 0)) {
-        fprintf(stderr, "grade: %s: expected IMAGE SCENE [options], IMAGE a .png or .pfm name\n",
+        (strcmp(dot, ".png") != 0 && strcmp(dot, ".pfm") != 0 && strcmp(dot, ".exr") != 0)) {
+        fprintf(stderr,
+                "grade: %s: expected IMAGE SCENE [options], IMAGE a .png, .pfm or .exr name\n",
                 where);
         return false;
     }
@@ -425,7 +422,7 @@ static bool add_render(Grading *g, const char *top, char **words, int n, const c
     r->scene_path =
         words[1][0] == '/' ? grade_copy(words[1]) : grade_format("%s/%s", top, words[1]);
     r->reference = grade_format("%s/%s", g->references, image);
-    keep_positional(r, words + 2, n - 2, quiet);
+    keep_positional(r, words + 2, n - 2, cli_part_number(g->part), quiet);
     g->render_count++;
     if (!is_file(r->scene_path)) {
         fprintf(stderr, "grade: %s: no scene file %s\n", where, r->scene_path);
@@ -583,7 +580,7 @@ static bool show_references(Grading *g)
         Render *r = &g->renders[k];
         r->reference_show = grade_format("%s/references/%s.png", g->work, r->name);
         char *log = grade_format("%s/references/%s.log", g->work, r->name);
-        bool ok = thumb_make(r->reference, r->reference_show, THUMB_SIDE, THUMB_MEAN, log);
+        bool ok = thumb_make(r->reference, r->reference_show, THUMB_SIDE, THUMB_MEAN, log, 0);
         if (!ok && !stop_requested()) {
             fprintf(stderr, "grade: cannot read the reference image %s:\n", r->reference);
             print_first_line("    ", log);
@@ -622,10 +619,27 @@ static bool has_makefile(const char *folder)
 
 /* Lists the submissions: the folders in g->submissions but hidden ones and the output
  * folder, in the order of their names; false (reported) when there are none. */
-static bool list_submissions(Grading *g)
+static bool list_submissions(Grading *g, bool self)
 {
     int count = 0;
-    char **names = list_folders(g->submissions, &count);
+    char **names = NULL;
+    if (self) {
+        /* One student's folder: it is the one submission, named as the folder. */
+        const char *end = g->submissions + strlen(g->submissions);
+        while (end > g->submissions + 1 && end[-1] == '/')
+            end--;
+        const char *start = end;
+        while (start > g->submissions && start[-1] != '/')
+            start--;
+        g->subs = grade_alloc(sizeof *g->subs);
+        Submission *s = &g->subs[g->sub_count++];
+        s->name = grade_format("%.*s", (int)(end - start), start);
+        s->path = grade_copy(g->submissions);
+        s->work = grade_format("%s/1-self", g->work);
+        s->program = has_makefile(s->path);
+        return true;
+    }
+    names = list_folders(g->submissions, &count);
     if (names == NULL) {
         fprintf(stderr, "grade: cannot read the folder %s: %s\n", g->submissions, strerror(errno));
         return false;
@@ -647,6 +661,10 @@ static bool list_submissions(Grading *g)
         s->path = path;
         s->work = grade_format("%s/%0*d-%s", g->work, digits, g->sub_count, safe);
         s->program = has_makefile(s->path);
+        char target[PATH_MAX];
+        ssize_t n = readlink(s->path, target, sizeof target - 1);
+        if (n >= 0)
+            s->link = grade_format("%.*s", (int)n, target);
         free(safe);
     }
     free_names(names, count);
@@ -708,6 +726,25 @@ static bool grade_all(Grading *g, bool quiet)
     return true;
 }
 
+/* Prints, for a student checking their own work, each scene's verdict and reason, and the
+ * heat map to look at when it did not pass; returns the exit status: 0 when every scene
+ * passes, 1 otherwise. */
+static int print_self(const Grading *g)
+{
+    const Submission *s = &g->subs[0];
+    for (int k = 0; k < g->render_count; k++) {
+        const SceneResult *res = &s->results[k];
+        char *heat = grade_format("%s/%s.heat.png", s->work, g->renders[k].name);
+        printf("%-12s %s: %s\n", verdict_name(res->verdict), g->renders[k].name, res->message);
+        if (res->verdict != VERDICT_PASS && access(heat, F_OK) == 0)
+            printf("%12s heat map: %s\n", "", heat);
+        free(heat);
+    }
+    printf("%d of %d scenes pass; the report: %s/report.html\n", s->tally[TALLY_PASS],
+           g->render_count, g->out);
+    return s->tally[TALLY_PASS] == g->render_count ? 0 : 1;
+}
+
 /* Writes report.html and grades.csv into g->out; false (reported) when it cannot. */
 static bool write_results(const Grading *g, bool quiet)
 {
@@ -724,42 +761,6 @@ static bool write_results(const Grading *g, bool quiet)
     free(csv);
     free(html);
     return ok;
-}
-
-/* Frees everything g holds. */
-static void grading_free(Grading *g)
-{
-    for (int k = 0; k < g->render_count; k++) {
-        Render *r = &g->renders[k];
-        for (char **a = r->args; a != NULL && *a != NULL; a++)
-            free(*a);
-        free(r->args);
-        free(r->image);
-        free(r->name);
-        free(r->scene);
-        free(r->scene_path);
-        free(r->reference);
-        free(r->reference_show);
-    }
-    free(g->renders);
-    for (int k = 0; k < g->sub_count; k++) {
-        Submission *s = &g->subs[k];
-        for (int j = 0; s->results != NULL && j < g->render_count; j++) {
-            free(s->results[j].image_show);
-            free(s->results[j].heat_show);
-            free(s->results[j].log_tail);
-        }
-        free(s->results);
-        free(s->name);
-        free(s->path);
-        free(s->work);
-        free(s->build_log_tail);
-    }
-    free(g->subs);
-    free(g->references);
-    free(g->out);
-    free(g->work);
-    free(g->imgdiff);
 }
 
 /* Does all the grading but reading the command line; returns the exit status. */
@@ -786,13 +787,15 @@ static int grade(const GradeOptions *o, Grading *g, const char *argv0)
         goto done;
     }
     if (!read_renders(g, top, o->quiet) || !prepare_work(g) || !check_imgdiff(g) ||
-        !show_references(g) || !list_submissions(g))
+        !show_references(g) || !list_submissions(g, o->self))
         goto done;
     if (!o->quiet)
         fprintf(stderr, "grade: part %s, %d scene%s, %d submission%s\n", g->part, g->render_count,
                 g->render_count == 1 ? "" : "s", g->sub_count, g->sub_count == 1 ? "" : "s");
+    if (!o->quiet && g->illustrations != NULL)
+        fprintf(stderr, "grade: not graded (illustrations): %s\n", g->illustrations);
     if (grade_all(g, o->quiet) && write_results(g, o->quiet))
-        status = EXIT_REPORTED;
+        status = o->self ? print_self(g) : EXIT_REPORTED;
 done:
     if (stop_requested()) {
         fprintf(stderr, "grade: interrupted: no report written\n");
@@ -816,13 +819,13 @@ int main(int argc, char **argv)
         return EXIT_REPORTED;
     }
     run_init();
-    Grading g = {.submissions = o.submissions,
-                 .threshold = o.threshold,
-                 .allow = o.allow,
-                 .time_limit = o.time_limit,
-                 .build_time_limit = o.build_time_limit,
-                 .memory_limit = o.memory_limit};
-    int status = grade(&o, &g, argv[0]);
-    grading_free(&g);
-    return status;
+    /* Static: what grading gathers lives until the exit, which frees it. */
+    static Grading g;
+    g = (Grading){.submissions = o.submissions,
+                  .threshold = o.threshold,
+                  .allow = o.allow,
+                  .time_limit = o.time_limit,
+                  .build_time_limit = o.build_time_limit,
+                  .memory_limit = o.memory_limit};
+    return grade(&o, &g, argv[0]);
 }

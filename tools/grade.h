@@ -12,7 +12,8 @@ typedef enum {
     VERDICT_PASS,          /* matches the reference within the tolerances */
     VERDICT_FAIL,          /* differs from it */
     VERDICT_WRONG_SIZE,    /* has another width or height */
-    VERDICT_UNREADABLE,    /* is not a PNG or PFM image imgdiff can read */
+    VERDICT_LINK,          /* is a symbolic link, or a hard link to the reference */
+    VERDICT_UNREADABLE,    /* is not a regular file holding an image imgdiff can read */
     VERDICT_MISSING,       /* there is no image */
     VERDICT_ERROR,         /* the program exited with a failure status and wrote no image */
     VERDICT_CRASHED,       /* the program was killed by a signal */
@@ -29,14 +30,14 @@ typedef enum { TALLY_PASS, TALLY_FAIL, TALLY_MISSING, TALLY_ERROR, TALLY_COUNT }
 static inline const char *verdict_name(Verdict v)
 {
     static const char *const names[VERDICT_COUNT] = {
-        "PASS",  "FAIL",    "WRONG SIZE", "UNREADABLE",    "MISSING",
+        "PASS",  "FAIL",    "WRONG SIZE", "LINK",          "UNREADABLE",   "MISSING",
         "ERROR", "CRASHED", "TIMEOUT",    "OUT OF MEMORY", "BUILD FAILED",
     };
     return names[v];
 }
 
-/* Returns the summary column the verdict counts in: a wrong or unreadable image is a
- * failed image; a program that did not produce one is an error. */
+/* Returns the summary column the verdict counts in: a wrong, linked or unreadable image
+ * is a failed image; a program that did not produce one is an error. */
 static inline Tally verdict_tally(Verdict v)
 {
     if (v == VERDICT_PASS)
@@ -91,6 +92,7 @@ typedef struct {
     char *path;              /* the folder */
     char *work;              /* its work folder, named safely: OUT/work/03-alice */
     bool program;            /* it has a Makefile: built and run rather than read */
+    char *link;              /* the folder is a symbolic link to this: not graded; or NULL */
     char build_message[512]; /* why the build failed; empty when it did not */
     char *build_log_tail;    /* the end of make's output, or NULL */
     SceneResult *results;    /* one a render */
@@ -104,6 +106,7 @@ typedef struct {
     char *references; /* its references folder */
     Render *renders;
     int render_count;
+    char *illustrations; /* the names of the renders marked '!', not graded; or NULL */
     Submission *subs;
     int sub_count;
     const char *submissions; /* the submissions folder, as given */

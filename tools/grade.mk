@@ -8,14 +8,24 @@ GRADE_OBJECTS := $(addprefix $(BUILD)/,grade.o grade_run.o grade_submission.o gr
 # sanitizers: their shadow memory does not fit under the grader's memory limit.
 GRADE_PART    := $(TOP)/milestones/1.1-spheres-red
 
-.PHONY: grade grade-test
+.PHONY: grade grade-test report-figure
 grade: $(GRADE) $(IMGDIFF)
 	@:
 
 $(GRADE): $(GRADE_OBJECTS) $(COMMON_LIB)
 	$(CC) $(ALL_LDFLAGS) -o $@ $^ $(IMAGE_LIBS) -lm
 
-# The script makes its class of submissions in a temporary folder.
+# The script makes its class of submissions in a temporary folder; every part's program is
+# also graded as a student's, against its own references.
 grade-test: $(GRADE) $(IMGDIFF)
-	@$(SUBMAKE) -C $(GRADE_PART) SANITIZE=0
+	@for part in $(wildcard $(TOP)/milestones/*/Makefile); do \
+	    $(SUBMAKE) -C $$(dirname $$part) SANITIZE=0 || exit 1; done
 	@sh $(TOP)/tests/grade.sh $(GRADE) $(GRADE_PART)/raytra
+	@sh $(TOP)/tests/grade-report.sh $(GRADE) $(GRADE_PART)/raytra
+
+# The report's picture in docs/grading.md: a made-up class's report, checked in Chromium,
+# then photographed by it.
+report-figure: $(GRADE) $(IMGDIFF)
+	@$(SUBMAKE) -C $(GRADE_PART) SANITIZE=0
+	@sh $(TOP)/tests/grade-report.sh $(GRADE) $(GRADE_PART)/raytra \
+	    --figure $(TOP)/docs/figures/grading-report.png

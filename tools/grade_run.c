@@ -112,8 +112,10 @@ static void child_setup(const RunSpec *spec)
     sigemptyset(&none);
     sigprocmask(SIG_SETMASK, &none, NULL);
     int in = open("/dev/null", O_RDONLY);
-    int out = spec->log != NULL ? open(spec->log, O_WRONLY | O_CREAT | O_TRUNC, 0644)
-                                : open("/dev/null", O_WRONLY);
+    /* A link or a FIFO a student's program left at the log's path is neither followed
+     * nor waited on: the open fails, and the child with it. */
+    int flags = O_WRONLY | O_CREAT | O_TRUNC | O_NOFOLLOW | O_NONBLOCK;
+    int out = spec->log != NULL ? open(spec->log, flags, 0644) : open("/dev/null", O_WRONLY);
     if (in < 0 || out < 0 || dup2(in, 0) < 0 || dup2(out, 1) < 0 || dup2(out, 2) < 0)
         _exit(RUN_EXEC_FAILED);
     close_other_files();

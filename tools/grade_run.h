@@ -32,6 +32,15 @@ typedef struct {
 /* The largest file a child may write: a program printing in a loop must not fill the disk. */
 #define RUN_FILE_LIMIT (1LL << 30)
 
+/* The memory limit of the grader's own children that read students' files (imgdiff, the
+ * thumbnails): the students' limit, but none when the grader is built with
+ * AddressSanitizer, whose shadow memory no limit leaves room for. */
+#if defined(__SANITIZE_ADDRESS__)
+#define RUN_OWN_MEMORY(limit) ((void)(limit), 0LL)
+#else
+#define RUN_OWN_MEMORY(limit) (limit)
+#endif
+
 void run_init(void);
 RunResult run_program(char *const argv[], const RunSpec *spec);
 RunResult run_function(int (*function)(void *), void *arg, const RunSpec *spec);

@@ -119,7 +119,7 @@ static size_t clean_output(const char *raw, size_t n, char *out)
  * with "[...]" first when some were left out; NULL when it is empty or unreadable. */
 static char *log_tail(const char *path)
 {
-    FILE *f = fopen(path, "rb");
+    FILE *f = imgfile_fopen(path);
     if (f == NULL)
         return NULL;
     long size = fseek(f, 0, SEEK_END) == 0 ? ftell(f) : -1;
@@ -168,7 +168,7 @@ static void read_figure(const char *line, Figures *fig)
 static void read_answer(const char *log, const char *image, DiffAnswer *a)
 {
     *a = (DiffAnswer){0};
-    FILE *f = fopen(log, "r");
+    FILE *f = imgfile_fopen(log);
     if (f == NULL)
         return;
     Figures *fig = &a->figures;
@@ -224,28 +224,11 @@ static void compare_image(const Grading *g, const Submission *s, int k, const ch
     SceneResult *res = &s->results[k];
     char *log = grade_format("%s/%s.diff.txt", s->work, r->name);
     char *heat = grade_format("%s/%s.heat.png", s->work, r->name);
-    char *as_png = grade_format("%s/%s.as-png.png", s->work, r->name);
     const char *reference = r->reference, *compared = image;
-    /* A PFM holds linear values, a PNG encoded ones: the PFM is encoded as raytra encodes
-     * its PNGs, and the two PNGs compared. */
-    bool image_pfm = imgfile_is_pfm(image);
-    if (image_pfm != imgfile_is_pfm(reference)) {
-        if (!thumb_make(image_pfm ? image : reference, as_png, 0, THUMB_MEAN, log)) {
-            char *reason = log_tail(log);
-            set_verdict(res, VERDICT_UNREADABLE, "the PFM cannot be read: %s",
-                        reason != NULL ? reason : "no reason given");
-            free(reason);
-            goto done;
-        }
-        if (image_pfm)
-            compared = as_png;
-        else
-            reference = as_png;
-    }
     char *argv[] = {g->imgdiff, "--machine",       "--threshold",    (char *)g->threshold,
                     "--allow",  (char *)g->allow,  "--diff",         heat,
                     "--",       (char *)reference, (char *)compared, NULL};
-    RunSpec spec = {.log = log, .time_limit = 600};
+    RunSpec spec = {.log = log, .time_limit = 600, .memory_limit = RUN_OWN_MEMORY(g->memory_limit)};
     RunResult run = run_program(argv, &spec);
     DiffAnswer a;
     read_answer(log, compared, &a);
@@ -267,40 +250,70 @@ static void compare_image(const Grading *g, const Submission *s, int k, const ch
         goto done;
     char *show = grade_format("%s/%s.show.png", s->work, r->name);
     char *heat_show = grade_format("%s/%s.heat-show.png", s->work, r->name);
-    if (thumb_make(compared, show, THUMB_SIDE, THUMB_MEAN, NULL))
+    if (thumb_make(compared, show, THUMB_SIDE, THUMB_MEAN, NULL, g->memory_limit))
         res->image_show = grade_copy(show);
-    if (res->compared && thumb_make(heat, heat_show, THUMB_SIDE, THUMB_PEAKS, NULL))
+    if (res->compared &&
+        thumb_make(heat, heat_show, THUMB_SIDE, THUMB_PEAKS, NULL, g->memory_limit))
         res->heat_show = grade_copy(heat_show);
     free(show);
     free(heat_show);
 done:
-    free(as_png);
     free(heat);
     free(log);
 }
 
+/* Tells whether the file at path, found for render r, is an image handed in: a regular
+ * file, not a symbolic link (to a reference, to a classmate's folder) nor the reference
+ * itself under another name; else sets the verdict, LINK or UNREADABLE. lstat only: a
+ * FIFO or a device is never opened. */
+static bool handed_in(const Render *r, SceneResult *res, const char *path)
+{
+    struct stat st, ref;
+    const char *name = strrchr(path, '/') + 1;
+    char target[256] = "";
+    if (lstat(path, &st) != 0) {
+        set_verdict(res, VERDICT_UNREADABLE, "%s cannot be read: %s", name, strerror(errno));
+    } else if (S_ISLNK(st.st_mode)) {
+        ssize_t n = readlink(path, target, sizeof target - 1);
+        target[n > 0 ? n : 0] = '\0';
+        set_verdict(res, VERDICT_LINK, "%s is a symbolic link to %s: not an image handed in", name,
+                    target);
+    } else if (!S_ISREG(st.st_mode)) {
+        set_verdict(res, VERDICT_UNREADABLE, "%s is not a regular file (%s)", name,
+                    S_ISFIFO(st.st_mode)  ? "a FIFO"
+                    : S_ISDIR(st.st_mode) ? "a folder"
+                                          : "a special file");
+    } else if (stat(r->reference, &ref) == 0 && ref.st_dev == st.st_dev &&
+               ref.st_ino == st.st_ino) {
+        set_verdict(res, VERDICT_LINK, "%s is a hard link to the reference image", name);
+    } else {
+        return true;
+    }
+    return false;
+}
+
 /* Grades render k of a submission of images: finds the image, by the reference's name or
- * with the other of .png and .pfm, and compares it. */
+ * with another of .png, .pfm and .exr, and compares it. */
 static void grade_image(const Grading *g, Submission *s, int k)
 {
     const Render *r = &g->renders[k];
     SceneResult *res = &s->results[k];
-    const char *other = strcmp(strrchr(r->image, '.'), ".png") == 0 ? "pfm" : "png";
-    char *path = grade_format("%s/%s", s->path, r->image);
-    char *other_path = grade_format("%s/%s.%s", s->path, r->name, other);
+    static const char *const endings[] = {"", ".png", ".pfm", ".exr"};
+    char *found = NULL;
     struct stat st;
-    const char *found = stat(path, &st) == 0         ? path
-                        : stat(other_path, &st) == 0 ? other_path
-                                                     : NULL;
+    for (size_t e = 0; e < sizeof endings / sizeof endings[0] && found == NULL; e++) {
+        found = e == 0 ? grade_format("%s/%s", s->path, r->image)
+                       : grade_format("%s/%s%s", s->path, r->name, endings[e]);
+        if (lstat(found, &st) != 0) {
+            free(found);
+            found = NULL;
+        }
+    }
     if (found == NULL)
-        set_verdict(res, VERDICT_MISSING, "no %s (nor %s.%s) in the submission", r->image, r->name,
-                    other);
-    else if (!S_ISREG(st.st_mode))
-        set_verdict(res, VERDICT_UNREADABLE, "%s is not a regular file", strrchr(found, '/') + 1);
-    else
+        set_verdict(res, VERDICT_MISSING, "no %s.png, .pfm or .exr in the submission", r->name);
+    else if (handed_in(r, res, found))
         compare_image(g, s, k, found);
-    free(path);
-    free(other_path);
+    free(found);
 }
 
 /* Copies submission s into its work folder and runs make there under the limits; returns
@@ -374,7 +387,7 @@ static void run_scene(const Grading *g, Submission *s, int k, const char *progra
     char how[200];
     describe_end(&run, g->time_limit, how, sizeof how);
     struct stat st;
-    bool wrote = stat(image, &st) == 0;
+    bool wrote = lstat(image, &st) == 0;
     bool failed = run.end == RUN_KILLED || (run.end == RUN_EXITED && run.status != 0);
     char limit[32];
     grade_size_text(g->memory_limit, limit, sizeof limit);
@@ -393,7 +406,7 @@ static void run_scene(const Grading *g, Submission *s, int k, const char *progra
         set_verdict(res, VERDICT_ERROR, "ended with %s and wrote no image", how);
     else if (run.end == RUN_EXITED && !wrote)
         set_verdict(res, VERDICT_MISSING, "ended normally but wrote no %s", r->image);
-    else if (run.end == RUN_EXITED)
+    else if (run.end == RUN_EXITED && handed_in(r, res, image))
         compare_image(g, s, k, image);
     /* An image written before a failure exit is graded; the failure is told. */
     if (run.end == RUN_EXITED && wrote && run.status != 0 &&
@@ -426,7 +439,7 @@ bool submission_grade(const Grading *g, Submission *s)
     if (!make_folder(s->work))
         return false;
     char *program = NULL;
-    if (s->program) {
+    if (s->program && s->link == NULL) {
         char *images = grade_format("%s/images", s->work);
         char *scratch = grade_format("%s/run", s->work);
         bool ok = make_folder(images) && make_folder(scratch);
@@ -437,7 +450,11 @@ bool submission_grade(const Grading *g, Submission *s)
         program = build(g, s);
     }
     for (int k = 0; k < g->render_count && !stop_requested(); k++) {
-        if (!s->program)
+        /* A folder that is a link (to a classmate's) is not a submission of its own. */
+        if (s->link != NULL)
+            set_verdict(&s->results[k], VERDICT_LINK,
+                        "the submission's folder is a symbolic link to %s", s->link);
+        else if (!s->program)
             grade_image(g, s, k);
         else if (program != NULL)
             run_scene(g, s, k, program);

@@ -1,6 +1,7 @@
 /* grade_thumb.c: shrinking images into PNG thumbnails, and writing PFMs as PNGs, in a child. */
 #include "grade_thumb.h"
 
+#include <fcntl.h>
 #include <stdio.h>
 
 #include "grade.h"
@@ -42,6 +43,16 @@ static int thumb_job(void *arg)
     const ThumbJob *job = arg;
     Image src, dst;
     Error err;
+    ImgFileKind kind;
+    int w, h;
+    if (!imgfile_header(job->from, &kind, &w, &h, &err)) {
+        fprintf(stderr, "%s\n", err.text);
+        return 1;
+    }
+    if ((long)w * h > THUMB_MAX_PIXELS) {
+        fprintf(stderr, "%d x %d pixels: too large to show\n", w, h);
+        return 1;
+    }
     if (!image_read(&src, job->from, &err)) {
         fprintf(stderr, "%s\n", err.text);
         return 1;
@@ -60,10 +71,11 @@ static int thumb_job(void *arg)
         }
     /* A PNG's values are read as stored and go back as they were; a PFM's are linear
      * radiance, encoded as raytra encodes its PNGs, so that it can be compared with one. */
-    PngEncoding encoding = imgfile_is_pfm(job->from) ? PNG_ENCODING_SRGB : PNG_ENCODING_LINEAR;
+    PngEncoding encoding = kind == IMGFILE_PNG ? PNG_ENCODING_LINEAR : PNG_ENCODING_SRGB;
     /* Written directly, without image_write's temporary and flush to the disk: the grader
      * uses the file only when this child reports success. */
-    FILE *f = fopen(job->to, "wb");
+    int fd = open(job->to, O_WRONLY | O_CREAT | O_TRUNC | O_NOFOLLOW | O_NONBLOCK, 0644);
+    FILE *f = fd >= 0 ? fdopen(fd, "wb") : NULL;
     bool ok = f != NULL && image_write_png(&dst, f, encoding, &err);
     if (f != NULL && fclose(f) != 0)
         ok = false;
@@ -75,14 +87,13 @@ static int thumb_job(void *arg)
 }
 
 /* Writes to `to` a PNG of the image `from` shrunk to fit max_side (0: full size), in a
- * child with a time limit, since `from` may be a student's file; reasons go to log.
- * Returns whether it did. */
-bool thumb_make(const char *from, const char *to, int max_side, ThumbKind kind, const char *log)
+ * child with a time limit and the memory limit, since `from` may be a student's file;
+ * reasons go to log. Returns whether it did. */
+bool thumb_make(const char *from, const char *to, int max_side, ThumbKind kind, const char *log,
+                long long memory_limit)
 {
     ThumbJob job = {from, to, max_side, kind};
-    /* No memory limit: the sanitizers' shadow memory would exceed it, and image_read
-     * refuses images too large for memory. */
-    RunSpec spec = {.log = log, .time_limit = 120};
+    RunSpec spec = {.log = log, .time_limit = 120, .memory_limit = RUN_OWN_MEMORY(memory_limit)};
     RunResult r = run_function(thumb_job, &job, &spec);
     return r.end == RUN_EXITED && r.status == 0;
 }

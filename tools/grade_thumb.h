@@ -7,12 +7,16 @@
 /* The longest side of a thumbnail: three fit side by side on a laptop's screen. */
 #define THUMB_SIDE 320
 
+/* The largest image shown: a larger one is surely a mistake, or a decompression bomb. */
+#define THUMB_MAX_PIXELS (4096L * 4096)
+
 /* How a thumbnail shrinks a block of pixels into one. */
 typedef enum {
     THUMB_MEAN,  /* the block's mean: for pictures */
     THUMB_PEAKS, /* its brightest pixel: a heat map's single differing pixel must stay */
 } ThumbKind;
 
-bool thumb_make(const char *from, const char *to, int max_side, ThumbKind kind, const char *log);
+bool thumb_make(const char *from, const char *to, int max_side, ThumbKind kind, const char *log,
+                long long memory_limit);
 
 #endif

@@ -1,9 +1,11 @@
 /* imgdiff.c: compares two images, PNG or PFM, and tells whether they match. */
+#include <getopt.h>
 #include <math.h>
 #include <stdbool.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/stat.h>
 
 #include "image.h"
 #include "imgdiff.h"
@@ -28,6 +30,7 @@ typedef struct {
 typedef struct {
     double max[3];           /* the largest difference in R, G and B */
     double largest_finite;   /* the largest finite difference in any channel */
+    long nonfinite;          /* pixels with a NaN or infinite channel in either image */
     double sum, sum_squares; /* of the differences of every channel of every pixel */
     long differing;          /* pixels with a channel difference above the threshold */
     int x0, y0, x1, y1;      /* the box around those pixels, y from the top */
@@ -49,11 +52,12 @@ static void print_help(FILE *f)
     fprintf(f,
             "Usage: imgdiff [options] A B\n"
             "Compares two images of the same size, each a PNG (8 or 16 bits, any colour\n"
-            "type) or a PFM, and tells whether they match.\n"
+            "type), a PFM or an EXR, and tells whether they match.\n"
             "\n"
             "Values are compared on a scale of 0 to 1 as the files hold them: a PNG's\n"
             "as stored (raytra writes them sRGB-encoded unless given --linear), a PFM's\n"
-            "linear; so compare a PFM with a PFM, or with a PNG written with --linear.\n"
+            "or an EXR's linear. A PNG compared with a linear image meets it as raytra\n"
+            "would write it to a PNG: clamped to [0, 1], sRGB-encoded, rounded to 8 bits.\n"
             "Transparent PNG pixels are taken as drawn over black.\n"
             "\n"
             "Options:\n"
@@ -111,13 +115,11 @@ static bool parse_number(const char *text, double *value)
 /* Stores the value of option --name; false (reported) when it is not a valid one. */
 static bool set_value(DiffOptions *o, const char *name, const char *value)
 {
-    if (strcmp(name, "diff") == 0) {
-        o->diff_path = value;
-        return true;
-    }
     double v = 0;
     bool number = parse_number(value, &v);
-    if (strcmp(name, "threshold") == 0 && number && v >= 0)
+    if (strcmp(name, "diff") == 0)
+        o->diff_path = value;
+    else if (strcmp(name, "threshold") == 0 && number && v >= 0)
         o->threshold = v;
     else if (strcmp(name, "allow") == 0 && number && v >= 0 && v <= 1)
         o->allow = v;
@@ -134,61 +136,43 @@ static bool set_value(DiffOptions *o, const char *name, const char *value)
     return true;
 }
 
-/* Handles the option argv[*i], taking its value from the next word when it needs one. */
-static bool parse_option(DiffOptions *o, int argc, char **argv, int *i)
-{
-    const char *arg = argv[*i];
-    if (strcmp(arg, "-q") == 0 || strcmp(arg, "--quiet") == 0) {
-        o->quiet = true;
-        return true;
-    }
-    if (strcmp(arg, "-h") == 0 || strcmp(arg, "--help") == 0) {
-        o->help = true;
-        return true;
-    }
-    if (strcmp(arg, "--machine") == 0) {
-        o->machine = true;
-        return true;
-    }
-    /* The other options take a value: --name VALUE or --name=VALUE. */
-    static const char *const with_value[] = {"threshold", "allow", "scale", "diff"};
-    const char *eq = strchr(arg, '=');
-    size_t len = eq != NULL ? (size_t)(eq - arg) : strlen(arg);
-    for (size_t k = 0; k < sizeof with_value / sizeof with_value[0]; k++) {
-        const char *name = with_value[k];
-        if (strncmp(arg, "--", 2) != 0 || len != 2 + strlen(name) ||
-            strncmp(arg + 2, name, len - 2) != 0)
-            continue;
-        if (eq != NULL)
-            return set_value(o, name, eq + 1);
-        if (*i + 1 >= argc) {
-            fprintf(stderr, "imgdiff: --%s needs a value\n", name);
-            return false;
-        }
-        return set_value(o, name, argv[++*i]);
-    }
-    fprintf(stderr, "imgdiff: unknown option '%s' (imgdiff --help lists them)\n", arg);
-    return false;
-}
-
-/* Reads the command line into o; false (reported) when it is not a valid one. */
+/* Reads the command line into o, with getopt_long (options may follow the images); false
+ * (reported) when it is not a valid one. */
 static bool parse_args(int argc, char **argv, DiffOptions *o)
 {
+    static const struct option options[] = {
+        {"threshold", required_argument, NULL, 't'},
+        {"allow", required_argument, NULL, 'a'},
+        {"scale", required_argument, NULL, 's'},
+        {"diff", required_argument, NULL, 'd'},
+        {"machine", no_argument, NULL, 'm'},
+        {"quiet", no_argument, NULL, 'q'},
+        {"help", no_argument, NULL, 'h'},
+        {0},
+    };
     *o = (DiffOptions){.threshold = IMGDIFF_THRESHOLD, .allow = IMGDIFF_ALLOW};
-    bool only_paths = false;
-    for (int i = 1; i < argc; i++) {
-        const char *arg = argv[i];
-        if (!only_paths && strcmp(arg, "--") == 0) {
-            only_paths = true;
-        } else if (!only_paths && arg[0] == '-' && arg[1] != '\0') {
-            if (!parse_option(o, argc, argv, &i))
-                return false;
-        } else if (o->path_count == 2) {
-            fprintf(stderr, "imgdiff: unexpected argument '%s': give two images\n", arg);
+    opterr = 0;
+    int c, index = 0;
+    while ((c = getopt_long(argc, argv, ":qh", options, &index)) != -1) {
+        if (c == 'q' || c == 'h' || c == 'm') {
+            *(c == 'q' ? &o->quiet : c == 'h' ? &o->help : &o->machine) = true;
+        } else if (c == ':') {
+            fprintf(stderr, "imgdiff: %s needs a value\n", argv[optind - 1]);
             return false;
-        } else {
-            o->paths[o->path_count++] = arg;
+        } else if (c == '?') {
+            fprintf(stderr, "imgdiff: unknown option '%s' (imgdiff --help lists them)\n",
+                    argv[optind - 1]);
+            return false;
+        } else if (!set_value(o, options[index].name, optarg)) {
+            return false;
         }
+    }
+    for (; optind < argc; optind++) {
+        if (o->path_count == 2) {
+            fprintf(stderr, "imgdiff: unexpected argument '%s': give two images\n", argv[optind]);
+            return false;
+        }
+        o->paths[o->path_count++] = argv[optind];
     }
     if (!o->help && o->path_count < 2) {
         fprintf(stderr, "imgdiff: give two images to compare (imgdiff --help shows how)\n");
@@ -202,10 +186,15 @@ static bool check_diff_path(const DiffOptions *o)
 {
     const char *path = o->diff_path;
     Error err;
-    if (strcmp(path, o->paths[0]) == 0 || strcmp(path, o->paths[1]) == 0) {
-        fprintf(stderr, "imgdiff: --diff %s would overwrite an image being compared\n", path);
-        return false;
-    }
+    /* The same file, however it is spelt (./a.png, d/../a.png, a link, a hard link). */
+    struct stat map, input;
+    for (int k = 0; k < 2 && stat(path, &map) == 0; k++)
+        if (stat(o->paths[k], &input) == 0 && input.st_dev == map.st_dev &&
+            input.st_ino == map.st_ino) {
+            fprintf(stderr, "imgdiff: --diff %s would overwrite %s, an image being compared\n",
+                    path, o->paths[k]);
+            return false;
+        }
     if (image_format_for_path(path) == IMAGE_FORMAT_UNKNOWN) {
         fprintf(stderr, "imgdiff: cannot write '%s': unknown image format (use .png or .pfm)\n",
                 path);
@@ -218,14 +207,13 @@ static bool check_diff_path(const DiffOptions *o)
     return true;
 }
 
-/* Returns the difference of two channel values; NaN against anything but NaN counts
- * as infinite, so that it can never pass as a small difference. */
+/* Returns the difference of two channel values; a NaN or an infinity in either counts as
+ * an infinite difference, even against another: such a pixel is broken, never equal. */
 static double channel_diff(float a, float b)
 {
-    if (a == b || (isnan(a) && isnan(b)))
-        return 0;
-    double d = fabs((double)a - (double)b);
-    return isnan(d) ? INFINITY : d;
+    if (!isfinite(a) || !isfinite(b))
+        return INFINITY;
+    return fabs((double)a - (double)b);
 }
 
 /* Returns the largest difference between the channels of pixel k of a and of b. */
@@ -254,6 +242,7 @@ static Diff diff_images(const Image *a, const Image *b, double threshold)
                 if (isfinite(e))
                     d.largest_finite = fmax(d.largest_finite, e);
             }
+            d.nonfinite += isinf(largest);
             if (largest > threshold) {
                 d.differing++;
                 d.x0 = x < d.x0 ? x : d.x0;
@@ -325,6 +314,8 @@ static void print_report(const Diff *d, int width, int height, double threshold)
            threshold, threshold * 255);
     if (d->differing > 0)
         printf("differing region: (%d,%d)-(%d,%d), y from the top\n", d->x0, d->y0, d->x1, d->y1);
+    if (d->nonfinite > 0)
+        printf("non-finite pixels: %ld (NaN or infinite in either image)\n", d->nonfinite);
 }
 
 /* Prints the measures of d and the tolerances as NAME VALUE lines, with enough digits to
@@ -346,6 +337,8 @@ static void print_machine(const Diff *d, int width, int height, double top, cons
         printf("box %d %d %d %d\n", d->x0, d->y0, d->x1, d->y1);
     if (top > 0)
         printf("heat_scale %.9g\n", top);
+    if (d->nonfinite > 0)
+        printf("nonfinite %ld\n", d->nonfinite);
 }
 
 /* Prints the verdict line; returns the exit status it means. */
@@ -353,9 +346,13 @@ static int print_verdict(const Diff *d, long pixels, const DiffOptions *o)
 {
     double percent = 100.0 * d->differing / pixels;
     bool equal = d->max[0] == 0 && d->max[1] == 0 && d->max[2] == 0;
-    bool pass = (double)d->differing <= o->allow * pixels;
+    /* A NaN or infinite pixel is a bug in the renderer, whatever the tolerances. */
+    bool pass = (double)d->differing <= o->allow * pixels && d->nonfinite == 0;
     if (o->machine)
         printf("verdict %s\n", pass ? "PASS" : "FAIL");
+    else if (d->nonfinite > 0)
+        printf("FAIL: %ld pixel%s not finite (NaN or infinite)\n", d->nonfinite,
+               d->nonfinite == 1 ? " is" : "s are");
     else if (equal)
         printf("PASS: the images are identical\n");
     else if (d->differing == 0)
@@ -369,22 +366,37 @@ static int print_verdict(const Diff *d, long pixels, const DiffOptions *o)
     return pass ? EXIT_MATCH : EXIT_DIFFER;
 }
 
+/* Tells, from the headers alone, whether both images can be read and have the same size;
+ * reports why not. Nothing is decoded before: an image's pixels may be a bomb. */
+static bool check_headers(const DiffOptions *o)
+{
+    ImgFileKind kind;
+    int w[2], h[2];
+    Error err;
+    for (int k = 0; k < 2; k++)
+        if (!imgfile_header(o->paths[k], &kind, &w[k], &h[k], &err)) {
+            fprintf(stderr, "imgdiff: cannot read '%s': %s\n", o->paths[k], err.text);
+            return false;
+        }
+    if (w[0] == w[1] && h[0] == h[1])
+        return true;
+    if (o->machine)
+        printf("sizes %d %d %d %d\n", w[0], h[0], w[1], h[1]);
+    fprintf(stderr, "imgdiff: sizes differ: %s is %d x %d, %s is %d x %d\n", o->paths[0], w[0],
+            h[0], o->paths[1], w[1], h[1]);
+    return false;
+}
+
 /* Compares a and b, reports, writes the heat map if asked; returns the exit status. */
 static int compare(const Image *a, const Image *b, const DiffOptions *o)
 {
     if (a->width != b->width || a->height != b->height) {
-        if (o->machine)
-            printf("sizes %d %d %d %d\n", a->width, a->height, b->width, b->height);
-        fprintf(stderr, "imgdiff: sizes differ: %s is %d x %d, %s is %d x %d\n", o->paths[0],
-                a->width, a->height, o->paths[1], b->width, b->height);
+        fprintf(stderr, "imgdiff: '%s' changed while it was read\n", o->paths[1]);
         return EXIT_TROUBLE;
     }
     Diff d = diff_images(a, b, o->threshold);
-    if (!o->quiet && !o->machine) {
-        if (imgfile_is_pfm(o->paths[0]) != imgfile_is_pfm(o->paths[1]))
-            printf("note: comparing a PNG's stored values with a PFM's linear ones\n");
+    if (!o->quiet && !o->machine)
         print_report(&d, a->width, a->height, o->threshold);
-    }
     double top = 0;
     if (o->diff_path != NULL) {
         /* Equal images get an all-black map; the scale then only needs to be positive. */
@@ -398,6 +410,19 @@ static int compare(const Image *a, const Image *b, const DiffOptions *o)
     if (o->machine)
         print_machine(&d, a->width, a->height, top, o);
     return print_verdict(&d, (long)a->width * a->height, o);
+}
+
+/* Encodes the linear image img (a PFM's, an EXR's) as raytra encodes its PNGs: each value
+ * clamped to [0, 1], given the sRGB curve and rounded to 8 bits, so that it compares
+ * with a PNG's stored values. A non-finite value stays as it is, to be reported. */
+static void encode_like_png(Image *img)
+{
+    for (long k = 0; k < 3L * img->width * img->height; k++) {
+        double v = img->pixels[k];
+        if (isfinite(v))
+            img->pixels[k] =
+                (float)((int)(image_srgb_encode(fmin(fmax(v, 0), 1)) * 255 + 0.5) / 255.0);
+    }
 }
 
 /* Reads the image at path into img; false (reported) when it cannot. */
@@ -420,13 +445,22 @@ int main(int argc, char **argv)
         print_help(stdout);
         return EXIT_MATCH;
     }
-    if (o.diff_path != NULL && !check_diff_path(&o))
+    if ((o.diff_path != NULL && !check_diff_path(&o)) || !check_headers(&o))
         return EXIT_TROUBLE;
     Image a, b;
     if (!read_image(&a, o.paths[0]))
         return EXIT_TROUBLE;
     int status = EXIT_TROUBLE;
     if (read_image(&b, o.paths[1])) {
+        /* A PNG against linear values: the linear image is encoded as a PNG would be. */
+        bool linear[2] = {imgfile_is_linear(o.paths[0]), imgfile_is_linear(o.paths[1])};
+        if (linear[0] != linear[1]) {
+            encode_like_png(linear[0] ? &a : &b);
+            if (!o.quiet && !o.machine)
+                printf("note: %s holds linear values: compared as raytra would write them to "
+                       "a PNG (clamped to [0, 1], sRGB, 8 bits)\n",
+                       o.paths[linear[0] ? 0 : 1]);
+        }
         status = compare(&a, &b, &o);
         image_free(&b);
     }

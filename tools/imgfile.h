@@ -1,9 +1,18 @@
-/* imgfile.h: what kind of image a file holds, told by its first bytes, whatever its name. */
+/* imgfile.h: what a file holds, told from its first bytes and header without decoding it. */
 #ifndef RAYTRA_IMGFILE_H
 #define RAYTRA_IMGFILE_H
 
 #include <stdbool.h>
+#include <stdio.h>
 
-bool imgfile_is_pfm(const char *path);
+#include "diag.h"
+
+/* The image formats imgdiff and the grader tell apart. */
+typedef enum { IMGFILE_UNKNOWN, IMGFILE_PNG, IMGFILE_PFM, IMGFILE_EXR } ImgFileKind;
+
+int imgfile_open(const char *path, Error *err);
+FILE *imgfile_fopen(const char *path);
+bool imgfile_header(const char *path, ImgFileKind *kind, int *width, int *height, Error *err);
+bool imgfile_is_linear(const char *path);
 
 #endif

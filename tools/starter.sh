@@ -163,7 +163,7 @@ mkdir -p "$tmp/tools" "$tmp/tests" "$tmp/scenes" || exit 2
 copy_sources common solution
 cp "$top/common"/*.mk "$top/common/Makefile" "$tmp/common/" &&
     cp "$top/tools"/*.c "$top/tools"/*.h "$top/tools"/*.mk "$top/tools/Makefile" \
-        "$top/tools/deps.sh" "$top/tools/starter-check.sh" "$tmp/tools/" &&
+        "$top/tools/deps.sh" "$top/tools/docsnip.sh" "$top/tools/starter-check.sh" "$tmp/tools/" &&
     cp "$top/tests/testing.h" "$top/tests/regress.sh" "$tmp/tests/" || exit 2
 
 # USES names the earlier parts newest first; they are copied oldest first, so that the

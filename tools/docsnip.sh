@@ -1,0 +1,169 @@
+#!/bin/sh
+# docsnip: replaces each excerpt region of Markdown docs with the named excerpt of a source file.
+#
+# Usage: docsnip [--root DIR] --check|--update DOC.md...   docsnip --list SOURCE...
+# A source marks an excerpt with lines holding only  /* excerpt: NAME */ ... /* end excerpt:
+# NAME */  (or # excerpt: NAME); a doc quotes it between  <!-- excerpt: PATH NAME -->  and
+# <!-- end excerpt -->, which docsnip fills with a fenced block and the caption *From PATH*.
+# Exit status: 0 when all is well, 1 when a problem was found, 2 for bad usage.
+usage() { echo "docsnip: $1" >&2; echo "Try 'docsnip --help'." >&2; exit 2; }
+mode="" root=.
+while [ $# -gt 0 ]; do
+    case $1 in
+    -h | --help) sed -n '2,8s/^# \{0,1\}//p' "$0"; exit 0 ;;
+    --check | --update | --list) [ -z "$mode" ] || usage "choose one of --check, --update and --list"; mode=${1#--} ;;
+    --root) [ $# -gt 1 ] || usage "--root needs a folder"; root=$2; shift ;;
+    --root=*) root=${1#--root=} ;;
+    --) shift; break ;;
+    -*) usage "unknown option $1" ;;
+    *) break ;;
+    esac
+    shift
+done
+[ -n "$mode" ] || usage "say what to do: --check, --update or --list"
+[ $# -gt 0 ] || usage "no files given"
+new=$(mktemp) || exit 1
+trap 'rm -f "$new"' EXIT
+trap 'exit 1' HUP INT TERM
+
+# The awk program: reads sources and one doc (or lists one source); exit 1 on a problem,
+# 3 when the doc's new text (written to $new) differs from the old.
+program='
+function problem(where, line, text) { print where (line ? ":" line : "") ": " text >"/dev/stderr"; problems++ }
+function source_problem(path, line, text) { problem(path, line, text); STATE[path] = "bad" }
+# Returns "open", "close", "bad" for the words of a marker comment, "" for another comment;
+# sets MPATH and MNAME. In a doc an open marker takes PATH NAME; in a source, NAME.
+function marker(body, doc,   w, n, k) {
+    n = split(body, w, " "); k = w[1] == "end" ? 2 : 1
+    if (n < k || (w[k] != "excerpt" && substr(w[k], 1, 8) != "excerpt:")) return ""
+    if (doc && k == 2) return n == 2 && w[2] == "excerpt" ? "close" : "bad"
+    MPATH = w[k + 1]; MNAME = w[k + 1 + doc]
+    return w[k] == "excerpt:" && n == k + 1 + doc && MNAME ~ /^[a-z0-9-]+$/ && length(MNAME) <= 64 ? (k == 2 ? "close" : "open") : "bad"
+}
+function trim(s) { sub(/^[ \t]+/, "", s); sub(/[ \t]+$/, "", s); return s }
+# Returns the kind of marker the source line t is: a comment holding nothing else.
+function source_marker(t) {
+    t = trim(t)
+    if (substr(t, 1, 1) == "#") return marker(substr(t, 2), 0)
+    if (substr(t, 1, 2) == "/*" && length(t) >= 4 && substr(t, length(t) - 1) == "*/") return marker(substr(t, 3, length(t) - 4), 0)
+    return ""
+}
+# Reads the source at path (relative to the root) once, finding its excerpts and reporting
+# markers that do not pair up; returns "ok", "bad" (marker errors) or why it cannot be read.
+function load(path,   file, line, n, st, kind, key) {
+    if (path in STATE) return STATE[path]
+    file = root "/" path; n = 0; STATE[path] = "ok"
+    while ((st = (getline line <file)) > 0) {
+        sub(/\r$/, "", line); SRC[path, ++n] = line
+        if ((kind = source_marker(line)) == "") continue
+        ISM[path, n] = 1; key = path SUBSEP MNAME
+        if (kind == "bad") source_problem(path, n, "malformed excerpt marker: the comment must hold '\''excerpt: NAME'\'' or '\''end excerpt: NAME'\'', NAME made of a-z, 0-9 and '\''-'\''")
+        else if (kind == "open" && key in OPEN) source_problem(path, n, "excerpt '\''" MNAME "'\'' is defined twice (first on line " OPEN[key] ")")
+        else if (kind == "open") { OPEN[key] = n; NAMES[path, ++COUNT[path]] = MNAME }
+        else if (!(key in OPEN) || key in CLOSE) source_problem(path, n, "end of excerpt '\''" MNAME "'\'', which was never opened")
+        else CLOSE[key] = n
+    }
+    close(file)
+    if (st < 0) return STATE[path] = system("test -e \"" file "\"") ? "No such file or directory" : "Permission denied"
+    for (n = 1; n <= COUNT[path]; n++)
+        if (!((path, NAMES[path, n]) in CLOSE)) source_problem(path, OPEN[path, NAMES[path, n]], "excerpt '\''" NAMES[path, n] "'\'' is never closed")
+    return STATE[path]
+}
+function common(a, b,   i) { for (i = 1; i <= length(a) && substr(a, i, 1) == substr(b, i, 1); i++); return substr(a, 1, i - 1) }
+# Returns what a region quoting excerpt name of path holds: its lines but markers, less the
+# indentation its non-blank lines share, fenced by more backticks than any run in it.
+function block(path, name,   i, o, c, indent, seen, code, s, longest, fence, lang) {
+    o = OPEN[path, name]; c = CLOSE[path, name]
+    for (i = o + 1; i < c; i++)
+        if (!((path, i) in ISM) && SRC[path, i] !~ /^[ \t]*$/) {
+            match(SRC[path, i], /^[ \t]*/); s = substr(SRC[path, i], 1, RLENGTH)
+            indent = seen++ ? common(indent, s) : s
+        }
+    for (i = o + 1; i < c; i++)
+        if (!((path, i) in ISM)) code = code substr(SRC[path, i], length(common(SRC[path, i], indent)) + 1) "\n"
+    for (s = code; match(s, /`+/); s = substr(s, RSTART + RLENGTH)) if (RLENGTH > longest) longest = RLENGTH
+    for (fence = "``"; length(fence) <= longest || length(fence) < 3; ) fence = fence "`"
+    lang = path ~ /\.[ch]$/ ? "c" : path ~ /\.sh$/ ? "sh" : path ~ /(\.mk|(^|\/)(GNU)?[Mm]akefile)$/ ? "make" : ""
+    return fence lang "\n" code fence "\n*From " path "*\n"
+}
+# Follows the doc'\''s fenced code blocks; tells whether line t (number i) is in one.
+function fenced(t, i,   lead, c, run, rest) {
+    while (lead < 3 && substr(t, lead + 1, 1) == " ") lead++
+    c = substr(t, lead + 1, 1); if (c != "`" && c != "~") c = ""
+    while (c != "" && substr(t, lead + run + 1, 1) == c) run++
+    rest = substr(t, lead + run + 1)
+    if (FMARK != "") { if (c == FMARK && run >= FLEN && rest ~ /^[ \t]*$/) FMARK = ""; return 1 }
+    if (run < 3 || (c == "`" && index(rest, "`"))) return 0
+    FMARK = c; FLEN = run; FLINE = i; return 1
+}
+# Checks the region opened on line o and closed on line e, or brings it up to date.
+function region(o, e, path, name,   i, have, want, st) {
+    for (i = o + 1; i < e; i++) have = have L[i] "\n"
+    if (path !~ /^[A-Za-z0-9._\/-]+$/ || path ~ /^\// || ("/" path "/") ~ /\/\.\.\// || length(path) > 1024)
+        return problem(doc, o, "excerpt path '\''" path "'\'' must be relative to the root, without '\''..'\'', made of letters, digits, '\''.'\'', '\''_'\'', '\''-'\'' and '\''/'\''")
+    st = load(path)
+    if (st != "ok" && st != "bad") return problem(doc, o, "cannot read " path ": " st)
+    if (!((path, name) in OPEN)) return problem(doc, o, "no excerpt '\''" name "'\'' in " path)
+    if (st == "bad") return problem(doc, o, "excerpt '\''" name "'\'' cannot be used: " path " has marker errors (above)")
+    if (have == (want = block(path, name))) return
+    if (mode == "check") return problem(doc, o, "excerpt '\''" name "'\'' from " path " is stale; run '\''make docs'\''")
+    gsub(/\n/, E[o], want); OUT[o] = L[o] E[o] want; changed = 1
+    for (i = o + 1; i < e; i++) OUT[i] = ""
+}
+{ E[NR] = sub(/\r$/, "") ? "\r\n" : "\n"; L[NR] = $0 }
+END {
+    if (list != "") {
+        if ((st = load(list)) != "ok" && st != "bad") problem("docsnip", 0, "cannot read " list ": " st)
+        for (i = 1; i <= COUNT[list]; i++) print list ":" OPEN[list, NAMES[list, i]] ": " NAMES[list, i]
+        exit problems > 0
+    }
+    if (noeol) E[NR] = ""
+    for (i = 1; i <= NR; i++) {
+        OUT[i] = L[i] E[i]; t = trim(L[i])
+        if (fenced(L[i], i) || substr(t, 1, 4) != "<!--" || substr(t, length(t) - 2) != "-->") continue
+        kind = marker(substr(t, 5, length(t) - 7), 1)
+        if (kind == "bad") problem(doc, i, "malformed excerpt marker: write '\''<!-- excerpt: PATH NAME -->'\'' and '\''<!-- end excerpt -->'\'', NAME made of a-z, 0-9 and '\''-'\''")
+        else if (kind == "open") { if (open) problem(doc, open, "excerpt region not closed"); open = i; path = MPATH; name = MNAME }
+        else if (kind == "close" && !open) problem(doc, i, "end of an excerpt region never opened")
+        else if (kind == "close") { region(open, i, path, name); open = 0 }
+    }
+    if (open) problem(doc, open, "excerpt region not closed" (FMARK != "" ? " (its code fence on line " FLINE " is not closed either)" : ""))
+    else if (FMARK != "") problem(doc, FLINE, "code fence not closed: any excerpt marker after it is unseen")
+    for (i = 1; i <= NR; i++) printf "%s", OUT[i] >out
+    exit problems ? 1 : changed ? 3 : 0
+}'
+
+status=0
+for file; do
+    if [ "$mode" = list ]; then
+        awk -v root=. -v list="$file" "$program" </dev/null || status=1
+        continue
+    fi
+    if [ ! -r "$file" ] || [ -d "$file" ]; then
+        echo "docsnip: cannot read $file: $( [ -e "$file" ] && echo Permission denied || echo No such file or directory)" >&2
+        status=1
+        continue
+    fi
+    noeol=0
+    [ -s "$file" ] && [ "$(tail -c 1 "$file" | od -An -c | tr -d ' ')" != '\n' ] && noeol=1
+    awk -v root="$root" -v doc="$file" -v mode="$mode" -v out="$new" -v noeol=$noeol "$program" "$file"
+    case $? in
+    0) ;;
+    3)  # Replaced whole through a temporary beside the real file, which keeps its mode;
+        # a symbolic link stays a link.
+        real=$(readlink -f -- "$file")
+        if ! temp=$(mktemp "$real.docsnip-XXXXXX" 2>&1); then
+            echo "docsnip: cannot write $file: ${temp##*: }" >&2
+            status=1
+        elif cp -p -- "$real" "$temp" && cat "$new" >"$temp" && mv -f -- "$temp" "$real"; then
+            echo "updated $file"
+        else
+            rm -f "$temp"
+            echo "docsnip: cannot write $file" >&2
+            status=1
+        fi ;;
+    *)  [ "$mode" = update ] && echo "$file: not updated because of the problems above" >&2
+        status=1 ;;
+    esac
+done
+exit $status
