@@ -50,6 +50,23 @@ const CliOption cli_options[] = {
              "2: draw the BVH's leaf boxes; 3 (the default): the BVH",
      .field = FIELD(mode), .fallback = 3, .min = 0, .max = 3, .first_part = 14,
      .last_part = 15, .argument = "MODE"},
+    {.name = "samples", .kind = OPTION_INT, .metavar = "P",
+     .help = "trace P x P primary rays per pixel, one in each of P x P sub-squares "
+             "(default 1, through the pixel's centre; at most 64)",
+     .field = FIELD(samples), .fallback = 1, .min = 1, .max = 64, .first_part = 16,
+     .last_part = 16, .argument = "P"},
+    {.name = "light-samples", .kind = OPTION_INT, .metavar = "S",
+     .help = "trace S x S shadow rays to every area light at every hit (default 1; at most 64)",
+     .field = FIELD(light_samples), .fallback = 1, .min = 1, .max = 64, .first_part = 16,
+     .last_part = 16, .argument = "S"},
+    {.name = "seed", .kind = OPTION_INT, .metavar = "N",
+     .help = "pick other random numbers; the same seed always gives the same image (default 0)",
+     .field = FIELD(seed), .min = 0, .max = 2147483647, .first_part = 16, .last_part = 16},
+    {.name = "sampling", .kind = OPTION_TEXT, .metavar = "NAME",
+     .help = "how sample points are placed: random (independent), jittered (one in each "
+             "sub-square, pixel and light apart) or correlated (jittered, and with S = 1 the "
+             "shadow rays of a pixel's P x P rays cover the light evenly; the default)",
+     .field = FIELD(sampling_name), .first_part = 16, .last_part = 16},
     {.name = "help", .letter = 'h', .help = "show this help and exit", .field = FIELD(help)},
     {.name = "version", .help = "show the version and exit", .field = FIELD(version)},
     {0},

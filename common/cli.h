@@ -39,6 +39,11 @@ typedef struct {
     double ray_offset; /* where secondary rays start, relative to the coordinates */
     /* Parts 1.4 and 1.5. */
     int mode; /* the course's box modes 0-3 */
+    /* Part 1.6. */
+    int samples;               /* P: P x P primary rays per pixel */
+    int light_samples;         /* S: S x S shadow rays per area light at every hit */
+    int seed;                  /* picks the random numbers; the same seed, the same image */
+    const char *sampling_name; /* random, jittered or correlated (the default) */
 } Options;
 
 /* excerpt: cli-option */

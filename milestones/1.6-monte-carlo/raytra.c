@@ -1,0 +1,57 @@
+/* raytra.c: part 1.6: Monte Carlo ray tracing: jittered rays per pixel and soft shadows of area lights. */
+#include <stdlib.h>
+
+#include "app.h"
+#include "montecarlo.h"
+#include "surfaces.h"
+#include "trace.h"
+
+/* excerpt: setup */
+/* Builds the camera, the tracer and the sampling of the scene. The geometry and the
+ * radiance along a ray come from the parts below: these two lines name them. */
+static bool setup(const Scene *scene, const Options *opts, void **ctx)
+{
+    MonteCarlo *mc = malloc(sizeof *mc);
+    if (mc == NULL)
+        return false;
+    Surfaces surfaces = surfaces_brute_force(scene);
+    RadianceFn radiance = trace_radiance;
+    if (!montecarlo_init(mc, scene, surfaces, radiance, opts)) {
+        free(mc);
+        return false;
+    }
+    *ctx = mc;
+    return true;
+}
+/* end excerpt: setup */
+
+/* Part 1.6's pixel: the mean of its P x P samples. */
+static Color sample_pixel(const void *ctx, int i, int j, RayStats *stats)
+{
+    return montecarlo_pixel(ctx, i, j, stats);
+}
+
+/* Frees the part's state. */
+static void cleanup(void *ctx)
+{
+    montecarlo_free(ctx);
+    free(ctx);
+}
+
+static const Program program = {
+    .cli = {.part = "1.6-monte-carlo",
+            .purpose = "Monte Carlo ray tracing: P x P jittered rays per pixel, S x S shadow "
+                       "rays per area light"},
+    .features = FEATURE_SPHERES | FEATURE_PLANES | FEATURE_TRIANGLES | FEATURE_POINT_LIGHTS |
+                FEATURE_DIRECTIONAL_LIGHTS | FEATURE_AREA_LIGHTS | FEATURE_AMBIENT_LIGHT |
+                FEATURE_MIRRORS | FEATURE_SHADING,
+    .setup = setup,
+    .pixel = sample_pixel,
+    .cleanup = cleanup,
+};
+
+/* Renders a scene by the rules of part 1.6. */
+int main(int argc, char **argv)
+{
+    return app_main(&program, argc, argv);
+}
