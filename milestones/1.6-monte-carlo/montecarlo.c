@@ -106,8 +106,10 @@ Color montecarlo_direct_radiance(const Tracer *tr, const Hit *hit, Ray r, int de
 /* excerpt: montecarlo-pixel */
 /* Returns the colour of pixel (i, j): the mean radiance of P x P rays through it, ray k
  * through a random point of sub-square k (jittered), or through its centre when P = 1.
- * Each ray has its own random numbers, from (seed, pixel, k) alone, so that no pixel
- * depends on which thread renders it, or when. */
+ * The lecture's one ray per pixel, at "u = l + (r - l)(i + 0.5)/n_x" (slide 38), samples
+ * the image at one point and aliases (slide 75, "note aliasing"); P x P points average
+ * the pixel's area. Each ray has its own random numbers, from (seed, pixel, k) alone, so
+ * that no pixel depends on which thread renders it, or when. */
 Color montecarlo_pixel(const MonteCarlo *mc, int i, int j, RayStats *stats)
 {
     int side = mc->pixel_side, count = side * side;
