@@ -8,6 +8,7 @@
 #   make valgrind    render scenes of every part, and broken inputs, under valgrind's memcheck
 #   make fuzz        build the libFuzzer harnesses of the scene and OBJ readers (clang)
 #   make fuzz-run    fuzz each reader for FUZZ_SECONDS (default 1800) s (docs/robustness.md)
+#   make mistakes    render the gallery of common mistakes and write docs/mistakes.md
 #
 # WERROR=1 turns warnings into errors; SANITIZE=1 builds and tests everything
 # with AddressSanitizer and UndefinedBehaviorSanitizer.
@@ -25,9 +26,9 @@ FIRST    := $(call program,$(firstword $(PARTS)))
 COURSE_SCALE ?= 0.05
 FUZZ_SECONDS ?= 1800
 
-.PHONY: all test demo references docs check-docs check-layout check-course clean \
+.PHONY: all test demo references docs check-docs check-slides check-figures check-layout check-course clean \
         check-robust check-fuzz-regressions check-bad-input check-interrupt check-nonfinite \
-        check-course-render valgrind fuzz fuzz-run
+        check-course-render valgrind fuzz fuzz-run mistakes
 .NOTPARALLEL:
 
 all:
@@ -42,7 +43,8 @@ test:
 	@$(SUBMAKE) -C tests test
 	@$(SUBMAKE) -C tools test
 	@for part in $(PARTS); do $(SUBMAKE) -C milestones/$$part test || exit 1; done
-	@$(SUBMAKE) check-docs check-layout check-course
+	@$(SUBMAKE) -C tools/mistakes
+	@$(SUBMAKE) check-docs check-slides check-figures check-exercises check-layout check-course
 	@$(SUBMAKE) check-robust
 	@echo "make test: every test passed"
 
@@ -92,8 +94,20 @@ check-docs:
 	@$(SUBMAKE) -C tools docsnip
 	@$(DOCSNIP) --root . --check $(CHAPTERS) && echo "check-docs: every excerpt matches the source"
 
+# Every SVG of docs/figures is well-formed with a viewBox; every figure linked to exists.
+check-figures:
+	@tests/figures.sh
+
 check-layout:
 	@tools/check-layout.sh $(BUILD)
+
+# Every pixel answer of the chapters' exercises agrees with a render (docs/exercises-answers.md).
+check-exercises:
+	@scenes/exercises/check.sh
+
+# Every "slide N" in the project quotes words that stand on slide N of the lecture.
+check-slides:
+	@tests/slides.sh
 
 docs:
 	@$(SUBMAKE) -C tools docsnip
@@ -107,6 +121,11 @@ demo: all
 	@echo; echo "make demo: the demo scene as each part draws it:"; \
 	for part in $(PARTS); do echo "    out/demo-$$part.png"; done
 
+# The gallery of common mistakes: part 1.3 with one function broken at a time.
+mistakes: all
+	@$(SUBMAKE) -C tools/mistakes
+	@tools/mistakes/gallery.sh
+
 references:
 	$(DEPS_STEP)
 	@for part in $(PARTS); do $(SUBMAKE) -C milestones/$$part references || exit 1; done
@@ -116,5 +135,6 @@ clean:
 	@$(SUBMAKE) -C tests clean
 	@$(SUBMAKE) -C tests/fuzz clean
 	@$(SUBMAKE) -C tools clean
+	@$(SUBMAKE) -C tools/mistakes clean
 	@for part in $(PARTS); do $(SUBMAKE) -C milestones/$$part clean; done
 	rm -rf out

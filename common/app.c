@@ -7,6 +7,7 @@
 #include <string.h>
 #include <unistd.h>
 
+#include "explain.h"
 #include "image.h"
 #include "outfile.h"
 #include "stop.h"
@@ -113,19 +114,104 @@ static bool check_scene(const Program *program, const Options *opts)
     return true;
 }
 
-/* Renders the scene with the part's pixel function into img; false when stopped. */
-static bool render(const Program *program, void *ctx, const Options *opts, Image *img,
-                   RenderResult *result)
+/* Reads "X,Y" into the pixel's column and row; false (reported) when it is not one of
+ * the image's pixels. */
+static bool parse_pixel(const char *text, const CameraSpec *c, int *x, int *y)
 {
+    int used = 0;
+    if (sscanf(text, "%d,%d%n", x, y, &used) != 2 || text[used] != '\0' ||
+        strspn(text, "0123456789,") != strlen(text)) {
+        fprintf(stderr, "raytra: --trace-pixel takes X,Y (column, row), got '%s'\n", text);
+        return false;
+    }
+    if (*x >= c->nx || *y >= c->ny) {
+        fprintf(stderr,
+                "raytra: --trace-pixel %s is outside the %d x %d image "
+                "(columns 0 to %d, rows 0 to %d from the top)\n",
+                text, c->nx, c->ny, c->nx - 1, c->ny - 1);
+        return false;
+    }
+    return true;
+}
+
+/* Traces the one pixel (x, y) of --trace-pixel, printing its ray tree and its colour
+ * before and after clamping and encoding. Row y counts from the top, as in the image;
+ * the pixel function's j counts from the bottom, as in the lecture:
+ * slide 38 ("relationship of (i, j) th pixel in image plane to u, v"). */
+static void trace_one_pixel(const Program *program, const void *ctx, const Scene *scene,
+                            const Options *opts, int x, int y)
+{
+    const CameraSpec *c = &scene->camera;
+    int j = c->ny - 1 - y;
+    printf("pixel %d,%d of %d x %d (column from the left, row from the top): i = %d, "
+           "j = %d counted from the bottom, its centre at image point (%g, %g)\n",
+           x, y, c->nx, c->ny, x, j, x + 0.5, j + 0.5);
+    RayStats stats = {{0}};
+    Color radiance = program->pixel(ctx, x, j, &stats);
+    PngEncoding enc = opts->linear ? PNG_ENCODING_LINEAR : PNG_ENCODING_SRGB;
+    printf("colour (%.9g, %.9g, %.9g); clamped to [0, 1]: (%.9g, %.9g, %.9g); in a PNG "
+           "(%s): (%d, %d, %d)\n",
+           radiance.r, radiance.g, radiance.b, fmin(fmax(radiance.r, 0), 1),
+           fmin(fmax(radiance.g, 0), 1), fmin(fmax(radiance.b, 0), 1),
+           opts->linear ? "linear" : "sRGB", image_encode_8bit(radiance.r, enc),
+           image_encode_8bit(radiance.g, enc), image_encode_8bit(radiance.b, enc));
+}
+
+/* Tells whether the --view asked for, if any, is one this part can draw; says why not. */
+static bool view_usable(const Program *program, const Options *opts)
+{
+    ViewKind kind;
+    if (opts->view == NULL)
+        return true;
+    if (!debugview_from_name(opts->view, &kind)) {
+        fprintf(stderr, "raytra: unknown view '%s' (%s)\n", opts->view, debugview_names());
+        return false;
+    }
+    if (program->probe == NULL ||
+        (kind == VIEW_BOX_TESTS && cli_part_number(program->cli.part) < 14)) {
+        fprintf(stderr, "raytra: part %s cannot draw the view '%s'%s\n", program->cli.part,
+                opts->view, kind == VIEW_BOX_TESTS ? " (boxes come in part 1.4)" : "");
+        return false;
+    }
+    return true;
+}
+
+/* What --view's pixel function reads: the part's probe and state, and the view. */
+typedef struct {
+    const Program *program;
+    const void *ctx;
+    ViewKind kind;
+} ViewJob;
+
+/* The pixel function of --view: the colour of what the camera ray meets first. */
+static Color view_pixel(const void *ctx, int i, int j, RayStats *stats)
+{
+    const ViewJob *view = ctx;
+    Probe probe = {0};
+    view->program->probe(view->ctx, i, j, &probe);
+    stats->rays[RAY_PRIMARY]++;
+    return debugview_color(view->kind, &probe);
+}
+
+/* Renders the scene with the part's pixel function, or the view's, into img; false
+ * when stopped. */
+static bool render(const Program *program, void *ctx, const Options *opts, const Scene *scene,
+                   Image *img, RenderResult *result)
+{
+    ViewJob view = {program, ctx, VIEW_NONE};
+    if (opts->view != NULL)
+        debugview_from_name(opts->view, &view.kind);
     RenderJob job = {
-        .pixel = program->pixel,
-        .ctx = ctx,
+        .pixel = view.kind != VIEW_NONE ? view_pixel : program->pixel,
+        .ctx = view.kind != VIEW_NONE ? (const void *)&view : ctx,
         .threads = opts->threads,
         .progress = !opts->quiet && isatty(STDERR_FILENO),
     };
     render_image(img, &job, result);
     if (result->stopped)
         return false;
+    if (view.kind != VIEW_NONE)
+        debugview_finish(view.kind, img, scene->light_count, stderr);
     if (result->nonfinite > 0)
         fprintf(stderr,
                 "raytra: warning: %ld pixels came out NaN or infinite and were written black "
@@ -142,6 +228,8 @@ int app_main(const Program *program, int argc, char **argv)
     if (cli != CLI_RUN)
         return cli == CLI_DONE ? EXIT_SUCCESS : EXIT_USAGE;
 
+    if (!view_usable(program, &opts))
+        return EXIT_USAGE;
     char *output = opts.output ? strdup(opts.output) : cli_default_output(opts.scene);
     if (output == NULL) {
         fprintf(stderr, "raytra: out of memory\n");
@@ -174,15 +262,29 @@ int app_main(const Program *program, int argc, char **argv)
     if (!loaded || !apply_scale(&scene, &opts))
         goto done;
     note_ignored(program, &scene);
+    int trace_x, trace_y;
+    Explain explain = {stdout, &scene};
+    if (opts.trace_pixel != NULL) {
+        if (!parse_pixel(opts.trace_pixel, &scene.camera, &trace_x, &trace_y)) {
+            status = EXIT_USAGE;
+            goto done;
+        }
+        opts.explain = &explain;
+    }
     if (program->setup != NULL && !program->setup(&scene, &opts, &ctx))
         goto done;
+    if (opts.trace_pixel != NULL) {
+        trace_one_pixel(program, ctx, &scene, &opts, trace_x, trace_y);
+        status = EXIT_SUCCESS;
+        goto done;
+    }
     if (!image_init(&img, scene.camera.nx, scene.camera.ny)) {
         fprintf(stderr, "raytra: not enough memory for a %d x %d image\n", scene.camera.nx,
                 scene.camera.ny);
         goto done;
     }
     RenderResult result;
-    if (render(program, ctx, &opts, &img, &result) && write_image(&img, output, &opts)) {
+    if (render(program, ctx, &opts, &scene, &img, &result) && write_image(&img, output, &opts)) {
         status = EXIT_SUCCESS;
         if (!opts.quiet) {
             print_summary(output, &img, &opts, &result);

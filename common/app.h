@@ -5,6 +5,7 @@
 #include <stdbool.h>
 
 #include "cli.h"
+#include "debugview.h"
 #include "render.h"
 #include "scene.h"
 
@@ -15,6 +16,8 @@ typedef struct {
     /* Builds the state pixel reads from the loaded scene; false (reported) on failure. */
     bool (*setup)(const Scene *scene, const Options *opts, void **ctx);
     PixelFn pixel;
+    /* Tells what a pixel's camera ray meets first, for --view; NULL if the part cannot. */
+    ProbeFn probe;
     /* Prints part-specific figures after the summary line; may be NULL. */
     void (*report)(const void *ctx, const RenderResult *result);
     void (*cleanup)(void *ctx);

@@ -12,6 +12,7 @@
 #define FIELD(name) offsetof(Options, name)
 
 /* excerpt: cli-options */
+/* clang-format off */
 const CliOption cli_options[] = {
     {.name = "output", .letter = 'o', .kind = OPTION_TEXT, .metavar = "FILE",
      .help = "write the image to FILE (same as OUTPUT)", .field = FIELD(output)},
@@ -35,6 +36,15 @@ const CliOption cli_options[] = {
      .field = FIELD(linear)},
     {.name = "strict", .help = "fail (exit 1) when a pixel comes out NaN or infinite",
      .field = FIELD(strict)},
+    {.name = "trace-pixel", .kind = OPTION_TEXT, .metavar = "X,Y",
+     .help = "print the ray tree of the pixel in column X, row Y (0,0 is the top-left "
+             "corner, as in image viewers) and write no image",
+     .field = FIELD(trace_pixel)},
+    {.name = "view", .kind = OPTION_TEXT, .metavar = "NAME",
+     .help = "draw what each camera ray meets instead of its light: normal, depth, id "
+             "(a colour per surface), material (kd), light-count (lights that reach the "
+             "point), box-tests (from part 1.4: a heat map of the tests per ray)",
+     .field = FIELD(view)},
     {.name = "two-sided",
      .help = "shade the backs of triangles and planes with their own material, not lit yellow",
      .field = FIELD(two_sided), .first_part = 12},
@@ -71,6 +81,7 @@ const CliOption cli_options[] = {
     {.name = "version", .help = "show the version and exit", .field = FIELD(version)},
     {0},
 };
+/* clang-format on */
 /* end excerpt: cli-options */
 
 enum { MAX_OPTIONS = 64 };
@@ -224,7 +235,8 @@ CliResult cli_parse(const CliSpec *spec, int argc, char **argv, Options *opts)
 
     opterr = 0;
     optind = 0; /* glibc: start afresh, also on a second call */
-    for (int c, index = -1; (c = getopt_long(argc, argv, shorts, longs, &index)) != -1; index = -1) {
+    int c, index = -1;
+    while ((c = getopt_long(argc, argv, shorts, longs, &index)) != -1) {
         const CliOption *o = NULL;
         if (c >= 256)
             o = accepted[c - 256];
@@ -240,6 +252,7 @@ CliResult cli_parse(const CliSpec *spec, int argc, char **argv, Options *opts)
         snprintf(shown, sizeof shown, "--%s", o->name);
         if (!set_value(o, shown, optarg, opts))
             return CLI_BAD_USAGE;
+        index = -1;
     }
     if (opts->help) {
         cli_print_help(spec, stdout);

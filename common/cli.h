@@ -1,4 +1,4 @@
-/* cli.h: the command line of every part, from one table of options: raytra SCENE [OUTPUT] [options]. */
+/* cli.h: the command line of every part, from one table of options. */
 #ifndef RAYTRA_CLI_H
 #define RAYTRA_CLI_H
 
@@ -32,6 +32,9 @@ typedef struct {
     bool convention_given; /* on the command line: it overrides the scene file */
     double scale;
     bool help, version;
+    const char *trace_pixel;      /* "X,Y": print that pixel's ray tree, write no image */
+    const char *view;             /* a debug view's name: draw it instead of the light */
+    const struct Explain *explain; /* set by app_main while tracing that pixel; else NULL */
     /* From part 1.2 on. */
     bool two_sided; /* shade back faces with their own material */
     /* From part 1.3 on. */

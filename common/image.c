@@ -48,6 +48,16 @@ double image_srgb_encode(double linear)
     return 1.055 * pow(linear, 1.0 / 2.4) - 0.055;
 }
 
+/* Returns the 8-bit code a PNG stores for a linear value: NaN becomes 0, the rest is
+ * clamped to [0, 1], encoded (unless linear), and rounded to the nearest of 256 steps. */
+int image_encode_8bit(double linear, PngEncoding encoding)
+{
+    double v = isnan(linear) ? 0.0 : fmin(fmax(linear, 0.0), 1.0);
+    if (encoding == PNG_ENCODING_SRGB)
+        v = image_srgb_encode(v);
+    return (int)(v * 255 + 0.5);
+}
+
 /* Returns the linear value of an sRGB-encoded one: the inverse of image_srgb_encode. */
 double image_srgb_decode(double encoded)
 {

@@ -58,6 +58,7 @@ static inline Color image_get(const Image *img, int x, int y)
 
 double image_srgb_encode(double linear);
 double image_srgb_decode(double encoded);
+int image_encode_8bit(double linear, PngEncoding encoding);
 ImageFormat image_format_for_path(const char *path);
 
 bool image_write(const Image *img, const char *path, PngEncoding encoding, Error *err);

@@ -53,15 +53,6 @@ static void read_bytes(png_structp png, png_bytep data, size_t length)
         png_error(png, ferror(f) ? strerror(errno) : "truncated");
 }
 
-/* Returns the 8-bit code of a linear value: NaN becomes 0, the rest is clamped to
- * [0, 1], encoded, and rounded to the nearest of the 256 steps. */
-static png_byte quantise(float linear, PngEncoding encoding)
-{
-    double v = isnan(linear) ? 0.0 : fmin(fmax(linear, 0.0), 1.0);
-    if (encoding == PNG_ENCODING_SRGB)
-        v = image_srgb_encode(v);
-    return (png_byte)(int)(v * 255 + 0.5);
-}
 
 /* Writes img as 8-bit RGB; false (in the error handler's message) when libpng fails. */
 static bool write_png(png_structp png, png_infop info, const Image *img, PngEncoding encoding,
@@ -81,7 +72,7 @@ static bool write_png(png_structp png, png_infop info, const Image *img, PngEnco
     for (int y = 0; y < img->height; y++) {
         const float *p = img->pixels + 3L * y * img->width;
         for (long k = 0; k < 3L * img->width; k++)
-            row[k] = quantise(p[k], encoding);
+            row[k] = (png_byte)image_encode_8bit(p[k], encoding);
         png_write_row(png, row);
     }
     png_write_end(png, NULL);

@@ -69,6 +69,7 @@ static int current_material(Parser *p)
               "geometry before the first material (m) gets the default material "
               "(grey diffuse 0.5, no highlight, no mirror)");
     s->materials[s->material_count] = scene_default_material;
+    s->materials[s->material_count].line = p->line;
     p->material = s->material_count++;
     return p->material;
 }
@@ -132,15 +133,15 @@ static void parse_sphere(Parser *p, const double *v, int n, char *const *words)
     Scene *s = p->scene;
     int material = current_material(p);
     if (ROOM_FOR(p, s->spheres, s->sphere_count, p->sphere_capacity))
-        s->spheres[s->sphere_count++] = (Sphere){vec3(v[0], v[1], v[2]), v[3], material};
+        s->spheres[s->sphere_count++] = (Sphere){vec3(v[0], v[1], v[2]), v[3], material, p->line};
 }
 
-/* Adds triangle abc in the current material, skipping (with a warning) one without area. */
+/* Appends triangle abc, given on the line being read (a t or w line), in material. */
 static void add_triangle(Parser *p, Vec3 a, Vec3 b, Vec3 c, int material)
 {
     Scene *s = p->scene;
     if (ROOM_FOR(p, s->triangles, s->triangle_count, p->triangle_capacity))
-        s->triangles[s->triangle_count++] = (Triangle){a, b, c, material};
+        s->triangles[s->triangle_count++] = (Triangle){a, b, c, material, p->line};
 }
 
 /* t x1 y1 z1 x2 y2 z2 x3 y3 z3: a triangle, counterclockwise seen from its front. */
@@ -165,7 +166,7 @@ static void parse_plane(Parser *p, const double *v, int n, char *const *words)
     Scene *s = p->scene;
     int material = current_material(p);
     if (ROOM_FOR(p, s->planes, s->plane_count, p->plane_capacity))
-        s->planes[s->plane_count++] = (Plane){normal, v[3], material};
+        s->planes[s->plane_count++] = (Plane){normal, v[3], material, p->line};
 }
 
 /* c x y z vx vy vz d iw ih pw ph: the camera (exactly one per scene). */
@@ -217,6 +218,7 @@ static bool light_color(Parser *p, const double *v, int n, char *const *words, C
 static void add_light(Parser *p, Light light)
 {
     Scene *s = p->scene;
+    light.line = p->line;
     if (ROOM_FOR(p, s->lights, s->light_count, p->light_capacity))
         s->lights[s->light_count++] = light;
 }
@@ -312,6 +314,7 @@ static void parse_material(Parser *p, const double *v, int n, char *const *words
     }
     Scene *s = p->scene;
     if (ok && ROOM_FOR(p, s->materials, s->material_count, p->material_capacity)) {
+        m.line = p->line;
         s->materials[s->material_count] = m;
         p->material = s->material_count++;
     }
@@ -554,7 +557,7 @@ static void finish_planes(Scene *s)
     for (int k = 0; k < s->plane_count; k++) {
         Plane *pl = &s->planes[k];
         double len = vec3_length(pl->normal);
-        /* Slide 45: "d is measured in direction of normal", so d stays the distance
+        /* Slide 45 ("d is measured in direction of normal"): so d stays the distance
          * along the unit normal, whatever length N was given with; p.N = d is
          * p.N + (-d) = 0. */
         pl->normal = vec3_scale(pl->normal, 1.0 / len);

@@ -37,12 +37,14 @@ typedef struct {
     Color mirror;      /* km: ideal (mirror) specular reflectance */
     double ior;        /* index of refraction; 0 for an opaque material */
     Color attenuation; /* transmitted fraction per unit distance inside, (0, 1] */
+    int line;          /* the scene file's line that gave it; 0 for none */
 } Material;
 
 typedef struct {
     Vec3 center;
     double radius;
     int material;
+    int line; /* the scene file's line that gave it, for messages and --trace-pixel */
 } Sphere;
 
 /* A plane, always stored in the lecture's form p.normal + d = 0 with |normal| = 1. */
@@ -50,12 +52,14 @@ typedef struct {
     Vec3 normal;
     double d;
     int material;
+    int line;
 } Plane;
 
 /* A triangle whose front side sees a, b, c counterclockwise. */
 typedef struct {
     Vec3 a, b, c;
     int material;
+    int line; /* its t line, or the w line of its mesh */
 } Triangle;
 
 typedef enum { LIGHT_POINT, LIGHT_DIRECTIONAL, LIGHT_AREA } LightKind;
@@ -68,6 +72,7 @@ typedef struct {
     Vec3 u, v;      /* area: unit edge directions, v = u x direction */
     double size;    /* area: length of a side */
     Color color;    /* r g b, times i when the line gives one */
+    int line;
 } Light;
 
 typedef struct {

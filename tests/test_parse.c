@@ -224,7 +224,8 @@ END_TEST
 START_TEST(plane_lecture_convention)
 {
     /* p.N + d = 0 with N = (0,2,0), d = 4: d is the distance along the unit normal
-     * (slide 45), so the plane is y = -4 (not 2y + 4 = 0), stored as N = (0,1,0), d = 4. */
+     * (slide 45 ("d is measured in direction of normal")), so the plane is y = -4
+     * (not 2y + 4 = 0), stored as N = (0,1,0), d = 4. */
     Loaded l = load(CAMERA "p 0 2 0 4\n");
     ck_assert_msg(l.ok, "%s", l.messages);
     ck_assert_int_eq(l.scene.convention, CONVENTION_LECTURE);

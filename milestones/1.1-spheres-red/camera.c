@@ -1,4 +1,4 @@
-/* camera.c: building the camera frame (slides 33-41) and the ray through a point of the image. */
+/* camera.c: the camera frame and the ray through a point of the image plane. */
 #include "camera.h"
 
 /* excerpt: camera-make */
@@ -8,12 +8,14 @@ Camera camera_make(const CameraSpec *spec)
     Camera cam = {.eye = spec->eye, .focal = spec->focal, .nx = spec->nx, .ny = spec->ny};
     Vec3 view = vec3_normalize(spec->view);
 
-    /* Slide 40: u = D x up, v = u x D, w = -D, with up = [0 1 0]. */
+    /* u = D x up, v = u x D, w = -D, with up = [0 1 0]:
+     * slide 41 ("constructing a camera frame"). */
     Vec3 up = vec3(0, 1, 0);
     Vec3 u = vec3_cross(view, up);
-    /* When D is parallel to up, D x up is zero and the recipe fails (slide 40's n.b.).
-     * Then the image's up is taken where it would be had the camera tilted straight
-     * up or down from looking along -z: +z when looking up, -z when looking down. */
+    /* When D is parallel to up, D x up is zero and the recipe fails:
+     * slide 41 ("this won't work when D is"). Then the image's up is taken where it
+     * would be had the camera tilted straight up or down from looking along -z: +z
+     * when looking up, -z when looking down. */
     if (!(vec3_length(u) > 1e-12)) {
         up = vec3(0, 0, view.y > 0 ? 1 : -1);
         u = vec3_cross(view, up);
@@ -22,7 +24,8 @@ Camera camera_make(const CameraSpec *spec)
     cam.v = vec3_normalize(vec3_cross(cam.u, view));
     cam.w = vec3_neg(view);
 
-    /* The image plane is centred on the view axis: l = -r and b = -t (slide 37). */
+    /* The image plane is centred on the view axis, l = -r and b = -t:
+     * slide 38 ("usually, an image is centered"). */
     cam.right = spec->width / 2;
     cam.left = -cam.right;
     cam.top = spec->height / 2;
@@ -36,11 +39,13 @@ Camera camera_make(const CameraSpec *spec)
  * from the bottom-left corner: pixel (i, j) has its centre at (i + 0.5, j + 0.5). */
 Ray camera_ray(const Camera *cam, double x, double y)
 {
-    /* Slide 37: u = l + (r - l)(i + 0.5)/nx and v = b + (t - b)(j + 0.5)/ny. */
+    /* u = l + (r - l)(i + 0.5)/nx and v = b + (t - b)(j + 0.5)/ny:
+     * slide 38 ("relationship of (i, j) th pixel in image plane to u, v"). */
     double u = cam->left + (cam->right - cam->left) * x / cam->nx;
     double v = cam->bottom + (cam->top - cam->bottom) * y / cam->ny;
 
-    /* Slide 36: the direction -d w + u u + v v, normalised. */
+    /* The direction -d w + u u + v v, normalised:
+     * slide 37 ("generating rays for a perspective camera"). */
     Vec3 dir = vec3_scale(cam->w, -cam->focal);
     dir = vec3_add_scaled(dir, cam->u, u);
     dir = vec3_add_scaled(dir, cam->v, v);

@@ -1,4 +1,5 @@
-/* sphere.c: the ray-sphere intersection of slides 50-52, computed without cancellation. */
+/* sphere.c: the ray-sphere intersection, computed without cancellation.
+ * Slides 51-53 ("spheres - intersections"). */
 #include "sphere.h"
 
 #include <math.h>

@@ -1,4 +1,5 @@
-/* hit.h: the intersection record of slide 53: what a ray hit, where, and facing which way. */
+/* hit.h: the intersection record: what a ray hit, where, and facing which way.
+ * Slide 54 ("for ray/surface intersection tests, we need to record"). */
 #ifndef RAYTRA_HIT_H
 #define RAYTRA_HIT_H
 

@@ -1,4 +1,4 @@
-/* plane.c: the ray-plane intersection of slide 46. */
+/* plane.c: the ray-plane intersection of slide 47 ("ray-plane intersection"). */
 #include "plane.h"
 
 /* excerpt: plane-intersect */

@@ -13,14 +13,40 @@
 static Color shade_pixel(const void *ctx, int i, int j, RayStats *stats)
 {
     const View *view = ctx;
+    const Explain *explain = view->opts->explain;
     Ray r = camera_ray(&view->camera, i + 0.5, j + 0.5);
     stats->rays[RAY_PRIMARY]++;
+    explain_ray(explain, 0, "camera", r);
     Hit hit;
-    if (!world_hit(view->scene, r, 0, INFINITY, &hit))
+    if (!world_hit(view->scene, r, 0, INFINITY, &hit)) {
+        explain_line(explain, 1, "hits nothing: the black background");
         return color(0, 0, 0);
-    return shade_direct_radiance(view->scene, &hit, r, view->opts->two_sided);
+    }
+    world_explain_hit(explain, 1, &hit);
+    return shade_direct_radiance(view->scene, &hit, r, view->opts->two_sided, explain);
 }
 /* end excerpt: shade-pixel */
+
+/* Tells --view what the camera ray meets first, and how many lights face the point. */
+static void probe_pixel(const void *ctx, int i, int j, Probe *probe)
+{
+    const View *view = ctx;
+    const Scene *scene = view->scene;
+    Ray r = camera_ray(&view->camera, i + 0.5, j + 0.5);
+    Hit hit;
+    if (!world_hit(scene, r, 0, INFINITY, &hit))
+        return;
+    Vec3 n = shade_normal(&hit);
+    *probe = (Probe){.hit = true,
+                     .t = hit.t,
+                     .normal = n,
+                     .surface = world_surface_id(scene, &hit),
+                     .kd = shade_material(scene, &hit, view->opts->two_sided)->diffuse};
+    for (int k = 0; k < scene->light_count; k++) {
+        Incident in = light_incident(&scene->lights[k], hit.point, false);
+        probe->lights_visible += vec3_dot(n, in.dir) > 0;
+    }
+}
 
 /* Builds the view, saying first how area lights are lit in this part. */
 static bool setup(const Scene *scene, const Options *opts, void **ctx)
@@ -36,6 +62,7 @@ static const Program program = {
                 FEATURE_DIRECTIONAL_LIGHTS | FEATURE_AREA_LIGHTS | FEATURE_SHADING,
     .setup = setup,
     .pixel = shade_pixel,
+    .probe = probe_pixel,
     .cleanup = free,
 };
 

@@ -4,27 +4,60 @@
 #include <math.h>
 
 /* excerpt: blinn-phong */
-/* Returns the light reflected towards v from what one light sends along in->dir, by
- * Blinn-Phong: I (.) (kd max(0, n.l) + ks max(0, n.h)^p) with h = normalize(l + v).
- * n, v and l are unit vectors; v points from the surface to the eye. */
-Color shade_blinn_phong(const Material *m, Vec3 n, Vec3 v, const Incident *in)
+/* Returns the two terms of the light reflected towards v from what one light sends
+ * along in->dir, by Blinn-Phong: I (.) kd max(0, n.l) and I (.) ks max(0, n.h)^p with
+ * h = normalize(l + v). n, v and l are unit vectors; v points from the surface to the eye. */
+BlinnPhong shade_blinn_phong_terms(const Material *m, Vec3 n, Vec3 v, const Incident *in)
 {
     Vec3 l = in->dir;
     double n_dot_l = vec3_dot(n, l);
     /* A light behind the surface (or exactly in its plane) adds nothing, highlight
      * included: seen from the light, this side of the surface is in its own shadow. */
     if (n_dot_l <= 0)
-        return color(0, 0, 0);
+        return (BlinnPhong){{0, 0, 0}, {0, 0, 0}};
     /* Diffuse (Lambert): light spread over an area 1/cos(theta) larger. */
-    Color reflected = color_scale(m->diffuse, n_dot_l);
+    Color diffuse = color_scale(m->diffuse, n_dot_l);
     /* Specular: the half vector h lies halfway between l and v; it lines up with n
      * exactly when v is the mirror image of l, where the highlight peaks. */
     Vec3 h = vec3_normalize(vec3_add(l, v));
     double n_dot_h = fmax(0, vec3_dot(n, h));
-    reflected = color_add(reflected, color_scale(m->specular, pow(n_dot_h, m->phong)));
-    return color_mul(in->radiance, reflected);
+    Color specular = color_scale(m->specular, pow(n_dot_h, m->phong));
+    return (BlinnPhong){color_mul(in->radiance, diffuse), color_mul(in->radiance, specular)};
+}
+
+/* Returns the light reflected towards v from one light: diffuse plus specular. */
+Color shade_blinn_phong(const Material *m, Vec3 n, Vec3 v, const Incident *in)
+{
+    BlinnPhong terms = shade_blinn_phong_terms(m, n, v, in);
+    return color_add(terms.diffuse, terms.specular);
 }
 /* end excerpt: blinn-phong */
+
+/* Says, for --trace-pixel, when a back face is shaded in the yellow material. */
+void shade_explain_material(const Explain *e, int depth, const Material *m)
+{
+    if (e != NULL && m == &shade_back_face_material)
+        explain_line(e, depth,
+                     "a back face: shaded in the yellow back-face material, "
+                     "kd (1, 1, 0), no specular, no mirror");
+}
+
+/* Prints what light k brings to a point for --trace-pixel: where from, how much, and
+ * its diffuse and specular terms. */
+void shade_explain_light(const Explain *e, int depth, int k, const Incident *in, BlinnPhong terms)
+{
+    if (e == NULL)
+        return;
+    static const char *const kinds[] = {"point", "directional", "area (as a point)"};
+    const Light *light = &e->scene->lights[k];
+    char where[300], l[96];
+    explain_line(e, depth, "light %d, %s%s: towards it %s, arriving (%.6g, %.6g, %.6g)", k,
+                 kinds[light->kind], explain_where(e, light->line, where, sizeof where),
+                 explain_vec3(in->dir, l, sizeof l), in->radiance.r, in->radiance.g,
+                 in->radiance.b);
+    explain_color(e, depth + 1, "diffuse", terms.diffuse);
+    explain_color(e, depth + 1, "specular", terms.specular);
+}
 
 /* excerpt: shade-normal */
 /* Returns the normal to shade with: the geometric normal turned to face the ray, so
@@ -63,15 +96,19 @@ const Material *shade_material(const Scene *scene, const Hit *hit, bool two_side
 /* Returns the light that hit's surface reflects back along ray r straight from the
  * scene's point, directional and area lights, without shadows; part 1.3's
  * direct_radiance replaces it, with shadows and the ambient light. */
-Color shade_direct_radiance(const Scene *scene, const Hit *hit, Ray r, bool two_sided)
+Color shade_direct_radiance(const Scene *scene, const Hit *hit, Ray r, bool two_sided,
+                            const Explain *explain)
 {
     const Material *m = shade_material(scene, hit, two_sided);
+    shade_explain_material(explain, 1, m);
     Vec3 n = shade_normal(hit);
     Vec3 v = vec3_neg(r.dir);
     Color sum = color(0, 0, 0);
     for (int k = 0; k < scene->light_count; k++) {
         Incident in = light_incident(&scene->lights[k], hit->point, scene_light_falls_off(scene));
-        sum = color_add(sum, shade_blinn_phong(m, n, v, &in));
+        BlinnPhong terms = shade_blinn_phong_terms(m, n, v, &in);
+        shade_explain_light(explain, 1, k, &in, terms);
+        sum = color_add(sum, color_add(terms.diffuse, terms.specular));
     }
     return sum;
 }

@@ -45,7 +45,7 @@ void world_complete_hit(const Scene *scene, Ray r, Hit *hit)
     hit->point = ray_at(r, hit->t);
     switch (hit->kind) {
     case SURFACE_SPHERE: {
-        /* Slide 52: the unit normal at p is (p - O) / R. */
+        /* Slide 53 ("unit normal at intersection is"): the unit normal at p is (p - O) / R. */
         const Sphere *s = &scene->spheres[hit->index];
         hit->normal = vec3_scale(vec3_sub(hit->point, s->center), 1 / s->radius);
         hit->material = s->material;
@@ -64,3 +64,49 @@ void world_complete_hit(const Scene *scene, Ray r, Hit *hit)
     hit->back_face = vec3_dot(r.dir, hit->normal) > 0;
 }
 /* end excerpt: world-complete-hit */
+
+/* Returns the scene file's line of the surface hit. */
+static int surface_line(const Scene *scene, const Hit *hit)
+{
+    switch (hit->kind) {
+    case SURFACE_SPHERE: return scene->spheres[hit->index].line;
+    case SURFACE_PLANE: return scene->planes[hit->index].line;
+    case SURFACE_TRIANGLE: return scene->triangles[hit->index].line;
+    }
+    return 0;
+}
+
+/* Prints what a ray hit for --trace-pixel: the surface and its line, t, the point, the
+ * normal, the side, and the material. */
+void world_explain_hit(const Explain *e, int depth, const Hit *hit)
+{
+    if (e == NULL)
+        return;
+    static const char *const kinds[] = {"sphere", "plane", "triangle"};
+    const Scene *scene = e->scene;
+    const Material *m = &scene->materials[hit->material];
+    char where[300], point[96], normal[96];
+    explain_line(e, depth, "hits %s %d%s at t = %.9g", kinds[hit->kind], hit->index,
+                 explain_where(e, surface_line(scene, hit), where, sizeof where), hit->t);
+    explain_line(
+        e, depth + 1, "point %s, normal %s, %s face", explain_vec3(hit->point, point, sizeof point),
+        explain_vec3(hit->normal, normal, sizeof normal), hit->back_face ? "back" : "front");
+    explain_line(e, depth + 1,
+                 "material %d%s: kd (%.6g, %.6g, %.6g), ks (%.6g, %.6g, %.6g), p %.6g, "
+                 "km (%.6g, %.6g, %.6g)",
+                 hit->material, explain_where(e, m->line, where, sizeof where), m->diffuse.r,
+                 m->diffuse.g, m->diffuse.b, m->specular.r, m->specular.g, m->specular.b, m->phong,
+                 m->mirror.r, m->mirror.g, m->mirror.b);
+}
+
+/* Returns a number for the surface hit, different for every surface of the scene:
+ * spheres first, then planes, then triangles. */
+int world_surface_id(const Scene *scene, const Hit *hit)
+{
+    switch (hit->kind) {
+    case SURFACE_SPHERE: return hit->index;
+    case SURFACE_PLANE: return scene->sphere_count + hit->index;
+    case SURFACE_TRIANGLE: return scene->sphere_count + scene->plane_count + hit->index;
+    }
+    return 0;
+}

@@ -4,11 +4,14 @@
 
 #include <stdbool.h>
 
+#include "explain.h"
 #include "hit.h"
 #include "ray.h"
 #include "scene.h"
 
 bool world_hit(const Scene *scene, Ray r, double tmin, double tmax, Hit *hit);
 void world_complete_hit(const Scene *scene, Ray r, Hit *hit);
+void world_explain_hit(const Explain *e, int depth, const Hit *hit);
+int world_surface_id(const Scene *scene, const Hit *hit);
 
 #endif

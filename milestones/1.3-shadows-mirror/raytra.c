@@ -34,10 +34,18 @@ static Color trace_pixel(const void *ctx, int i, int j, RayStats *stats)
     const Part13 *part = ctx;
     Ray r = camera_ray(&part->view.camera, i + 0.5, j + 0.5);
     stats->rays[RAY_PRIMARY]++;
+    explain_ray(part->tracer.explain, 0, "camera", r);
     Path path = {.stats = stats};
     return trace_radiance(&part->tracer, r, 0, &path);
 }
 /* end excerpt: trace-pixel */
+
+/* Tells --view what the camera ray meets first. */
+static void probe_pixel(const void *ctx, int i, int j, Probe *probe)
+{
+    const Part13 *part = ctx;
+    trace_probe(&part->tracer, camera_ray(&part->view.camera, i + 0.5, j + 0.5), probe);
+}
 
 static const Program program = {
     .cli = {.part = "1.3-shadows-mirror",
@@ -47,6 +55,7 @@ static const Program program = {
                 FEATURE_MIRRORS | FEATURE_SHADING,
     .setup = setup,
     .pixel = trace_pixel,
+    .probe = probe_pixel,
     .cleanup = free,
 };
 

@@ -3,16 +3,10 @@
 #include "secondary.h"
 
 /* excerpt: secondary-ray */
-/* Returns the ray along unit dir from hit's point, started a little off the surface on
- * the side dir leaves by, so that it does not find the surface it starts from.
- *
- * The hit point is computed in floating point, so it lies a tiny distance before or
- * behind the true surface, and a ray started there may hit the surface itself at a
- * t close to 0: "shadow acne". Rounding errors are relative to the size of the
- * numbers, so the offset is too: offset times the largest coordinate of the hit point
- * or of the ray's origin. The default, 2^-32, is about a million times the rounding
- * error of a double, and still a ten-billionth of the scene's size: no contact point
- * or thin wall is visibly affected, whatever the scene's scale. */
+/* Returns the ray along unit dir from hit's point, started off the surface on the side
+ * dir leaves by, so that it cannot find the surface it starts from (shadow acne): by
+ * offset times the largest coordinate of the point or of the ray's origin, since
+ * rounding errors grow with the numbers. */
 Ray secondary_ray(const Hit *hit, Ray incoming, Vec3 dir, double offset)
 {
     double scale = fmax(vec3_max_abs(hit->point), vec3_max_abs(incoming.origin));

@@ -1,4 +1,5 @@
-/* trace.h: the radiance along a ray, by recursive ray tracing (slide 12, textbook chapter 4). */
+/* trace.h: the radiance along a ray, by recursive ray tracing (textbook chapter 4).
+ * Slide 13 ("recursive ray tracing - pseudocode"). */
 #ifndef RAYTRA_TRACE_H
 #define RAYTRA_TRACE_H
 
@@ -6,6 +7,8 @@
 
 #include "cli.h"
 #include "color.h"
+#include "debugview.h"
+#include "explain.h"
 #include "ray.h"
 #include "render.h"
 #include "scene.h"
@@ -32,10 +35,12 @@ struct Tracer {
     bool two_sided;    /* shade back faces with their own material, not yellow */
     double offset;     /* where secondary rays start: see secondary_ray */
     DirectFn direct;   /* direct_radiance; part 1.6 plugs in area-light sampling */
+    const Explain *explain; /* --trace-pixel: where each step is told; NULL when not */
 };
 /* end excerpt: tracer-struct */
 
 Tracer tracer_make(const Scene *scene, Surfaces surfaces, const Options *opts);
 Color trace_radiance(const Tracer *tr, Ray r, int depth, Path *path);
+void trace_probe(const Tracer *tr, Ray r, Probe *probe);
 
 #endif
