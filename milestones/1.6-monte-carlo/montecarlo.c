@@ -44,6 +44,12 @@ bool montecarlo_init(MonteCarlo *mc, const Scene *scene, Surfaces surfaces, Radi
     return true;
 }
 
+/* Tells --view what the camera ray through the centre of pixel (i, j) meets first. */
+void montecarlo_probe(const MonteCarlo *mc, int i, int j, Probe *probe)
+{
+    trace_probe(&mc->tracer, camera_ray(&mc->camera, i + 0.5, j + 0.5), probe);
+}
+
 /* Frees what montecarlo_init allocated. */
 void montecarlo_free(MonteCarlo *mc)
 {
@@ -55,7 +61,7 @@ void montecarlo_free(MonteCarlo *mc)
 /* Returns the light that hit's surface reflects along r from the square light: S x S
  * shadow rays to points spread over it, each a point light of 1/S^2 of its colour. */
 static Color area_radiance(const MonteCarlo *mc, const Light *light, const Hit *hit, Ray r,
-                           Path *path)
+                           int depth, Path *path)
 {
     const Sample *sample = path->sample;
     const Scene *scene = mc->tracer.scene;
@@ -77,11 +83,21 @@ static Color area_radiance(const MonteCarlo *mc, const Light *light, const Hit *
         Incident in = area_incident(light, area_point(light, ru, rv), hit->point, count,
                                     scene_light_falls_off(scene));
         /* As for a point light: no shadow ray where the light adds nothing anyway. */
-        if (color_is_black(in.radiance) || vec3_dot(n, in.dir) <= 0 ||
-            direct_in_shadow(&mc->tracer, hit, r, &in, path))
+        if (color_is_black(in.radiance) || vec3_dot(n, in.dir) <= 0) {
+            explain_line(mc->tracer.explain, depth + 1, "area light sample %d of %d: faces away",
+                         q + 1, count);
             continue;
-        sum = color_add(sum, shade_blinn_phong(m, n, v, &in));
+        }
+        if (direct_in_shadow(&mc->tracer, hit, r, &in, path)) {
+            explain_line(mc->tracer.explain, depth + 1, "area light sample %d of %d: in shadow",
+                         q + 1, count);
+            continue;
+        }
+        Color c = shade_blinn_phong(m, n, v, &in);
+        explain_color(mc->tracer.explain, depth + 1, "area light sample, Blinn-Phong", c);
+        sum = color_add(sum, c);
     }
+    explain_color(mc->tracer.explain, depth + 1, "area light", sum);
     return sum;
 }
 /* end excerpt: area-radiance */
@@ -98,7 +114,7 @@ Color montecarlo_direct_radiance(const Tracer *tr, const Hit *hit, Ray r, int de
     const Scene *scene = tr->scene;
     for (int k = 0; k < scene->light_count; k++)
         if (scene->lights[k].kind == LIGHT_AREA)
-            sum = color_add(sum, area_radiance(mc, &scene->lights[k], hit, r, path));
+            sum = color_add(sum, area_radiance(mc, &scene->lights[k], hit, r, depth, path));
     return sum;
 }
 /* end excerpt: montecarlo-direct-radiance */
@@ -106,9 +122,10 @@ Color montecarlo_direct_radiance(const Tracer *tr, const Hit *hit, Ray r, int de
 /* excerpt: montecarlo-pixel */
 /* Returns the colour of pixel (i, j): the mean radiance of P x P rays through it, ray k
  * through a random point of sub-square k (jittered), or through its centre when P = 1.
- * The lecture's one ray per pixel, at "u = l + (r - l)(i + 0.5)/n_x" (slide 38), samples
- * the image at one point and aliases (slide 75, "note aliasing"); P x P points average
- * the pixel's area. Each ray has its own random numbers, from (seed, pixel, k) alone, so
+ * The lecture's one ray per pixel, at u = l + (r - l)(i + 0.5)/n_x, samples the image at
+ * a point: slide 38 ("relationship of (i, j) th pixel in image plane to u, v").
+ * One point a pixel aliases: slide 75 ("note aliasing"). P x P points average the
+ * pixel's area. Each ray has its own random numbers, from (seed, pixel, k) alone, so
  * that no pixel depends on which thread renders it, or when. */
 Color montecarlo_pixel(const MonteCarlo *mc, int i, int j, RayStats *stats)
 {
@@ -137,6 +154,8 @@ Color montecarlo_pixel(const MonteCarlo *mc, int i, int j, RayStats *stats)
         Path path = {.stats = stats, .sample = &sample};
         Ray r = camera_ray(&mc->camera, x, y);
         stats->rays[RAY_PRIMARY]++;
+        explain_line(mc->tracer.explain, 0, "sample %d of %d, at (%.4f, %.4f)", k + 1, count, x, y);
+        explain_ray(mc->tracer.explain, 0, "camera", r);
         sum = color_add(sum, mc->radiance(&mc->tracer, r, 0, &path));
     }
     /* The box filter: every ray through the pixel counts 1/P^2. */

@@ -49,5 +49,6 @@ bool montecarlo_init(MonteCarlo *mc, const Scene *scene, Surfaces surfaces, Radi
 void montecarlo_free(MonteCarlo *mc);
 Color montecarlo_direct_radiance(const Tracer *tr, const Hit *hit, Ray r, int depth, Path *path);
 Color montecarlo_pixel(const MonteCarlo *mc, int i, int j, RayStats *stats);
+void montecarlo_probe(const MonteCarlo *mc, int i, int j, Probe *probe);
 
 #endif

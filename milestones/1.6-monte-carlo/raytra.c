@@ -31,6 +31,12 @@ static Color sample_pixel(const void *ctx, int i, int j, RayStats *stats)
     return montecarlo_pixel(ctx, i, j, stats);
 }
 
+/* Tells --view what the camera ray meets first. */
+static void probe_pixel(const void *ctx, int i, int j, Probe *probe)
+{
+    montecarlo_probe(ctx, i, j, probe);
+}
+
 /* Frees the part's state. */
 static void cleanup(void *ctx)
 {
@@ -47,6 +53,7 @@ static const Program program = {
                 FEATURE_MIRRORS | FEATURE_SHADING,
     .setup = setup,
     .pixel = sample_pixel,
+    .probe = probe_pixel,
     .cleanup = cleanup,
 };
 

@@ -58,7 +58,7 @@ static void setup_make(Setup *s, bool occluded)
     s->light = square();
     s->white = (Material){.diffuse = {1, 1, 1}, .phong = 1};
     double h = occluder_height, e = occluder_edge;
-    s->occluder = (Triangle){{e, h, -1000}, {e, h, 1000}, {-1000, h, 0}, 0};
+    s->occluder = (Triangle){.a = {e, h, -1000}, .b = {e, h, 1000}, .c = {-1000, h, 0}};
     s->scene = (Scene){.convention = CONVENTION_FALL2016, .materials = &s->white,
                        .material_count = 1, .lights = &s->light, .light_count = 1,
                        .triangles = &s->occluder, .triangle_count = occluded ? 1 : 0};
