@@ -5,16 +5,13 @@
 #include <stdlib.h>
 
 #include "area.h"
-#include "direct.h"
 #include "shade.h"
 
 /* Sets up mc to render scene: the camera, the tracer with its hook, the sampling options.
  * False (reported) on a bad option or no memory. */
-bool montecarlo_init(MonteCarlo *mc, const Scene *scene, Surfaces surfaces, RadianceFn radiance,
-                     const Options *opts)
+bool montecarlo_init(MonteCarlo *mc, const Scene *scene, Surfaces surfaces, const Options *opts)
 {
-    *mc = (MonteCarlo){.radiance = radiance,
-                       .camera = camera_make(&scene->camera),
+    *mc = (MonteCarlo){.camera = camera_make(&scene->camera),
                        .pixel_side = opts->samples,
                        .light_side = opts->light_samples,
                        .seed = (uint64_t)opts->seed};
@@ -38,16 +35,16 @@ bool montecarlo_init(MonteCarlo *mc, const Scene *scene, Surfaces surfaces, Radi
     for (int k = 0; k < scene->light_count; k++)
         if (scene->lights[k].kind != LIGHT_AREA)
             mc->point_scene.lights[mc->point_scene.light_count++] = scene->lights[k];
-    mc->tracer = tracer_make(scene, surfaces, opts);
-    mc->tracer.direct = montecarlo_direct_radiance;
-    mc->point_lights = tracer_make(&mc->point_scene, surfaces, opts);
+    mc->below = below_make(scene, surfaces, opts);
+    below_tracer(&mc->below)->direct = montecarlo_direct_radiance;
+    mc->point_lights = below_make(&mc->point_scene, surfaces, opts);
     return true;
 }
 
 /* Tells --view what the camera ray through the centre of pixel (i, j) meets first. */
 void montecarlo_probe(const MonteCarlo *mc, int i, int j, Probe *probe)
 {
-    trace_probe(&mc->tracer, camera_ray(&mc->camera, i + 0.5, j + 0.5), probe);
+    trace_probe(below_tracer(&mc->below), camera_ray(&mc->camera, i + 0.5, j + 0.5), probe);
 }
 
 /* Frees what montecarlo_init allocated. */
@@ -64,8 +61,9 @@ static Color area_radiance(const MonteCarlo *mc, const Light *light, const Hit *
                            int depth, Path *path)
 {
     const Sample *sample = path->sample;
-    const Scene *scene = mc->tracer.scene;
-    const Material *m = shade_material(scene, hit, mc->tracer.two_sided);
+    const Tracer *tr = below_tracer(&mc->below);
+    const Scene *scene = tr->scene;
+    const Material *m = shade_material(scene, hit, tr->two_sided);
     Vec3 n = shade_normal(hit);
     Vec3 v = vec3_neg(r.dir);
     int side = mc->light_side, count = side * side;
@@ -84,33 +82,34 @@ static Color area_radiance(const MonteCarlo *mc, const Light *light, const Hit *
                                     scene_light_falls_off(scene));
         /* As for a point light: no shadow ray where the light adds nothing anyway. */
         if (color_is_black(in.radiance) || vec3_dot(n, in.dir) <= 0) {
-            explain_line(mc->tracer.explain, depth + 1, "area light sample %d of %d: faces away",
+            explain_line(tr->explain, depth + 1, "area light sample %d of %d: faces away",
                          q + 1, count);
             continue;
         }
-        if (direct_in_shadow(&mc->tracer, hit, r, &in, path)) {
-            explain_line(mc->tracer.explain, depth + 1, "area light sample %d of %d: in shadow",
-                         q + 1, count);
+        Color through = below_light_through(&mc->below, hit, r, &in, path);
+        if (color_is_black(through)) {
+            explain_line(tr->explain, depth + 1, "area light sample %d of %d: in shadow", q + 1,
+                         count);
             continue;
         }
-        Color c = shade_blinn_phong(m, n, v, &in);
-        explain_color(mc->tracer.explain, depth + 1, "area light sample, Blinn-Phong", c);
+        Color c = color_mul(shade_blinn_phong(m, n, v, &in), through);
+        explain_color(tr->explain, depth + 1, "area light sample, Blinn-Phong", c);
         sum = color_add(sum, c);
     }
-    explain_color(mc->tracer.explain, depth + 1, "area light", sum);
+    explain_color(tr->explain, depth + 1, "area light", sum);
     return sum;
 }
 /* end excerpt: area-radiance */
 
 /* excerpt: montecarlo-direct-radiance */
-/* Returns the light that hit's surface reflects along r straight from the lights: 1.3's
- * direct_radiance for the ambient, point and directional lights, plus every area light
- * sampled. Replaces 1.3's direct_radiance as the tracer's direct hook. */
+/* Returns the light that hit's surface reflects along r straight from the lights: the
+ * part below's direct light for the ambient, point and directional lights, plus every
+ * area light sampled. Replaces 1.3's direct_radiance as the tracer's direct hook. */
 Color montecarlo_direct_radiance(const Tracer *tr, const Hit *hit, Ray r, int depth, Path *path)
 {
-    /* tr is the first member of a MonteCarlo (montecarlo_init plugs this hook in there). */
+    /* tr begins a MonteCarlo (montecarlo_init plugs this hook in there alone). */
     const MonteCarlo *mc = (const MonteCarlo *)tr;
-    Color sum = direct_radiance(&mc->point_lights, hit, r, depth, path);
+    Color sum = BELOW_DIRECT(below_tracer(&mc->point_lights), hit, r, depth, path);
     const Scene *scene = tr->scene;
     for (int k = 0; k < scene->light_count; k++)
         if (scene->lights[k].kind == LIGHT_AREA)
@@ -154,9 +153,10 @@ Color montecarlo_pixel(const MonteCarlo *mc, int i, int j, RayStats *stats)
         Path path = {.stats = stats, .sample = &sample};
         Ray r = camera_ray(&mc->camera, x, y);
         stats->rays[RAY_PRIMARY]++;
-        explain_line(mc->tracer.explain, 0, "sample %d of %d, at (%.4f, %.4f)", k + 1, count, x, y);
-        explain_ray(mc->tracer.explain, 0, "camera", r);
-        sum = color_add(sum, mc->radiance(&mc->tracer, r, 0, &path));
+        const Explain *explain = below_tracer(&mc->below)->explain;
+        explain_line(explain, 0, "sample %d of %d, at (%.4f, %.4f)", k + 1, count, x, y);
+        explain_ray(explain, 0, "camera", r);
+        sum = color_add(sum, below_radiance(&mc->below, r, 0, &path));
     }
     /* The box filter: every ray through the pixel counts 1/P^2. */
     return color_scale(sum, 1.0 / count);

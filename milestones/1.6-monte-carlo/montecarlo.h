@@ -8,14 +8,11 @@
 #include "camera.h"
 #include "cli.h"
 #include "rng.h"
+#include "below.h"
 #include "strata.h"
-#include "trace.h"
 
 /* The largest P and S: the command line's limit (--samples, --light-samples). */
 #define MONTECARLO_MAX_SIDE 64
-
-/* The radiance along a ray, as the part below computes it (1.3's trace_radiance). */
-typedef Color (*RadianceFn)(const Tracer *tr, Ray r, int depth, Path *path);
 
 /* excerpt: sample-struct */
 /* What a pixel sample carries down its path in Path.sample: its own random numbers,
@@ -29,13 +26,12 @@ typedef struct {
 /* end excerpt: sample-struct */
 
 /* excerpt: montecarlo-struct */
-/* Everything the pixels read. tracer comes first: its direct hook receives &tracer and
- * finds the rest of the struct from it. */
+/* Everything the pixels read. below comes first, and begins with 1.3's Tracer: the
+ * tracer's direct hook receives a pointer to it and finds the rest of the struct. */
 typedef struct {
-    Tracer tracer;       /* 1.3's tracer, its direct hook montecarlo_direct_radiance */
-    Tracer point_lights; /* the same over point_scene, with 1.3's direct_radiance */
-    Scene point_scene;   /* the scene without its area lights */
-    RadianceFn radiance; /* the part below's radiance function */
+    Below below;        /* the part below's tracer, its direct hook montecarlo_direct_radiance */
+    Below point_lights; /* the same over point_scene, with the part below's direct light */
+    Scene point_scene;  /* the scene without its area lights */
     Camera camera;
     Sampling sampling;
     int pixel_side; /* P */
@@ -44,8 +40,7 @@ typedef struct {
 } MonteCarlo;
 /* end excerpt: montecarlo-struct */
 
-bool montecarlo_init(MonteCarlo *mc, const Scene *scene, Surfaces surfaces, RadianceFn radiance,
-                     const Options *opts);
+bool montecarlo_init(MonteCarlo *mc, const Scene *scene, Surfaces surfaces, const Options *opts);
 void montecarlo_free(MonteCarlo *mc);
 Color montecarlo_direct_radiance(const Tracer *tr, const Hit *hit, Ray r, int depth, Path *path);
 Color montecarlo_pixel(const MonteCarlo *mc, int i, int j, RayStats *stats);

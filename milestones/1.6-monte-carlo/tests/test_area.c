@@ -64,8 +64,7 @@ static void setup_make(Setup *s, bool occluded)
                        .triangles = &s->occluder, .triangle_count = occluded ? 1 : 0};
     Options opts = {.samples = 1, .light_samples = 1, .max_depth = 20,
                     .ray_offset = SECONDARY_OFFSET};
-    ck_assert(montecarlo_init(&s->mc, &s->scene, surfaces_brute_force(&s->scene),
-                              trace_radiance, &opts));
+    ck_assert(montecarlo_init(&s->mc, &s->scene, surfaces_brute_force(&s->scene), &opts));
 }
 
 /* One estimate of the light reaching floor point p = (0, 0, 1), with S x S shadow rays
@@ -80,7 +79,7 @@ static double estimate(Setup *s, Sampling sampling, int side, uint64_t trial)
     Path path = {.stats = &stats, .sample = &sample};
     Hit hit = {.t = 10, .point = {0, 0, 1}, .normal = {0, 1, 0}, .kind = SURFACE_TRIANGLE};
     Ray down = {{0, 10, 1}, {0, -1, 0}};
-    Color c = montecarlo_direct_radiance(&s->mc.tracer, &hit, down, 0, &path);
+    Color c = montecarlo_direct_radiance(below_tracer(&s->mc.below), &hit, down, 0, &path);
     ck_assert_uint_eq(stats.rays[RAY_SHADOW], (unsigned long long)(side * side));
     return c.r;
 }
