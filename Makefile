@@ -5,6 +5,9 @@
 #   make demo        render scenes/demo.scn with every part into out/
 #   make references  re-render every part's reference images, showing what changed
 #   make docs        refresh the code excerpts in docs/ from the source
+#   make starter PART=1.2 [DEST=dir]   write the starter of a part, the folder a course
+#                    hands out, into out/starter-<part>/ (docs/starters.md)
+#   make check-starters  build every part's starter, stubbed and solved
 #   make valgrind    render scenes of every part, and broken inputs, under valgrind's memcheck
 #   make fuzz        build the libFuzzer harnesses of the scene and OBJ readers (clang)
 #   make fuzz-run    fuzz each reader for FUZZ_SECONDS (default 1800) s (docs/robustness.md)
@@ -28,7 +31,8 @@ FUZZ_SECONDS ?= 1800
 
 .PHONY: all test demo references docs check-docs check-slides check-figures check-layout check-course clean \
         check-robust check-fuzz-regressions check-bad-input check-interrupt check-nonfinite \
-        check-course-render valgrind fuzz fuzz-run mistakes
+        check-course-render valgrind fuzz fuzz-run mistakes starter check-starter check-starters \
+        check-exercises
 .NOTPARALLEL:
 
 all:
@@ -45,6 +49,7 @@ test:
 	@for part in $(PARTS); do $(SUBMAKE) -C milestones/$$part test || exit 1; done
 	@$(SUBMAKE) -C tools/mistakes
 	@$(SUBMAKE) check-docs check-slides check-figures check-exercises check-layout check-course
+	@$(SUBMAKE) check-starter
 	@$(SUBMAKE) check-robust
 	@echo "make test: every test passed"
 
@@ -104,6 +109,21 @@ check-layout:
 # Every pixel answer of the chapters' exercises agrees with a render (docs/exercises-answers.md).
 check-exercises:
 	@scenes/exercises/check.sh
+
+# A part's starter for students: STARTER_OPTIONS may say --stub-earlier or --solution.
+starter:
+	@if [ -z "$(PART)" ]; then echo "usage: make starter PART=1.2 [DEST=dir]" >&2; exit 2; fi
+	$(DEPS_STEP)
+	@tools/starter.sh $(STARTER_OPTIONS) $(PART) $(DEST)
+
+# The starter of the latest part with every earlier part stubbed too: each marked function
+# of the project in one build, failing its tests as a stub and passing them when solved.
+check-starter:
+	@tests/starter.sh --stub-earlier $(lastword $(PARTS))
+
+# Each part's starter as a course hands it out, the earlier parts complete.
+check-starters: check-starter
+	@tests/starter.sh $(PARTS)
 
 # Every "slide N" in the project quotes words that stand on slide N of the lecture.
 check-slides:

@@ -1,6 +1,7 @@
 /* camera.c: the camera frame and the ray through a point of the image plane. */
 #include "camera.h"
 
+/* starter: todo */
 /* excerpt: camera-make */
 /* Builds the camera of a scene's c line: its frame and its image plane. */
 Camera camera_make(const CameraSpec *spec)
@@ -34,6 +35,7 @@ Camera camera_make(const CameraSpec *spec)
 }
 /* end excerpt: camera-make */
 
+/* starter: todo */
 /* excerpt: camera-ray */
 /* Returns the unit ray from the eye through image point (x, y), measured in pixels
  * from the bottom-left corner: pixel (i, j) has its centre at (i + 0.5, j + 0.5). */

@@ -4,6 +4,7 @@
 
 #include <math.h>
 
+/* starter: todo */
 /* excerpt: sphere-intersect */
 /* Finds the nearest t with tmin < t < tmax where ray r meets sphere s. */
 bool sphere_intersect(const Sphere *s, Ray r, double tmin, double tmax, double *t)

@@ -4,6 +4,7 @@
 #include <math.h>
 #include <stdio.h>
 
+/* starter: todo */
 /* excerpt: light-incident */
 /* Returns what reaches point from light; falls_off says whether point lights fade as 1/r^2. */
 Incident light_incident(const Light *light, Vec3 point, bool falls_off)

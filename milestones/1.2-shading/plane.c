@@ -1,6 +1,7 @@
 /* plane.c: the ray-plane intersection of slide 47 ("ray-plane intersection"). */
 #include "plane.h"
 
+/* starter: todo */
 /* excerpt: plane-intersect */
 /* Finds t with tmin < t < tmax where ray r meets plane pl, from either side. */
 bool plane_intersect(const Plane *pl, Ray r, double tmin, double tmax, double *t)

@@ -3,6 +3,7 @@
 
 #include <math.h>
 
+/* starter: todo */
 /* excerpt: blinn-phong */
 /* Returns the two terms of the light reflected towards v from what one light sends
  * along in->dir, by Blinn-Phong: I (.) kd max(0, n.l) and I (.) ks max(0, n.h)^p with
@@ -92,6 +93,7 @@ const Material *shade_material(const Scene *scene, const Hit *hit, bool two_side
 }
 /* end excerpt: shade-material */
 
+/* starter: todo */
 /* excerpt: shade-direct-radiance */
 /* Returns the light that hit's surface reflects back along ray r straight from the
  * scene's point, directional and area lights, without shadows; part 1.3's

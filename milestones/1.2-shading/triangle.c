@@ -2,6 +2,7 @@
  */
 #include "triangle.h"
 
+/* starter: todo */
 /* excerpt: triangle-intersect */
 /* Finds t with tmin < t < tmax where ray r meets triangle tri, from either side, and
  * the barycentric coordinates of the point; edges and corners count as inside. */

@@ -5,6 +5,7 @@
 #include "sphere.h"
 #include "triangle.h"
 
+/* starter: todo */
 /* excerpt: world-hit */
 /* Finds the nearest surface that ray r meets with tmin < t < tmax; fills in hit. */
 bool world_hit(const Scene *scene, Ray r, double tmin, double tmax, Hit *hit)
@@ -38,6 +39,7 @@ bool world_hit(const Scene *scene, Ray r, double tmin, double tmax, Hit *hit)
 }
 /* end excerpt: world-hit */
 
+/* starter: todo */
 /* excerpt: world-complete-hit */
 /* Fills in the point, unit normal, side and material of a hit whose t, kind and index are known. */
 void world_complete_hit(const Scene *scene, Ray r, Hit *hit)

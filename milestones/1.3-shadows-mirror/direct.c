@@ -5,6 +5,7 @@
 #include "shade.h"
 #include "world.h"
 
+/* starter: todo */
 /* excerpt: direct-in-shadow */
 /* Returns the shadow ray from hit's point towards the light in, and in *tmax how far
  * it may go: only what lies before the light blocks it, measured from the ray's own
@@ -20,7 +21,7 @@ static Ray shadow_ray(const Tracer *tr, const Hit *hit, Ray r, const Incident *i
  * the point towards the light, which must not reach as far as the light itself. */
 bool direct_in_shadow(const Tracer *tr, const Hit *hit, Ray r, const Incident *in, Path *path)
 {
-    double tmax;
+    double tmax = 0;
     Ray shadow = shadow_ray(tr, hit, r, in, &tmax);
     path->stats->rays[RAY_SHADOW]++;
     return tr->surfaces.blocked(tr->surfaces.data, shadow, 0, tmax);
@@ -28,12 +29,12 @@ bool direct_in_shadow(const Tracer *tr, const Hit *hit, Ray r, const Incident *i
 /* end excerpt: direct-in-shadow */
 
 /* Prints, for --trace-pixel, the shadow ray towards light k and what blocks it. */
-static void explain_blocked(const Tracer *tr, int depth, int k, const Hit *hit, Ray r,
+void direct_explain_blocked(const Tracer *tr, int depth, int k, const Hit *hit, Ray r,
                             const Incident *in)
 {
     if (tr->explain == NULL)
         return;
-    double tmax;
+    double tmax = 0;
     Ray shadow = shadow_ray(tr, hit, r, in, &tmax);
     explain_line(tr->explain, depth, "light %d: in shadow", k);
     explain_ray(tr->explain, depth + 1, "shadow", shadow);
@@ -42,6 +43,7 @@ static void explain_blocked(const Tracer *tr, int depth, int k, const Hit *hit, 
         world_explain_hit(tr->explain, depth + 2, &blocker);
 }
 
+/* starter: todo */
 /* excerpt: direct-radiance */
 /* Returns the light that hit's surface reflects back along ray r straight from the
  * lights: k_d (.) ambient, plus Blinn-Phong for each light that is not in shadow.
@@ -67,7 +69,7 @@ Color direct_radiance(const Tracer *tr, const Hit *hit, Ray r, int depth, Path *
             continue;
         }
         if (direct_in_shadow(tr, hit, r, &in, path)) {
-            explain_blocked(tr, depth + 1, k, hit, r, &in);
+            direct_explain_blocked(tr, depth + 1, k, hit, r, &in);
             continue;
         }
         BlinnPhong terms = shade_blinn_phong_terms(m, n, v, &in);

@@ -2,6 +2,7 @@
  */
 #include "secondary.h"
 
+/* starter: todo */
 /* excerpt: secondary-ray */
 /* Returns the ray along unit dir from hit's point, started off the surface on the side
  * dir leaves by, so that it cannot find the surface it starts from (shadow acne): by
@@ -17,6 +18,7 @@ Ray secondary_ray(const Hit *hit, Ray incoming, Vec3 dir, double offset)
 }
 /* end excerpt: secondary-ray */
 
+/* starter: todo */
 /* excerpt: secondary-reflect */
 /* Returns the mirror image of direction d about the normal n (unit): r = d - 2 (d.n) n.
  * The part of d along n changes sign; the part along the surface stays. */

@@ -18,6 +18,7 @@ Tracer tracer_make(const Scene *scene, Surfaces surfaces, const Options *opts)
                     .explain = opts->explain};
 }
 
+/* starter: todo */
 /* excerpt: trace-radiance */
 /* Returns the radiance arriving along ray r: the light of the first surface it meets,
  * straight from the lights, plus k_m times the radiance along the mirror-reflected ray.

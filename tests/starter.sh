@@ -1,0 +1,95 @@
+#!/bin/sh
+# starter.sh: checks that a part's starter builds alone, fails its tests as handed out, and passes them once solved.
+#
+# Usage: tests/starter.sh [--stub-earlier] PART...
+#
+# For each PART, in a temporary folder: writes the starter (tools/starter.sh) and
+# the solution's starter (--solution), and checks that
+#   - the solution's sources are the repository's, less the marker and excerpt lines;
+#   - the starter has a TODO stub for each marker of the parts it stubs;
+#   - its `make check WERROR=1` builds without a warning, yet fails: not one unit
+#     test program and not one reference image passes with the stubs;
+#   - with the solution's sources copied in, `make check WERROR=1` passes;
+#   - nothing it built refers to the repository: the starter stands alone.
+set -u
+top=$(cd "$(dirname "$0")/.." && pwd) || exit 2
+options=
+[ "${1:-}" = --stub-earlier ] && { options=--stub-earlier; shift; }
+[ $# -ge 1 ] || { echo "usage: $0 [--stub-earlier] PART..." >&2; exit 2; }
+tmp=$(mktemp -d) || exit 2
+trap 'rm -rf "$tmp"' EXIT
+trap 'exit 130' INT TERM
+
+failed=0
+fail() {
+    echo "FAIL $part: $*"
+    failed=$((failed + 1))
+}
+
+for part in "$@"; do
+    echo "== starter of $part $options"
+    stub=$tmp/$part
+    solved=$tmp/$part-solution
+    # shellcheck disable=SC2086 # options is one word or none
+    if ! "$top/tools/starter.sh" $options "$part" "$stub" >/dev/null ||
+        ! "$top/tools/starter.sh" $options --solution "$part" "$solved" >/dev/null; then
+        fail "tools/starter.sh failed"
+        continue
+    fi
+
+    # The solution is the repository's code; the stubs stand where the markers were.
+    markers=0
+    for file in "$solved"/milestones/*/*.[ch] "$solved"/common/*.[ch]; do
+        rel=${file#"$solved"/}
+        if ! grep -v -e '^/\* starter: ' -e '^[[:space:]]*/\* \(end \)\{0,1\}excerpt: ' "$top/$rel" |
+            cmp -s - "$file"; then
+            fail "the solution's $rel is not the repository's less its marker and excerpt lines"
+        fi
+        case $rel in *.h | common/*) continue ;; esac
+        if [ -n "$options" ] || [ "${rel#milestones/"$part"/}" != "$rel" ]; then
+            markers=$((markers + $(grep -c '^/\* starter: todo' "$top/$rel")))
+        fi
+    done
+    todos=$(cat "$stub"/milestones/*/*.c | grep -c '^    /\* TODO: ')
+    [ "$markers" -gt 0 ] || fail "no function of the part is marked /* starter: todo */"
+    [ "$todos" -eq "$markers" ] || fail "$todos TODO stubs for $markers markers"
+    if grep -l '^/\* starter: ' "$stub"/*/*.[ch] "$stub"/milestones/*/*.[ch] \
+        "$solved"/milestones/*/*.[ch]; then
+        fail "marker lines left in the files above"
+    fi
+
+    # As handed out: it builds without a warning, and every check fails.
+    make --no-print-directory -C "$stub" check WERROR=1 >"$tmp/stub.log" 2>&1
+    status=$?
+    if [ ! -x "$stub/raytra" ] || ! grep -q '^unit tests: ' "$tmp/stub.log"; then
+        fail "the starter does not build (WERROR=1):"
+        grep -e 'error' -e 'warning' "$tmp/stub.log" | grep -v '^cc ' | head -n 20 | sed 's/^/    /'
+        continue
+    fi
+    [ $status -ne 0 ] || fail "make check passes with the stubs"
+    grep -q '^unit tests: 0 of [1-9]' "$tmp/stub.log" ||
+        fail "some unit test passes with the stubs: $(grep '^unit tests:' "$tmp/stub.log")"
+    grep -q '^images: 0 of [1-9]' "$tmp/stub.log" ||
+        fail "some image matches with the stubs: $(grep '^images:' "$tmp/stub.log")"
+    heat=$(grep -c 'heat map: out/check/' "$tmp/stub.log")
+    [ "$heat" -gt 0 ] && [ -f "$stub/out/check/demo.heat.png" ] || fail "no heat maps written"
+    echo "ok   as handed out: $todos stubs; $(grep '^unit tests:' "$tmp/stub.log");" \
+        "$(grep '^images:' "$tmp/stub.log")"
+
+    # Solved: the bodies put back, it passes every check.
+    for file in "$solved"/milestones/*/*.c; do cp "$file" "$stub/${file#"$solved"/}"; done
+    if make --no-print-directory -C "$stub" check WERROR=1 >"$tmp/solved.log" 2>&1; then
+        echo "ok   solved: $(grep '^unit tests:' "$tmp/solved.log"); $(grep '^images:' "$tmp/solved.log")"
+    else
+        fail "make check fails with the bodies put back:"
+        grep -e '^FAIL' -e 'error' -e 'warning' "$tmp/solved.log" | grep -v '^cc ' | head -n 20 | sed 's/^/    /'
+    fi
+    if grep -rl -F "$top" "$stub" >"$tmp/refs"; then
+        fail "the built starter refers to the repository:"
+        sed 's/^/    /' "$tmp/refs" | head -n 5
+    fi
+    rm -rf "$stub" "$solved"
+done
+
+[ $failed -eq 0 ] && echo "starters: every check passed"
+[ $failed -eq 0 ]

@@ -1,0 +1,269 @@
+#!/bin/sh
+# starter.sh: writes a part's starter, the folder a course hands out, with the student's functions as stubs.
+#
+# Usage: tools/starter.sh [--solution] [--stub-earlier] PART [DEST]
+#   PART            a part: 1.2, 1.2-shading or milestones/1.2-shading
+#   DEST            the folder to write; default out/starter-<part> at the top
+#   --solution      keep the bodies of every marked function: the instructor's copy
+#   --stub-earlier  stub the marked functions of the earlier parts too; by default
+#                   they ship complete, as a course hands out a part's solution
+#                   after its deadline
+#
+# A function whose body the student writes is marked in the source by a line
+#     /* starter: todo */      or      /* starter: todo: HINT */
+# anywhere before it (docs/starters.md): its body, from the next line that is
+# exactly "{" to the next line that is exactly "}", becomes a TODO comment, casts
+# of the parameters to void, and a return of a harmless value. The starter holds
+# common/, the parts used, the part with its tests and references, the scenes
+# they need, imgdiff, and a Makefile whose `make check` tests and grades.
+set -u
+top=$(cd "$(dirname "$0")/.." && pwd) || exit 2
+usage() {
+    echo "usage: $0 [--solution] [--stub-earlier] PART [DEST]" >&2
+    exit 2
+}
+die() {
+    echo "starter: $*" >&2
+    exit 2
+}
+
+solution=no
+stub_earlier=no
+while [ $# -gt 0 ]; do
+    case $1 in
+    --solution) solution=yes ;;
+    --stub-earlier) stub_earlier=yes ;;
+    -h | --help) sed -n '2,18p' "$0" | sed 's/^# \{0,1\}//'; exit 0 ;;
+    -*) usage ;;
+    *) break ;;
+    esac
+    shift
+done
+[ $# -ge 1 ] && [ $# -le 2 ] || usage
+[ $solution = yes ] && stub_earlier=no
+
+# The part's folder, from its full name, its number, or its path.
+part=${1%/}
+part=${part##*/}
+case $part in
+*-*) ;;
+*) part=$(cd "$top/milestones" && for d in "$part"-*; do [ -d "$d" ] && echo "$d"; done) ;;
+esac
+[ -n "$part" ] && [ -f "$top/milestones/$part/Makefile" ] || die "no part '$1' in $top/milestones"
+dest=${2:-$top/out/starter-$part}
+
+# USES, SOURCES and TESTS as the part's Makefile sets them, asked of make itself
+# (without the caller's MAKEFLAGS: a PART=... given to the top make must not leak in).
+vars=$(mktemp) || exit 2
+# shellcheck disable=SC2016 # $(USES) is make's, not the shell's
+printf 'starter-vars:\n\t@echo "$(USES)|$(TESTS)"\n' >"$vars"
+answer=$(MAKEFLAGS='' make --no-print-directory -s -C "$top/milestones/$part" -f Makefile -f "$vars" \
+    starter-vars) || { rm -f "$vars"; die "cannot read milestones/$part/Makefile"; }
+rm -f "$vars"
+uses=${answer%%|*}
+tests=${answer#*|}
+
+# DEST is made in a temporary folder beside it and renamed when complete. An old
+# starter (it holds .raytra-starter) is replaced; anything else is left alone.
+if [ -e "$dest" ]; then
+    [ -f "$dest/.raytra-starter" ] || die "$dest exists and is not a starter: not replacing it"
+fi
+mkdir -p "$(dirname "$dest")" || exit 2
+tmp=$(mktemp -d "$(dirname "$dest")/.starter.XXXXXX") || exit 2
+trap 'rm -rf "$tmp"' EXIT
+trap 'exit 130' INT TERM
+
+# Filters a C file of a part: stubs each marked body (MODE stub) or keeps it (MODE
+# solution); drops the marker lines and the docs' excerpt anchors either way. Each
+# stub is listed in LIST as FILE:LINE: NAME for the starter's README.
+filter() { # MODE SOURCE OUTPUT NAME-IN-LIST LIST
+    awk -v mode="$1" -v file="$4" -v list="$5" '
+    function trim(s) { gsub(/^[ \t]+|[ \t]+$/, "", s); return s }
+    function emit(s) { print s; lines++ }
+    function fail(msg) { printf "%s:%d: %s\n", file, FNR, msg > "/dev/stderr"; bad = 1; exit 2 }
+    # The body of a stub: the TODO, the parameters cast to void, a harmless return.
+    function stub(sig,    todo, open, head, params, name, type, n, k, p, ret) {
+        open = index(sig, "(")
+        if (open == 0) fail("a starter marker, but no function signature before \"{\"")
+        head = trim(substr(sig, 1, open - 1))
+        params = substr(sig, open + 1)
+        sub(/\)[^)]*$/, "", params)
+        match(head, /[A-Za-z_][A-Za-z0-9_]*$/)
+        name = substr(head, RSTART, RLENGTH)
+        type = trim(substr(head, 1, RSTART - 1))
+        gsub(/(^|[ \t])(static|inline|extern)[ \t]/, " ", type)
+        type = trim(type)
+        todo = lines + 1
+        emit("    /* TODO: " (hint != "" ? hint : "write " name ": see the comment above.") " */")
+        n = split(params, p, ",")
+        for (k = 1; k <= n; k++) {
+            p[k] = trim(p[k])
+            sub(/\[[^]]*\]$/, "", p[k])
+            if (p[k] == "void" || p[k] == "" || p[k] == "...") continue
+            match(p[k], /[A-Za-z_][A-Za-z0-9_]*$/)
+            emit("    (void)" substr(p[k], RSTART, RLENGTH) ";")
+        }
+        # excerpt: starter-return
+        # The harmless value: nothing found, black, zero, a struct of zeros.
+        if (type == "void") ret = ""
+        else if (type == "bool") ret = "false"
+        else if (type == "Color") ret = "color(0, 0, 0)"
+        else if (type ~ /\*/ || type ~ /^((un)?signed|long|short|int|char|float|double|size_t)( |$)/) ret = "0"
+        else ret = "(" type "){0}"
+        if (ret != "") emit("    return " ret ";")
+        # end excerpt: starter-return
+        printf "%s:%d: %s\n", file, todo, name >> list
+    }
+    /^[ \t]*\/\* (end )?excerpt: [a-z0-9-]+ \*\/[ \t]*$/ { next }
+    state == 0 && /^\/\* starter: todo(: .*)? \*\/$/ {
+        hint = $0
+        sub(/^\/\* starter: todo:? ?/, "", hint)
+        sub(/ ?\*\/$/, "", hint)
+        state = 1; sig = ""; next
+    }
+    /starter:/ && /^[ \t]*\/\*/ { fail("not a starter marker: write /* starter: todo */ alone on a line") }
+    state == 1 {
+        emit($0)
+        if ($0 == "{") {
+            if (mode == "stub") { stub(sig); state = 2 } else state = 0
+        } else if ($0 ~ /^[ \t]*(\/\*|\*)/ || $0 ~ /\*\/[ \t]*$/ || $0 == "") sig = ""
+        else sig = sig " " $0
+        next
+    }
+    state == 2 { if ($0 == "}") { emit($0); state = 0 } next }
+    { emit($0) }
+    END {
+        if (!bad && state == 1) fail("a starter marker with no function after it")
+        if (!bad && state == 2) fail("a stubbed function with no closing \"}\" at the start of a line")
+    }' "$2" >"$3"
+}
+
+# Copies a part's sources, filtered, and its Makefile and README into the starter.
+copy_part() { # PART MODE
+    src=$top/milestones/$1
+    mkdir -p "$tmp/milestones/$1"
+    cp "$src/Makefile" "$tmp/milestones/$1/" || exit 2
+    [ -f "$src/README.md" ] && cp "$src/README.md" "$tmp/milestones/$1/"
+    copy_sources "milestones/$1" "$2"
+}
+
+# Copies the C files of a folder of the repository, filtered: MODE for the .c files,
+# and the headers only stripped of their marker and excerpt lines.
+copy_sources() { # FOLDER MODE
+    mkdir -p "$tmp/$1"
+    for c in "$top/$1"/*.c "$top/$1"/*.h; do
+        mode=$2
+        case $c in *.h) mode=solution ;; esac
+        filter $mode "$c" "$tmp/$1/${c##*/}" "$1/${c##*/}" "$tmp/todo.txt" || exit 2
+    done
+}
+
+: >"$tmp/todo.txt"
+mkdir -p "$tmp/tools" "$tmp/tests" "$tmp/scenes" || exit 2
+copy_sources common solution
+cp "$top/common"/*.mk "$top/common/Makefile" "$tmp/common/" &&
+    cp "$top/tools"/*.c "$top/tools"/*.h "$top/tools"/*.mk "$top/tools/Makefile" \
+        "$top/tools/deps.sh" "$top/tools/starter-check.sh" "$tmp/tools/" &&
+    cp "$top/tests/testing.h" "$top/tests/regress.sh" "$tmp/tests/" || exit 2
+
+# USES names the earlier parts newest first; they are copied oldest first, so that the
+# README lists the TODOs in the order of the course.
+earliest_first=
+for used in $uses; do earliest_first="$used $earliest_first"; done
+for used in $earliest_first; do
+    if [ $stub_earlier = yes ]; then copy_part "$used" stub; else copy_part "$used" solution; fi
+done
+if [ $solution = yes ]; then copy_part "$part" solution; else copy_part "$part" stub; fi
+cp -R "$top/milestones/$part/tests" "$top/milestones/$part/references" "$tmp/milestones/$part/" ||
+    exit 2
+
+# The scenes: those the references are rendered from, those the tests name, and the
+# meshes they load (w lines, relative to the scene).
+refs=$top/milestones/$part/references/renders.txt
+{
+    awk '$1 !~ /^#/ && NF >= 2 { sub(/^scenes\//, "", $2); print $2 }' "$refs"
+    for t in $tests; do grep -o '[A-Za-z0-9_-]*\.scn' "$top/milestones/$part/$t"; done
+} | sort -u | while read -r scene; do
+    [ -f "$top/scenes/$scene" ] || continue
+    mkdir -p "$tmp/scenes/$(dirname "$scene")" && cp "$top/scenes/$scene" "$tmp/scenes/$scene" || exit 2
+    awk '$1 == "w" { print $2 }' "$top/scenes/$scene" | while read -r mesh; do
+        from=$(dirname "$scene")/$mesh
+        mkdir -p "$tmp/scenes/$(dirname "$from")" && cp "$top/scenes/$from" "$tmp/scenes/$from" || exit 2
+    done || exit 2
+done || exit 2
+
+# The starter's Makefile: make, make check, make clean, on the repository's own makefiles.
+sed "s/@PART@/$part/g" >"$tmp/Makefile" <<'EOF'
+# Makefile of the starter of part @PART@: builds raytra, tests it and compares its images.
+#
+#   make          build milestones/@PART@/raytra, and copy it to ./raytra
+#   make check    build, run the part's unit tests, render every scene of
+#                 milestones/@PART@/references/renders.txt and compare each render with
+#                 its reference image; renders and heat maps go to out/check/
+#   make clean    remove everything make made
+#
+# WERROR=1 turns warnings into errors; SANITIZE=1 builds with AddressSanitizer and
+# UndefinedBehaviorSanitizer.
+include common/build.mk
+
+STARTER_PART := @PART@
+PART_DIR     := milestones/$(STARTER_PART)
+PART_PROGRAM := $(PART_DIR)/$(if $(filter 1,$(SANITIZE)),$(BUILD)/raytra,raytra)
+
+.PHONY: all check clean
+.NOTPARALLEL:
+
+# The program is copied to the top too, where tools/grade looks for a submission's raytra.
+all:
+	$(DEPS_STEP)
+	@$(SUBMAKE) -C $(PART_DIR)
+	@cp $(PART_PROGRAM) raytra
+
+check:
+	$(DEPS_STEP) test
+	@$(SUBMAKE) all
+	@$(SUBMAKE) -C $(PART_DIR) test-programs
+	@$(SUBMAKE) -C tools imgdiff
+	@sh tools/starter-check.sh $(PART_DIR) $(PART_PROGRAM) $(PART_DIR)/$(BUILD)/tests $(IMGDIFF) out/check
+
+clean:
+	@$(SUBMAKE) -C common clean
+	@$(SUBMAKE) -C tools clean
+	@for dir in milestones/*; do $(SUBMAKE) -C $$dir clean; done
+	rm -rf out raytra
+EOF
+
+# The starter's README: what to do, and where each TODO is.
+earlier="the parts in \`milestones/\` other than $part are complete."
+[ $stub_earlier = yes ] && earlier="the TODOs of the parts before $part are yours to write too."
+{
+    echo "# Starter of part $part"
+    echo
+    echo "Write the functions marked TODO, then run \`make check\`: it builds the"
+    echo "program, runs the part's unit tests, renders every scene of"
+    echo "\`milestones/$part/references/renders.txt\` and compares each render with its"
+    echo "reference image. It ends with \`make check: every test passes\` when all is done;"
+    echo "for each image that differs it names a heat map in \`out/check/\`: black where"
+    echo "your render equals the reference, blue to yellow to white where it differs."
+    echo
+    echo "\`make\` alone builds \`milestones/$part/raytra\`; run it as"
+    echo "\`milestones/$part/raytra SCENE OUTPUT.png\` (\`--help\` lists its options)."
+    echo "Packages needed on Debian or Ubuntu: gcc, make, pkg-config, libpng-dev and"
+    echo "check (\`tools/deps.sh test\` installs them when it may)."
+    echo
+    echo "The functions to write:"
+    echo
+    sed 's/^\(.*\): \(.*\)$/- `\2` (`\1`)/' "$tmp/todo.txt"
+    [ -s "$tmp/todo.txt" ] || echo "- none: this is the solution"
+    echo
+    echo "\`common/\` is the library every part links (vectors, scenes, images, the"
+    echo "render loop); $earlier"
+    echo "\`milestones/$part/README.md\` describes the part; the chapters it links to"
+    echo "(\`docs/\`) show its solution and are not in the starter."
+} >"$tmp/README.md"
+rm "$tmp/todo.txt"
+echo "raytra starter of part $part" >"$tmp/.raytra-starter"
+
+rm -rf "$dest" && mv "$tmp" "$dest" || exit 2
+trap - EXIT
+echo "starter: wrote $dest"
