@@ -1,6 +1,7 @@
 /* area.c: a square area light as many small point lights, each 1/N of it (the assignment's M6). */
 #include "area.h"
 
+/* starter: todo */
 /* excerpt: area-point */
 /* Returns the point (ru, rv) in [0,1)^2 of the square light: its centre plus (ru - 1/2)
  * sides along u and (rv - 1/2) sides along v = u x n, the assignment's
@@ -12,6 +13,7 @@ Vec3 area_point(const Light *light, double ru, double rv)
 }
 /* end excerpt: area-point */
 
+/* starter: todo */
 /* excerpt: area-incident */
 /* Returns what reaches point from the spot at of the light when count shadow rays share
  * it: a point light at that spot with 1/count of the light's colour ("each shadow ray

@@ -1,4 +1,4 @@
-/* area.h: the square area light `l s`: points on it, and the light one of them sends to a surface. */
+/* area.h: the square area light `l s`: points on it, and the light each sends to a surface. */
 #ifndef RAYTRA_AREA_H
 #define RAYTRA_AREA_H
 

@@ -54,11 +54,12 @@ void montecarlo_free(MonteCarlo *mc)
     mc->point_scene.lights = NULL;
 }
 
+/* starter: todo */
 /* excerpt: area-radiance */
 /* Returns the light that hit's surface reflects along r from the square light: S x S
  * shadow rays to points spread over it, each a point light of 1/S^2 of its colour. */
-static Color area_radiance(const MonteCarlo *mc, const Light *light, const Hit *hit, Ray r,
-                           int depth, Path *path)
+Color montecarlo_area_radiance(const MonteCarlo *mc, const Light *light, const Hit *hit, Ray r,
+                                int depth, Path *path)
 {
     const Sample *sample = path->sample;
     const Tracer *tr = below_tracer(&mc->below);
@@ -101,6 +102,7 @@ static Color area_radiance(const MonteCarlo *mc, const Light *light, const Hit *
 }
 /* end excerpt: area-radiance */
 
+/* starter: todo */
 /* excerpt: montecarlo-direct-radiance */
 /* Returns the light that hit's surface reflects along r straight from the lights: the
  * part below's direct light for the ambient, point and directional lights, plus every
@@ -113,11 +115,13 @@ Color montecarlo_direct_radiance(const Tracer *tr, const Hit *hit, Ray r, int de
     const Scene *scene = tr->scene;
     for (int k = 0; k < scene->light_count; k++)
         if (scene->lights[k].kind == LIGHT_AREA)
-            sum = color_add(sum, area_radiance(mc, &scene->lights[k], hit, r, depth, path));
+            sum = color_add(sum,
+                            montecarlo_area_radiance(mc, &scene->lights[k], hit, r, depth, path));
     return sum;
 }
 /* end excerpt: montecarlo-direct-radiance */
 
+/* starter: todo */
 /* excerpt: montecarlo-pixel */
 /* Returns the colour of pixel (i, j): the mean radiance of P x P rays through it, ray k
  * through a random point of sub-square k (jittered), or through its centre when P = 1.

@@ -42,6 +42,8 @@ typedef struct {
 
 bool montecarlo_init(MonteCarlo *mc, const Scene *scene, Surfaces surfaces, const Options *opts);
 void montecarlo_free(MonteCarlo *mc);
+Color montecarlo_area_radiance(const MonteCarlo *mc, const Light *light, const Hit *hit, Ray r,
+                                int depth, Path *path);
 Color montecarlo_direct_radiance(const Tracer *tr, const Hit *hit, Ray r, int depth, Path *path);
 Color montecarlo_pixel(const MonteCarlo *mc, int i, int j, RayStats *stats);
 void montecarlo_probe(const MonteCarlo *mc, int i, int j, Probe *probe);

@@ -1,4 +1,4 @@
-/* raytra.c: part 1.6: Monte Carlo ray tracing: jittered rays per pixel and soft shadows of area lights. */
+/* raytra.c: part 1.6, Monte Carlo ray tracing: jittered rays per pixel, soft shadows. */
 #include <stdlib.h>
 
 #include "app.h"

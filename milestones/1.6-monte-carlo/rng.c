@@ -1,4 +1,4 @@
-/* rng.c: PCG32 (O'Neill 2014, pcg32_random_r of the reference C code), and uniform numbers from it. */
+/* rng.c: PCG32 (O'Neill 2014, pcg32_random_r of its reference C code), and uniforms. */
 #include "rng.h"
 
 /* Returns x scrambled: the finaliser of SplitMix64 (Steele et al. 2014), which turns

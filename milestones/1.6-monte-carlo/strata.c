@@ -1,4 +1,4 @@
-/* strata.c: stratified ("jittered") sampling of the unit square (textbook 13.4), and shuffled strata. */
+/* strata.c: stratified ("jittered") sampling of the unit square (textbook 13.4), shuffles. */
 #include "strata.h"
 
 #include <string.h>
@@ -19,6 +19,7 @@ bool strata_sampling_from_name(const char *name, Sampling *sampling)
     return false;
 }
 
+/* starter: todo */
 /* excerpt: strata-point */
 /* Sets (u, v) to sample k of n x n in the unit square [0,1)^2. Jittered: the square is cut
  * into n x n sub-squares, k counting them row by row, and the point is uniform within
@@ -37,6 +38,7 @@ void strata_point(Sampling sampling, Rng *rng, int k, int n, double *u, double *
 }
 /* end excerpt: strata-point */
 
+/* starter: todo */
 /* Fills perm with 0 .. count-1 in a uniformly random order (Fisher-Yates). */
 void strata_shuffle(Rng *rng, int *perm, int count)
 {

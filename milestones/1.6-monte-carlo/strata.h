@@ -1,4 +1,4 @@
-/* strata.h: where sample points go in a square: at random, jittered in strata, or shuffled strata. */
+/* strata.h: where sample points go in a square: at random, jittered, or in shuffled strata. */
 #ifndef RAYTRA_STRATA_H
 #define RAYTRA_STRATA_H
 

@@ -44,7 +44,8 @@ START_TEST(each_of_n_samples_carries_one_nth_and_only_in_front)
 END_TEST
 
 /* A floor point's estimator: a scene of the square light (falling off as 1/r^2) and,
- * when occluded, a large triangle at height 5 covering x < -0.37 (its edge along z, on no stratum boundary). */
+ * when occluded, a large triangle at height 5 covering x < -0.37 (its edge along z, on no
+ * stratum boundary). */
 typedef struct {
     Scene scene;
     Light light;
@@ -125,8 +126,9 @@ static void check_mean(bool occluded, Sampling sampling, int side, int m)
     }
     double mean = sum / m, var = (sum2 - m * mean * mean) / (m - 1), se = sqrt(var / m);
     double want = exact(occluded);
-    ck_assert_msg(fabs(mean - want) < 3 * se, "occluded %d sampling %d S %d: mean %.9g, exact %.9g, "
-                  "standard error %.3g", occluded, sampling, side, mean, want, se);
+    ck_assert_msg(fabs(mean - want) < 3 * se,
+                  "occluded %d sampling %d S %d: mean %.9g, exact %.9g, standard error %.3g",
+                  occluded, sampling, side, mean, want, se);
     ck_assert(se < 0.02 * want); /* the test can tell a wrong value */
     montecarlo_free(&s.mc);
 }
