@@ -108,7 +108,7 @@ check-layout:
 
 # Every pixel answer of the chapters' exercises agrees with a render (docs/exercises-answers.md).
 check-exercises:
-	@scenes/exercises/check.sh
+	@RAYTRA_PROGRAM=$(if $(filter 1,$(SANITIZE)),$(BUILD)/raytra,raytra) scenes/exercises/check.sh
 
 # A part's starter for students: STARTER_OPTIONS may say --stub-earlier or --solution.
 starter:

@@ -93,6 +93,29 @@ static void print_summary(const char *path, const Image *img, const Options *opt
     fputc('\n', stderr);
 }
 
+/* Tells whether the image would be written over a file the scene was read from (the scene
+ * file or a mesh), under whatever name, link or spelling; reports it then. */
+static bool output_is_input(const Scene *scene, const char *output, const char *scene_path)
+{
+    for (int k = 0; k < scene->file_count; k++) {
+        const FileId *id = &scene->files[k];
+        if (!input_same_file(id, output))
+            continue;
+        if (strcmp(id->path, scene_path) == 0)
+            fprintf(stderr,
+                    "raytra: cannot write '%s': it is the scene file '%s' itself; give the "
+                    "image another name\n",
+                    output, scene_path);
+        else
+            fprintf(stderr,
+                    "raytra: cannot write '%s': it is the mesh '%s' that the scene reads; give "
+                    "the image another name\n",
+                    output, id->path);
+        return true;
+    }
+    return false;
+}
+
 /* Loads the scene and prints what it holds: raytra --check. */
 static bool check_scene(const Program *program, const Options *opts)
 {
@@ -194,7 +217,8 @@ static Color view_pixel(const void *ctx, int i, int j, RayStats *stats)
 }
 
 /* Renders the scene with the part's pixel function, or the view's, into img; false
- * when stopped. */
+ * when stopped. Pixels that came out NaN or infinite are told loudly: they are a bug, or
+ * a scene the parser should have refused. */
 static bool render(const Program *program, void *ctx, const Options *opts, const Scene *scene,
                    Image *img, RenderResult *result)
 {
@@ -214,9 +238,13 @@ static bool render(const Program *program, void *ctx, const Options *opts, const
         debugview_finish(view.kind, img, scene->light_count, stderr);
     if (result->nonfinite > 0)
         fprintf(stderr,
-                "raytra: warning: %ld pixels came out NaN or infinite and were written black "
-                "(the first at column %d, row %d from the top): a bug, please report it\n",
-                result->nonfinite, result->first_nonfinite_x, result->first_nonfinite_y);
+                "raytra: %s: %ld pixel%s came out NaN or infinite (or beyond the range of a "
+                "float) and %s written magenta; the first is at column %d, row %d from the "
+                "top. This is a bug in raytra, or a scene it should have refused: please "
+                "report it\n",
+                opts->strict ? "error" : "warning", result->nonfinite,
+                result->nonfinite == 1 ? "" : "s", result->nonfinite == 1 ? "was" : "were",
+                result->first_nonfinite_x, result->first_nonfinite_y);
     return true;
 }
 
@@ -246,7 +274,8 @@ int app_main(const Program *program, int argc, char **argv)
         goto done;
     }
     if (image_format_for_path(output) == IMAGE_FORMAT_UNKNOWN) {
-        fprintf(stderr, "raytra: cannot write '%s': unknown image format (use .png or .pfm)\n",
+        fprintf(stderr,
+                "raytra: cannot write '%s': unknown image format (use .png, .pfm or .exr)\n",
                 output);
         status = EXIT_USAGE;
         goto done;
@@ -259,7 +288,7 @@ int app_main(const Program *program, int argc, char **argv)
     stop_install();
     SceneLoadOptions load = {opts.convention, opts.convention_given, stderr};
     loaded = scene_load(&scene, opts.scene, &load);
-    if (!loaded || !apply_scale(&scene, &opts))
+    if (!loaded || output_is_input(&scene, output, opts.scene) || !apply_scale(&scene, &opts))
         goto done;
     note_ignored(program, &scene);
     int trace_x, trace_y;
@@ -285,7 +314,9 @@ int app_main(const Program *program, int argc, char **argv)
     }
     RenderResult result;
     if (render(program, ctx, &opts, &scene, &img, &result) && write_image(&img, output, &opts)) {
-        status = EXIT_SUCCESS;
+        /* Under --strict a non-finite pixel fails the run, but the image is still written
+         * so that its magenta pixels show where the bug is. */
+        status = opts.strict && result.nonfinite > 0 ? EXIT_FAILURE : EXIT_SUCCESS;
         if (!opts.quiet) {
             print_summary(output, &img, &opts, &result);
             if (program->report != NULL)

@@ -30,6 +30,12 @@ endif
 lazy = $(eval $1 := $$(shell $2))$($1)
 PNG_CFLAGS   = $(call lazy,PNG_CFLAGS,pkg-config --cflags libpng 2>/dev/null)
 PNG_LIBS     = $(call lazy,PNG_LIBS,pkg-config --libs libpng 2>/dev/null || echo -lpng -lz)
+# OpenEXR's pkg-config module names its C++ libraries too; raytra needs only the C core.
+EXR_CFLAGS   = $(call lazy,EXR_CFLAGS,pkg-config --cflags OpenEXR 2>/dev/null || echo -I/usr/include/OpenEXR)
+EXR_ALL_LIBS = $(call lazy,EXR_ALL_LIBS,pkg-config --libs OpenEXR 2>/dev/null)
+EXR_LIBS     = $(or $(filter -L% -lOpenEXRCore%,$(EXR_ALL_LIBS)),-lOpenEXRCore-3_1)
+# What a program that links libraytra.a links for its image files.
+IMAGE_LIBS   = $(PNG_LIBS) $(EXR_LIBS)
 CHECK_CFLAGS = $(call lazy,CHECK_CFLAGS,pkg-config --cflags check 2>/dev/null)
 CHECK_LIBS   = $(call lazy,CHECK_LIBS,pkg-config --libs check 2>/dev/null || echo -lcheck -lsubunit -lm)
 

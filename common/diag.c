@@ -57,9 +57,14 @@ static void format_located(char *out, size_t size, const char *path, int line, c
     sanitize(buf, out, size);
 }
 
-/* Reports an error at path:line right away and counts it. */
+/* Reports an error at path:line right away and counts it; past DIAG_MAX_ERRORS errors are
+ * only counted, so that no loop can flood the terminal. */
 void diag_error(Diag *d, const char *path, int line, const char *fmt, ...)
 {
+    if (d->errors >= DIAG_MAX_ERRORS) {
+        d->errors++;
+        return;
+    }
     char buf[2048];
     va_list ap;
     va_start(ap, fmt);
@@ -67,6 +72,18 @@ void diag_error(Diag *d, const char *path, int line, const char *fmt, ...)
     va_end(ap);
     fprintf(d->stream, "%s\n", buf);
     d->errors++;
+}
+
+/* Says, once, that reading path stopped after too many errors. */
+void diag_give_up(Diag *d, const char *path)
+{
+    if (d->gave_up)
+        return;
+    d->gave_up = true;
+    char buf[1024], out[2048];
+    snprintf(buf, sizeof buf, "%s: too many errors; stopped reading", path);
+    sanitize(buf, out, sizeof out);
+    fprintf(d->stream, "%s\n", out);
 }
 
 /* Records a warning; the first of each kind is kept for diag_flush. */
@@ -110,6 +127,14 @@ void diag_flush(Diag *d)
             fprintf(d->stream, "%s (%d times in all)\n", w->first, w->count);
         free(w->first);
     }
+    d->warning_kinds = 0;
+}
+
+/* Forgets the warnings not yet printed: after a fatal error they are noise. */
+void diag_forget_warnings(Diag *d)
+{
+    for (int k = 0; k < d->warning_kinds; k++)
+        free(d->warnings[k].first);
     d->warning_kinds = 0;
 }
 

@@ -20,6 +20,7 @@ typedef struct {
 typedef struct {
     FILE *stream; /* where messages go */
     int errors;
+    bool gave_up; /* "too many errors" was said */
     int warning_kinds;
     DiagWarning warnings[DIAG_MAX_WARNING_KINDS];
 } Diag;
@@ -39,7 +40,9 @@ void diag_init(Diag *d, FILE *stream);
 void diag_error(Diag *d, const char *path, int line, const char *fmt, ...) DIAG_PRINTF(4, 5);
 void diag_warn(Diag *d, const char *path, int line, const char *fmt, ...) DIAG_PRINTF(4, 5);
 bool diag_too_many(const Diag *d);
+void diag_give_up(Diag *d, const char *path);
 void diag_flush(Diag *d);
+void diag_forget_warnings(Diag *d);
 void error_set(Error *e, const char *fmt, ...) DIAG_PRINTF(2, 3);
 
 #endif

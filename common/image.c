@@ -12,6 +12,9 @@
 /* The eight bytes every PNG file starts with. */
 static const unsigned char magic_png[8] = {137, 'P', 'N', 'G', '\r', '\n', 26, '\n'};
 
+/* The four bytes every OpenEXR file starts with (20000630 as a little-endian integer). */
+static const unsigned char magic_exr[4] = {0x76, 0x2f, 0x31, 0x01};
+
 /* Makes img a black width x height image; false (img empty) when too large or no memory. */
 bool image_init(Image *img, int width, int height)
 {
@@ -66,7 +69,7 @@ double image_srgb_decode(double encoded)
     return pow((encoded + 0.055) / 1.055, 2.4);
 }
 
-/* Returns the format that path's extension names (.png or .pfm, in any case). */
+/* Returns the format that path's extension names (.png, .pfm or .exr, in any case). */
 ImageFormat image_format_for_path(const char *path)
 {
     const char *slash = strrchr(path, '/');
@@ -77,6 +80,8 @@ ImageFormat image_format_for_path(const char *path)
         return IMAGE_FORMAT_PNG;
     if (strcasecmp(dot, ".pfm") == 0)
         return IMAGE_FORMAT_PFM;
+    if (strcasecmp(dot, ".exr") == 0)
+        return IMAGE_FORMAT_EXR;
     return IMAGE_FORMAT_UNKNOWN;
 }
 
@@ -90,14 +95,15 @@ bool image_write(const Image *img, const char *path, PngEncoding encoding, Error
         return false;
     }
     if (format == IMAGE_FORMAT_UNKNOWN) {
-        error_set(err, "unknown image format (use .png or .pfm)");
+        error_set(err, "unknown image format (use .png, .pfm or .exr)");
         return false;
     }
     OutFile out;
     if (!outfile_open(&out, path, err))
         return false;
-    bool written = format == IMAGE_FORMAT_PNG ? image_write_png(img, out.file, encoding, err)
-                                              : image_write_pfm(img, out.file, err);
+    bool written = format == IMAGE_FORMAT_PNG   ? image_write_png(img, out.file, encoding, err)
+                   : format == IMAGE_FORMAT_PFM ? image_write_pfm(img, out.file, err)
+                                                : image_write_exr(img, out.file, err);
     if (!written) {
         outfile_abort(&out);
         return false;
@@ -105,7 +111,7 @@ bool image_write(const Image *img, const char *path, PngEncoding encoding, Error
     return outfile_commit(&out, err);
 }
 
-/* Reads the image at path, PNG or PFM as its first bytes tell (not its name), into img,
+/* Reads the image at path, PNG, PFM or OpenEXR as its first bytes tell (not its name), into img,
  * which is overwritten; on failure img is left empty. */
 bool image_read(Image *img, const char *path, Error *err)
 {
@@ -128,6 +134,8 @@ bool image_read(Image *img, const char *path, Error *err)
         return image_read_png(img, path, err);
     if (n >= 2 && magic[0] == 'P' && (magic[1] == 'F' || magic[1] == 'f'))
         return image_read_pfm(img, path, err);
-    error_set(err, n == 0 ? "empty file" : "not a PNG or PFM image");
+    if (n >= sizeof magic_exr && memcmp(magic, magic_exr, sizeof magic_exr) == 0)
+        return image_read_exr(img, path, err);
+    error_set(err, n == 0 ? "empty file" : "not a PNG, PFM or OpenEXR image");
     return false;
 }

@@ -1,4 +1,4 @@
-/* image.h: the float RGB image buffer, and reading and writing it as PNG or PFM. */
+/* image.h: the float RGB image buffer, and reading and writing it as PNG, PFM or OpenEXR. */
 #ifndef RAYTRA_IMAGE_H
 #define RAYTRA_IMAGE_H
 
@@ -21,7 +21,8 @@ typedef struct {
 typedef enum {
     IMAGE_FORMAT_UNKNOWN,
     IMAGE_FORMAT_PNG, /* 8-bit RGB, sRGB-encoded (or linear on request) */
-    IMAGE_FORMAT_PFM  /* 32-bit float RGB, linear, lossless */
+    IMAGE_FORMAT_PFM, /* 32-bit float RGB, linear, lossless */
+    IMAGE_FORMAT_EXR  /* OpenEXR: 32-bit float RGB, linear, ZIP-compressed (lossless) */
 } ImageFormat;
 
 /* How PNG output encodes linear radiance. */
@@ -64,9 +65,11 @@ ImageFormat image_format_for_path(const char *path);
 bool image_write(const Image *img, const char *path, PngEncoding encoding, Error *err);
 bool image_write_png(const Image *img, FILE *f, PngEncoding encoding, Error *err);
 bool image_write_pfm(const Image *img, FILE *f, Error *err);
+bool image_write_exr(const Image *img, FILE *f, Error *err);
 
 bool image_read(Image *img, const char *path, Error *err);
 bool image_read_png(Image *img, const char *path, Error *err);
 bool image_read_pfm(Image *img, const char *path, Error *err);
+bool image_read_exr(Image *img, const char *path, Error *err);
 
 #endif

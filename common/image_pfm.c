@@ -8,6 +8,8 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "stop.h"
+
 /* A PFM sample is an IEEE 754 single, copied bit for bit to and from 32-bit integers. */
 _Static_assert(sizeof(float) == sizeof(uint32_t), "float must be 32 bits");
 
@@ -45,13 +47,22 @@ bool image_write_pfm(const Image *img, FILE *f, Error *err)
         return false;
     }
     bool ok = fprintf(f, "PF\n%d %d\n-1.0\n", img->width, img->height) > 0;
+    bool stopped = false;
     for (int y = img->height - 1; ok && y >= 0; y--) {
+        /* A stop request ends the writing at once; the caller removes the temporary. */
+        if (stop_requested()) {
+            stopped = true;
+            ok = false;
+            break;
+        }
         const float *p = img->pixels + 3L * y * img->width;
         for (long k = 0; k < 3L * img->width; k++)
             put_le32(row + 4 * k, p[k]);
         ok = fwrite(row, 1, row_bytes, f) == row_bytes;
     }
-    if (!ok)
+    if (stopped)
+        error_set(err, "interrupted");
+    else if (!ok)
         error_set(err, "%s", strerror(errno));
     free(row);
     return ok;

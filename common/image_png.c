@@ -7,6 +7,8 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "stop.h"
+
 /* No chunk besides the pixels (text, an ICC profile) may make libpng allocate more. */
 #define CHUNK_MEMORY_MAX (8L << 20)
 
@@ -70,6 +72,9 @@ static bool write_png(png_structp png, png_infop info, const Image *img, PngEnco
         png_set_gAMA(png, info, 1.0);
     png_write_info(png, info);
     for (int y = 0; y < img->height; y++) {
+        /* A stop request ends the writing at once; the caller removes the temporary. */
+        if (stop_requested())
+            png_error(png, "interrupted");
         const float *p = img->pixels + 3L * y * img->width;
         for (long k = 0; k < 3L * img->width; k++)
             row[k] = (png_byte)image_encode_8bit(p[k], encoding);

@@ -7,28 +7,51 @@
 #include <string.h>
 #include <strings.h>
 
+#include "stop.h"
+
 /* Prepares r to read file from its first line. */
 void lex_start(LineReader *r, FILE *file)
 {
     r->file = file;
     r->line = 0;
     r->length = 0;
+    r->bad_byte = 0;
     r->buf[0] = '\0';
 }
 
-/* Reads the next line into r->buf, dropping "\n" or "\r\n". */
+/* Tells whether byte c never appears in a text file: a NUL, or a control code other than
+ * the blanks (tab, line feed, vertical tab, form feed, carriage return) and the escape
+ * and end-of-file (Ctrl-Z) codes that old editors leave. */
+static bool is_binary_byte(int c)
+{
+    return (c >= 0 && c < 0x09) || (c > 0x0d && c < 0x1a) || (c > 0x1b && c < 0x20) ||
+           c == 0x7f;
+}
+
+/* Reads the next line into r->buf, dropping "\n" or "\r\n". A binary byte ends the
+ * reading at once, without looking for a newline that may never come (/dev/zero); a
+ * stop request (stop.h) ends it too, every 64 KiB, so that even an endless line can be
+ * interrupted. */
 LineStatus lex_next_line(LineReader *r)
 {
-    size_t n = 0;
-    bool too_long = false, binary = false;
+    size_t n = 0, seen = 0;
+    bool too_long = false;
     int c;
     while ((c = getc(r->file)) != EOF && c != '\n') {
-        if (c == '\0')
-            binary = true;
+        if (is_binary_byte(c)) {
+            /* What came before the byte stays in buf: a file's first bytes name its type. */
+            r->line++;
+            r->buf[n] = '\0';
+            r->length = n;
+            r->bad_byte = c;
+            return LINE_BINARY;
+        }
         if (n < LEX_MAX_LINE)
             r->buf[n++] = (char)c;
         else
             too_long = true;
+        if (++seen % LEX_MAX_LINE == 0 && stop_requested())
+            return LINE_STOPPED;
     }
     if (c == EOF && ferror(r->file))
         return LINE_IO_ERROR;
@@ -39,9 +62,14 @@ LineStatus lex_next_line(LineReader *r)
         n--;
     r->buf[n] = '\0';
     r->length = n;
-    if (binary)
-        return LINE_BINARY;
     return too_long ? LINE_TOO_LONG : LINE_OK;
+}
+
+/* Describes the binary byte that ended the reading, for "...: this is not a text file". */
+const char *lex_binary_byte_name(const LineReader *r)
+{
+    static const char *const names[] = {"NUL byte", "control character"};
+    return names[r->bad_byte != 0];
 }
 
 /* Splits line in place into words separated by blanks (spaces, tabs, ...). */

@@ -19,8 +19,9 @@ typedef enum {
     LINE_OK,       /* a line, without its end-of-line characters */
     LINE_END,      /* end of file */
     LINE_TOO_LONG, /* skipped: longer than LEX_MAX_LINE */
-    LINE_BINARY,   /* the line holds a NUL byte: not a text file */
-    LINE_IO_ERROR  /* the file could not be read */
+    LINE_BINARY,   /* a NUL byte or a control character: not a text file; stop reading */
+    LINE_IO_ERROR, /* the file could not be read */
+    LINE_STOPPED   /* a stop was requested (stop.h) in the middle of a line */
 } LineStatus;
 
 typedef struct {
@@ -28,6 +29,7 @@ typedef struct {
     int line; /* number of the line last read, from 1 */
     char buf[LEX_MAX_LINE + 1];
     size_t length;
+    int bad_byte; /* after LINE_BINARY: the byte that made it binary */
 } LineReader;
 
 typedef struct {
@@ -48,6 +50,7 @@ extern const char lex_dash_warning[];
 
 void lex_start(LineReader *r, FILE *file);
 LineStatus lex_next_line(LineReader *r);
+const char *lex_binary_byte_name(const LineReader *r);
 void lex_split(char *line, Words *w);
 NumberStatus lex_number(const char *word, double *value);
 const char *lex_number_problem(NumberStatus s);

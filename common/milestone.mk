@@ -40,10 +40,10 @@ $(LIB): $(OBJECTS)
 	$(AR) rcs $@ $^
 
 $(PROGRAM): $(BUILD)/raytra.o $(LINK_LIBS)
-	$(CC) $(ALL_LDFLAGS) -o $@ $< $(LINK_LIBS) $(PNG_LIBS) -lm
+	$(CC) $(ALL_LDFLAGS) -o $@ $< $(LINK_LIBS) $(IMAGE_LIBS) -lm
 
 $(BUILD)/tests/%: $(BUILD)/tests/%.o $(LINK_LIBS)
-	$(CC) $(ALL_LDFLAGS) -o $@ $< $(LINK_LIBS) $(CHECK_LIBS) $(PNG_LIBS) -lm
+	$(CC) $(ALL_LDFLAGS) -o $@ $< $(LINK_LIBS) $(CHECK_LIBS) $(IMAGE_LIBS) -lm
 $(BUILD)/tests/%.o: INCLUDES += -I$(TOP)/tests $(CHECK_CFLAGS) -DPART_DIR='"$(CURDIR)"' \
                                  -DTOP_DIR='"$(TOP)"' -DRAYTRA='"$(CURDIR)/$(PROGRAM)"'
 

@@ -9,7 +9,12 @@
 
 #include "array.h"
 #include "lex.h"
+#include "input.h"
 #include "scene.h"
+#include "stop.h"
+
+/* How often long loops look for a stop request (stop.h). */
+#define POLL_EVERY 65536
 
 /* A triangle as read, before its indices are checked against the vertex count. */
 typedef struct {
@@ -25,6 +30,21 @@ typedef struct {
     Face *faces;
     int face_count, face_capacity;
 } ObjReader;
+
+/* Makes room for item count of *items, called what; false (reported, once, naming the real
+ * cause) when memory runs out or the limit is reached. */
+static bool room_for(ObjReader *r, int line, void *items, int *capacity, int count,
+                     size_t size, const char *what)
+{
+    if (array_grow(items, capacity, count, size))
+        return true;
+    if (count >= ARRAY_MAX_ITEMS)
+        diag_error(r->diag, r->path, line, "more than %d %s: the limit of a mesh",
+                   ARRAY_MAX_ITEMS, what);
+    else
+        diag_error(r->diag, r->path, line, "out of memory for %d %s", count + 1, what);
+    return false;
+}
 
 /* Handles "v x y z [more]": numbers after the third (w, or a vertex colour) are ignored. */
 static bool read_vertex(ObjReader *r, int line, const Words *w)
@@ -46,7 +66,8 @@ static bool read_vertex(ObjReader *r, int line, const Words *w)
         }
     }
     Mesh *m = r->mesh;
-    if (!array_grow(&m->vertices, &r->vertex_capacity, m->vertex_count, sizeof(Vec3)))
+    if (!room_for(r, line, &m->vertices, &r->vertex_capacity, m->vertex_count, sizeof(Vec3),
+                  "vertices"))
         return false;
     m->vertices[m->vertex_count++] = vec3(xyz[0], xyz[1], xyz[2]);
     return true;
@@ -61,14 +82,18 @@ static void skip_integer(const char **p)
         (*p)++;
 }
 
+typedef enum { CORNER_OK, CORNER_MALFORMED, CORNER_TOO_LARGE } CornerStatus;
+
 /* Reads the vertex index of a face corner "v", "v/t", "v//n" or "v/t/n". */
-static bool parse_corner(const char *word, long *vertex)
+static CornerStatus parse_corner(const char *word, long *vertex)
 {
     char *end;
     errno = 0;
     *vertex = strtol(word, &end, 10);
-    if (end == word || errno != 0)
-        return false;
+    if (end == word)
+        return CORNER_MALFORMED;
+    /* Far beyond any mesh: no more than ARRAY_MAX_ITEMS vertices are ever read. */
+    bool too_large = errno == ERANGE || *vertex > ARRAY_MAX_ITEMS || *vertex < -ARRAY_MAX_ITEMS;
     /* The texture and normal indices are not used, but must be well formed. */
     const char *p = end;
     if (*p == '/') {
@@ -79,7 +104,9 @@ static bool parse_corner(const char *word, long *vertex)
             skip_integer(&p);
         }
     }
-    return *p == '\0';
+    if (*p != '\0')
+        return CORNER_MALFORMED;
+    return too_large ? CORNER_TOO_LARGE : CORNER_OK;
 }
 
 /* Handles "f c1 c2 c3 ...": a polygon, split into a fan of triangles from its first corner. */
@@ -99,8 +126,15 @@ static bool read_face(ObjReader *r, int line, const Words *w)
     for (int k = 0; k < corners; k++) {
         const char *word = w->word[k + 1];
         long v;
-        if (!parse_corner(word, &v)) {
+        CornerStatus cs = parse_corner(word, &v);
+        if (cs == CORNER_MALFORMED) {
             diag_error(r->diag, r->path, line, "malformed face vertex '%s'", word);
+            return true;
+        }
+        if (cs == CORNER_TOO_LARGE) {
+            diag_error(r->diag, r->path, line,
+                       "face vertex index %s is out of range (a mesh has at most %d vertices)",
+                       word, ARRAY_MAX_ITEMS);
             return true;
         }
         if (v == 0) {
@@ -118,7 +152,8 @@ static bool read_face(ObjReader *r, int line, const Words *w)
         index[k] = v < 0 ? r->mesh->vertex_count + 1 + v : v;
     }
     for (int k = 1; k + 1 < corners; k++) {
-        if (!array_grow(&r->faces, &r->face_capacity, r->face_count, sizeof(Face)))
+        if (!room_for(r, line, &r->faces, &r->face_capacity, r->face_count, sizeof(Face),
+                      "triangles"))
             return false;
         r->faces[r->face_count++] = (Face){{index[0], index[k], index[k + 1]}, line};
     }
@@ -131,10 +166,14 @@ static bool resolve_faces(ObjReader *r)
     Mesh *m = r->mesh;
     if (r->face_count > 0) {
         m->triangles = malloc((size_t)r->face_count * sizeof *m->triangles);
-        if (m->triangles == NULL)
+        if (m->triangles == NULL) {
+            diag_error(r->diag, r->path, 0, "out of memory for %d triangles", r->face_count);
             return false;
+        }
     }
     for (int f = 0; f < r->face_count && !diag_too_many(r->diag); f++) {
+        if (f % POLL_EVERY == 0 && stop_requested())
+            return false;
         const Face *face = &r->faces[f];
         bool in_range = true;
         for (int k = 0; k < 3; k++)
@@ -160,7 +199,8 @@ static bool resolve_faces(ObjReader *r)
 }
 
 /* Reads an OBJ mesh from the open file f into mesh; problems go to diag as path's,
- * with the OBJ's own line numbers. The caller closes f. */
+ * with the OBJ's own line numbers. False when there were any, or (silently) when a stop
+ * was requested (stop.h). The caller closes f. */
 bool obj_load_stream(Mesh *mesh, FILE *f, const char *path, Diag *diag)
 {
     memset(mesh, 0, sizeof *mesh);
@@ -174,21 +214,30 @@ bool obj_load_stream(Mesh *mesh, FILE *f, const char *path, Diag *diag)
         LineStatus st = lex_next_line(lr);
         if (st == LINE_END)
             break;
+        if (st == LINE_STOPPED || (lr->line % POLL_EVERY == 0 && stop_requested())) {
+            ok = false;
+            break;
+        }
         if (st == LINE_IO_ERROR) {
             diag_error(diag, path, lr->line + 1, "read error: %s", strerror(errno));
             break;
         }
         if (st == LINE_BINARY) {
-            diag_error(diag, path, lr->line, "NUL byte in the file: this is not a text OBJ file");
+            diag_error(diag, path, lr->line, "%s in the file: this is not a text OBJ file",
+                       lex_binary_byte_name(lr));
             break;
         }
         if (st == LINE_TOO_LONG) {
             diag_error(diag, path, lr->line, "line longer than %d characters", LEX_MAX_LINE);
             continue;
         }
+        /* A comment runs from # to the end of the line, after a statement too. */
+        char *comment = strchr(lr->buf, '#');
+        if (comment != NULL)
+            *comment = '\0';
         Words w;
         lex_split(lr->buf, &w);
-        if (w.count == 0 || w.word[0][0] == '#')
+        if (w.count == 0)
             continue;
         if (strcmp(w.word[0], "v") == 0)
             ok = read_vertex(&r, lr->line, &w);
@@ -198,9 +247,6 @@ bool obj_load_stream(Mesh *mesh, FILE *f, const char *path, Diag *diag)
     }
     if (ok && diag->errors == errors_before)
         ok = resolve_faces(&r);
-    if (!ok)
-        diag_error(diag, path, 0, "out of memory, or more than %d vertices or faces",
-                   ARRAY_MAX_ITEMS);
     free(r.faces);
     free(lr);
     if (!ok || diag->errors != errors_before) {
@@ -214,11 +260,14 @@ bool obj_load_stream(Mesh *mesh, FILE *f, const char *path, Diag *diag)
 bool obj_load(Mesh *mesh, const char *path, Diag *diag)
 {
     memset(mesh, 0, sizeof *mesh);
-    FILE *f = fopen(path, "r");
+    Error err;
+    FileId id;
+    FILE *f = input_open(path, "OBJ file", false, &id, &err);
     if (f == NULL) {
-        diag_error(diag, path, 0, "cannot open: %s", strerror(errno));
+        diag_error(diag, path, 0, "%s", err.text);
         return false;
     }
+    free(id.path);
     bool ok = obj_load_stream(mesh, f, path, diag);
     fclose(f);
     return ok;

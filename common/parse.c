@@ -13,6 +13,7 @@
 #include "lex.h"
 #include "obj.h"
 #include "scene.h"
+#include "stop.h"
 
 typedef struct Parser Parser;
 
@@ -40,20 +41,31 @@ struct Parser {
     Convention convention;
     int obj_lines; /* v and f lines: a mesh given where a scene belongs */
     int material_capacity, sphere_capacity, plane_capacity, triangle_capacity, light_capacity;
+    int file_capacity;
+    char head[8]; /* the first bytes of the file, to name an image given as a scene */
+    bool stopped; /* reading ended early: a stop request, a binary file or a read error */
 };
 
 /* Reports an error on the line being read. */
 #define ERROR(p, ...) diag_error((p)->diag, (p)->path, (p)->line, __VA_ARGS__)
 
-/* Makes room for one more item in array a of the scene; false (reported) when out of memory. */
-#define ROOM_FOR(p, a, count, capacity) room_for((p), &(a), &(capacity), (count), sizeof *(a))
+/* Makes room for one more item in array a of the scene, items called what in messages;
+ * false (reported) when out of memory or at the limit. */
+#define ROOM_FOR(p, a, count, capacity, what)                                                    \
+    room_for((p), &(a), &(capacity), (count), sizeof *(a), (what))
 
 /* The function behind ROOM_FOR. */
-static bool room_for(Parser *p, void *items, int *capacity, int count, size_t size)
+static bool room_for(Parser *p, void *items, int *capacity, int count, size_t size,
+                     const char *what)
 {
     if (array_grow(items, capacity, count, size))
         return true;
-    ERROR(p, "out of memory, or more than %d items of one kind", ARRAY_MAX_ITEMS);
+    if (count >= ARRAY_MAX_ITEMS)
+        ERROR(p, "more than %d %s: the limit of the scene format", ARRAY_MAX_ITEMS, what);
+    else
+        ERROR(p, "out of memory for %d %s", count + 1, what);
+    /* Every later line would fail the same way: one message is enough. */
+    p->stopped = true;
     return false;
 }
 
@@ -63,7 +75,7 @@ static int current_material(Parser *p)
     if (p->material >= 0)
         return p->material;
     Scene *s = p->scene;
-    if (!ROOM_FOR(p, s->materials, s->material_count, p->material_capacity))
+    if (!ROOM_FOR(p, s->materials, s->material_count, p->material_capacity, "materials"))
         return 0;
     diag_warn(p->diag, p->path, p->line,
               "geometry before the first material (m) gets the default material "
@@ -80,6 +92,26 @@ static bool check_color(Parser *p, const char *what, const double *v, char *cons
     for (int k = 0; k < 3; k++)
         if (v[k] < 0) {
             ERROR(p, "%s must not be negative, got %s", what, words[k]);
+            return false;
+        }
+    return true;
+}
+
+/* Tells whether a material's colour is a reflectance, each component in [0, 1]; reports it
+ * otherwise. A surface reflects at most the light that falls on it: the lecture gives
+ * material colours "on [0 1]" and only light colours "may be > 1":
+ * slide 66 ("these may be > 1"). A mirror
+ * colour above 1 would even multiply the light at every bounce, up to infinity. */
+static bool check_reflectance(Parser *p, const char *what, const double *v, char *const *words)
+{
+    if (!check_color(p, what, v, words))
+        return false;
+    for (int k = 0; k < 3; k++)
+        if (v[k] > 1) {
+            /* 85 for 0.85 is the usual slip: say so. */
+            ERROR(p, "%s must be in [0, 1] (a material reflects at most the light it gets), "
+                     "got %s%s",
+                  what, words[k], v[k] <= 100 ? "; a percentage? write it as a fraction" : "");
             return false;
         }
     return true;
@@ -132,16 +164,19 @@ static void parse_sphere(Parser *p, const double *v, int n, char *const *words)
         return;
     Scene *s = p->scene;
     int material = current_material(p);
-    if (ROOM_FOR(p, s->spheres, s->sphere_count, p->sphere_capacity))
+    if (ROOM_FOR(p, s->spheres, s->sphere_count, p->sphere_capacity, "spheres"))
         s->spheres[s->sphere_count++] = (Sphere){vec3(v[0], v[1], v[2]), v[3], material, p->line};
 }
 
-/* Appends triangle abc, given on the line being read (a t or w line), in material. */
-static void add_triangle(Parser *p, Vec3 a, Vec3 b, Vec3 c, int material)
+/* Appends triangle abc, given on the line being read (a t or w line), in material;
+ * false (reported) when there is no room. */
+static bool add_triangle(Parser *p, Vec3 a, Vec3 b, Vec3 c, int material)
 {
     Scene *s = p->scene;
-    if (ROOM_FOR(p, s->triangles, s->triangle_count, p->triangle_capacity))
-        s->triangles[s->triangle_count++] = (Triangle){a, b, c, material, p->line};
+    if (!ROOM_FOR(p, s->triangles, s->triangle_count, p->triangle_capacity, "triangles"))
+        return false;
+    s->triangles[s->triangle_count++] = (Triangle){a, b, c, material, p->line};
+    return true;
 }
 
 /* t x1 y1 z1 x2 y2 z2 x3 y3 z3: a triangle, counterclockwise seen from its front. */
@@ -153,7 +188,8 @@ static void parse_triangle(Parser *p, const double *v, int n, char *const *words
         diag_warn(p->diag, p->path, p->line, "degenerate triangle (no area) skipped");
         return;
     }
-    add_triangle(p, a, b, c, current_material(p));
+    int material = current_material(p);
+    add_triangle(p, a, b, c, material);
 }
 
 /* p nx ny nz d: a plane; its normal and d are put in the lecture's form by finish_planes. */
@@ -165,7 +201,7 @@ static void parse_plane(Parser *p, const double *v, int n, char *const *words)
         return;
     Scene *s = p->scene;
     int material = current_material(p);
-    if (ROOM_FOR(p, s->planes, s->plane_count, p->plane_capacity))
+    if (ROOM_FOR(p, s->planes, s->plane_count, p->plane_capacity, "planes"))
         s->planes[s->plane_count++] = (Plane){normal, v[3], material, p->line};
 }
 
@@ -219,7 +255,7 @@ static void add_light(Parser *p, Light light)
 {
     Scene *s = p->scene;
     light.line = p->line;
-    if (ROOM_FOR(p, s->lights, s->light_count, p->light_capacity))
+    if (ROOM_FOR(p, s->lights, s->light_count, p->light_capacity, "lights"))
         s->lights[s->light_count++] = light;
 }
 
@@ -288,9 +324,9 @@ static void parse_material(Parser *p, const double *v, int n, char *const *words
               n);
         return;
     }
-    bool ok = check_color(p, "diffuse colour", v, words);
-    ok = check_color(p, "specular colour", v + 3, words + 3) && ok;
-    ok = check_color(p, "mirror colour", v + 7, words + 7) && ok;
+    bool ok = check_reflectance(p, "diffuse colour", v, words);
+    ok = check_reflectance(p, "specular colour", v + 3, words + 3) && ok;
+    ok = check_reflectance(p, "mirror colour", v + 7, words + 7) && ok;
     if (v[6] < 0) {
         ERROR(p, "phong exponent must not be negative, got %s", words[6]);
         ok = false;
@@ -313,7 +349,7 @@ static void parse_material(Parser *p, const double *v, int n, char *const *words
         m.attenuation = color(v[11], v[12], v[13]);
     }
     Scene *s = p->scene;
-    if (ok && ROOM_FOR(p, s->materials, s->material_count, p->material_capacity)) {
+    if (ok && ROOM_FOR(p, s->materials, s->material_count, p->material_capacity, "materials")) {
         m.line = p->line;
         s->materials[s->material_count] = m;
         p->material = s->material_count++;
@@ -439,6 +475,19 @@ fail:
     return NULL;
 }
 
+/* Records that the scene reads the file id, so that the image is never written over it;
+ * takes id's path. False (reported) when out of memory. */
+static bool note_file(Parser *p, FileId id)
+{
+    Scene *s = p->scene;
+    if (!ROOM_FOR(p, s->files, s->file_count, p->file_capacity, "files")) {
+        free(id.path);
+        return false;
+    }
+    s->files[s->file_count++] = id;
+    return true;
+}
+
 /* w path: the triangles of an OBJ mesh, in the current material. */
 static void parse_mesh(Parser *p, const char *name)
 {
@@ -449,26 +498,43 @@ static void parse_mesh(Parser *p, const char *name)
     char *path = find_mesh(p, name);
     if (path == NULL)
         return;
-    struct stat st;
-    if (stat(path, &st) == 0 && S_ISDIR(st.st_mode)) {
-        ERROR(p, "mesh '%s' is a directory (%s), not an OBJ file", name, path);
+    Error err;
+    FileId id;
+    FILE *f = input_open(path, "OBJ file", false, &id, &err);
+    if (f == NULL) {
+        ERROR(p, "mesh '%s' %s (%s)", name, err.text, path);
         free(path);
         return;
     }
     Mesh mesh;
-    if (!obj_load(&mesh, path, p->diag)) {
-        ERROR(p, "mesh '%s' not loaded because of the errors above", name);
+    bool loaded = obj_load_stream(&mesh, f, path, p->diag);
+    fclose(f);
+    bool noted = note_file(p, id);
+    if (!noted || !loaded) {
+        if (loaded)
+            obj_free(&mesh);
+        else if (!stop_requested())
+            ERROR(p, "mesh '%s' not loaded because of the errors above", name);
         free(path);
         return;
     }
     if (mesh.triangle_count == 0)
         diag_warn(p->diag, path, 0, "mesh has no triangles");
+    Scene *s = p->scene;
+    /* One message, not one per triangle, when the mesh does not fit. */
+    if (mesh.triangle_count > ARRAY_MAX_ITEMS - s->triangle_count) {
+        ERROR(p, "mesh '%s' has %d triangles: with the scene's %d, more than %d, the limit",
+              name, mesh.triangle_count, s->triangle_count, ARRAY_MAX_ITEMS);
+        mesh.triangle_count = 0;
+    }
     int material = current_material(p);
     for (int k = 0; k < mesh.triangle_count; k++) {
         const int *t = mesh.triangles[k];
-        add_triangle(p, mesh.vertices[t[0]], mesh.vertices[t[1]], mesh.vertices[t[2]], material);
+        if (!add_triangle(p, mesh.vertices[t[0]], mesh.vertices[t[1]], mesh.vertices[t[2]],
+                          material))
+            break;
     }
-    p->scene->mesh_count++;
+    s->mesh_count++;
     obj_free(&mesh);
     free(path);
 }
@@ -595,22 +661,36 @@ static void finish(Parser *p, const SceneLoadOptions *opts)
     finish_planes(s);
 }
 
-/* Opens path for reading as a scene file; NULL (reported) when it cannot be. */
-static FILE *open_scene(Diag *diag, const char *path)
+/* Returns what kind of image a file starting with head is, or NULL: an image given
+ * where the scene belongs, usually the output named first. */
+static const char *image_kind(const char *head)
 {
-    struct stat st;
-    if (stat(path, &st) == 0 && S_ISDIR(st.st_mode)) {
-        diag_error(diag, path, 0, "is a directory, not a scene file");
-        return NULL;
-    }
-    FILE *f = fopen(path, "r");
-    if (f == NULL)
-        diag_error(diag, path, 0, "cannot open scene file: %s", strerror(errno));
-    return f;
+    if (strncmp(head, "\x89PNG", 4) == 0)
+        return "a PNG image";
+    if (strcmp(head, "PF") == 0 || strcmp(head, "Pf") == 0)
+        return "a PFM image";
+    if (strncmp(head, "v/1", 3) == 0)
+        return "an OpenEXR image";
+    return NULL;
+}
+
+/* Reports the binary byte that ended the reading, naming an image by its kind. */
+static void report_binary(Parser *p, const LineReader *reader)
+{
+    const char *kind = image_kind(p->head);
+    if (kind != NULL)
+        diag_error(p->diag, p->path, 0,
+                   "this is %s, not a scene file (the scene comes first: raytra SCENE "
+                   "[OUTPUT])",
+                   kind);
+    else
+        ERROR(p, "%s in the file: this is not a text scene file",
+              lex_binary_byte_name(reader));
 }
 
 /* Reads a scene from the open file f, named path in messages and for finding meshes;
- * false after reporting every problem found. The caller closes f. */
+ * false after reporting every problem found, or silently when a stop was requested
+ * (stop.h). The caller closes f. */
 bool scene_load_stream(Scene *scene, FILE *f, const char *path, const SceneLoadOptions *opts)
 {
     memset(scene, 0, sizeof *scene);
@@ -618,37 +698,42 @@ bool scene_load_stream(Scene *scene, FILE *f, const char *path, const SceneLoadO
     diag_init(&diag, opts->messages);
     scene->path = strdup(path);
     LineReader *reader = malloc(sizeof *reader);
+    Parser p = {.scene = scene, .diag = &diag, .path = path, .material = -1};
     if (reader != NULL && scene->path != NULL) {
-        Parser p = {.scene = scene, .diag = &diag, .path = path, .material = -1};
         lex_start(reader, f);
-        while (!diag_too_many(&diag)) {
+        while (!diag_too_many(&diag) && !p.stopped) {
             LineStatus st = lex_next_line(reader);
             p.line = reader->line;
             if (st == LINE_END)
                 break;
-            if (st == LINE_IO_ERROR) {
+            if (p.line == 1 && (st == LINE_OK || st == LINE_BINARY))
+                snprintf(p.head, sizeof p.head, "%.7s", reader->buf);
+            if (stop_requested() || st == LINE_STOPPED) {
+                p.stopped = true;
+            } else if (st == LINE_IO_ERROR) {
                 ERROR(&p, "read error: %s", strerror(errno));
-                break;
-            }
-            if (st == LINE_BINARY) {
-                ERROR(&p, "NUL byte in the file: this is not a text scene file");
-                break;
-            }
-            if (st == LINE_TOO_LONG)
+                p.stopped = true;
+            } else if (st == LINE_BINARY) {
+                /* Whatever was read before is noise: one message says it all. */
+                diag_forget_warnings(&diag);
+                report_binary(&p, reader);
+                p.stopped = true;
+            } else if (st == LINE_TOO_LONG) {
                 ERROR(&p, "line longer than %d characters", LEX_MAX_LINE);
-            else
+            } else {
                 parse_line(&p, reader->buf);
+            }
         }
         if (diag_too_many(&diag))
-            diag_error(&diag, path, 0, "too many errors; stopped reading");
-        else
+            diag_give_up(&diag, path);
+        else if (!p.stopped && !stop_requested())
             finish(&p, opts);
     } else {
         diag_error(&diag, path, 0, "out of memory");
     }
     free(reader);
     diag_flush(&diag);
-    if (diag.errors > 0) {
+    if (diag.errors > 0 || stop_requested()) {
         scene_free(scene);
         return false;
     }
@@ -658,14 +743,28 @@ bool scene_load_stream(Scene *scene, FILE *f, const char *path, const SceneLoadO
 /* Reads the scene file at path; false after reporting every problem found. */
 bool scene_load(Scene *scene, const char *path, const SceneLoadOptions *opts)
 {
+    memset(scene, 0, sizeof *scene);
     Diag diag;
     diag_init(&diag, opts->messages);
-    FILE *f = open_scene(&diag, path);
+    Error err;
+    FileId id;
+    FILE *f = input_open(path, "scene file", true, &id, &err);
     if (f == NULL) {
-        memset(scene, 0, sizeof *scene);
+        /* Ctrl-C while waiting for a pipe's writer is an interruption, not an error. */
+        if (!stop_requested())
+            diag_error(&diag, path, 0, "%s", err.text);
         return false;
     }
     bool ok = scene_load_stream(scene, f, path, opts);
     fclose(f);
+    if (ok) {
+        Parser p = {.scene = scene, .diag = &diag, .path = path,
+                    .file_capacity = scene->file_count};
+        ok = note_file(&p, id);
+        if (!ok)
+            scene_free(scene);
+    } else {
+        free(id.path);
+    }
     return ok;
 }

@@ -30,7 +30,8 @@ typedef struct {
 typedef struct {
     RayStats stats;
     double seconds;
-    long nonfinite; /* pixels whose colour was NaN or infinite, stored black */
+    long nonfinite; /* pixels whose colour was NaN, infinite or beyond float range,
+                       stored magenta (1, 0, 1) */
     int first_nonfinite_x, first_nonfinite_y;
     bool stopped; /* a stop was requested (stop.h): the image is incomplete */
 } RenderResult;

@@ -41,6 +41,9 @@ void scene_free(Scene *scene)
     free(scene->planes);
     free(scene->triangles);
     free(scene->lights);
+    for (int k = 0; k < scene->file_count; k++)
+        free(scene->files[k].path);
+    free(scene->files);
     memset(scene, 0, sizeof *scene);
 }
 

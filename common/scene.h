@@ -6,6 +6,7 @@
 #include <stdio.h>
 
 #include "color.h"
+#include "input.h"
 #include "vec3.h"
 
 /* Positive sizes (a radius, a focal length, ...) and the lengths of directions must be at
@@ -91,6 +92,8 @@ typedef struct {
     Light *lights; /* point, directional and area lights */
     int light_count;
     Color ambient; /* the l a light; black when there is none */
+    FileId *files; /* every file read: the scene file, then each mesh */
+    int file_count;
 } Scene;
 
 /* What a scene uses, so that a part can say which of it it ignores. */

@@ -5,7 +5,8 @@
 #
 # Runs RAYTRA on each case of tests/bad-input/cases.txt (see its header) and checks the
 # exit status, that standard error holds the expected message, and that an image was
-# written exactly when raytra succeeded. Cases named @NAME are made here at run time.
+# written exactly when raytra succeeded (a file that was already at the output's name,
+# such as the scene itself, must be left byte for byte as it was). Cases named @NAME are made here at run time.
 # Cases that need permissions to matter (an unreadable file, a read-only folder) are
 # skipped, saying so, when they do not (as root).
 set -u
@@ -20,8 +21,8 @@ SCENE='c 0 0 0  0 0 -1  35 35 25  32 24
 m 0.8 0.1 0.1  0.5 0.5 0.5  50  0 0 0
 s 0 0 -50 10'
 
-# Makes case $1 in the current (empty) folder and sets scene and output, and skip to the
-# reason when the case cannot be made to matter here.
+# Makes case $1 in the current (empty) folder and sets scene and output ("-" for none: the
+# default name), and skip to the reason when the case cannot be made to matter here.
 make_case() {
     scene=scene.scn output=out.png skip=""
     case $1 in
@@ -49,6 +50,19 @@ make_case() {
         [ -w read-only ] && skip="permissions are not enforced (running as root)" ;;
     @output-is-a-folder) output=folder.png; mkdir folder.png ;;
     @output-extension) output=out.jpg ;;
+    @dev-zero.scn) scene=/dev/zero ;;
+    @mesh-dev-zero.scn) printf '%s\nw /dev/zero\n' "$SCENE" >"$scene" ;;
+    @mesh-fifo.scn)
+        printf '%s\nw fifo.obj\n' "$SCENE" >"$scene"
+        mkfifo fifo.obj ;;
+    @output-is-scene) scene=scene.png output=scene.png; printf '%s\n' "$SCENE" >"$scene" ;;
+    @output-default-is-scene) scene=scene.png output=-; printf '%s\n' "$SCENE" >"$scene" ;;
+    @output-links-to-scene) output=link.png; printf '%s\n' "$SCENE" >"$scene"; ln -s "$scene" link.png ;;
+    @output-is-mesh)
+        output=mesh.png
+        printf '%s\nw mesh.obj\n' "$SCENE" >"$scene"
+        printf 'v 0 0 -50\nv 10 0 -50\nv 0 10 -50\nf 1 2 3\n' >mesh.obj
+        ln mesh.obj mesh.png ;;
     *) skip="no such generated case in tests/bad-input.sh" ;;
     esac
     [ "$scene" = scene.scn ] && [ ! -e scene.scn ] && printf '%s\n' "$SCENE" >scene.scn
@@ -71,13 +85,21 @@ while read -r name status message; do
             continue
         fi
         scene=$(sed -n 1p "$tmp/names") output=$(sed -n 2p "$tmp/names")
-        (cd "$dir" && "$raytra" -q -j 1 "$scene" "$output") 2>"$tmp/err"
+        if [ "$output" = - ]; then
+            image=$dir/$(basename "${scene%.*}").png
+            set -- "$scene"
+        else
+            image=$dir/$output
+            set -- "$scene" "$output"
+        fi
+        before=""
+        [ -f "$image" ] && before=$(cksum <"$image")
+        (cd "$dir" && "$raytra" -q -j 1 "$@") 2>"$tmp/err"
         got=$?
-        image=$dir/$output
     else
-        (cd "$here" && "$raytra" -q -j 1 "$name" "$dir/out.png") 2>"$tmp/err"
+        image=$dir/out.png before=""
+        (cd "$here" && "$raytra" -q -j 1 "$name" "$image") 2>"$tmp/err"
         got=$?
-        image=$dir/out.png
     fi
     problem=""
     if [ "$got" -ne "$status" ]; then
@@ -90,6 +112,9 @@ while read -r name status message; do
     fi
     if [ -z "$problem" ] && [ "$status" -eq 0 ] && [ ! -f "$image" ]; then
         problem="no image written"
+    elif [ -z "$problem" ] && [ "$status" -ne 0 ] && [ -n "$before" ]; then
+        [ -f "$image" ] && [ "$(cksum <"$image")" = "$before" ] ||
+            problem="the file at the output's name was changed although raytra failed"
     elif [ -z "$problem" ] && [ "$status" -ne 0 ] && [ -f "$image" ]; then
         problem="an image was written although raytra failed"
     fi

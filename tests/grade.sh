@@ -186,7 +186,7 @@ check "the strange name's rows, quoted" \
 
 # The reasons and the figures.
 has 'wrong-size,spheres-three,WRONG SIZE,,,,,,,,,,"the image is 160 x 120 pixels, the reference 320 x 240",'
-has 'unreadable,spheres-three,UNREADABLE,,,,,,,,,,the file cannot be read as an image: not a PNG or PFM image,'
+has 'unreadable,spheres-three,UNREADABLE,,,,,,,,,,"the file cannot be read as an image: not a PNG, PFM or OpenEXR image",'
 has 'hanging,demo,TIMEOUT,,,,,,,,,,did not finish within 1 s,'
 has 'crashing,demo,CRASHED,,,,,,,,,,killed by signal 11 (Segmentation fault),'
 has 'greedy,demo,OUT OF MEMORY,,,,,,,,,,ran out of memory (exit status 1; memory limit 2 GiB),'

@@ -171,7 +171,7 @@ run 2 a.pfm missing.png
 has "imgdiff: cannot read 'missing.png': No such file or directory"
 printf 'hello\n' >text.png
 run 2 text.png a.pfm
-has "imgdiff: cannot read 'text.png': not a PNG or PFM image"
+has "imgdiff: cannot read 'text.png': not a PNG, PFM or OpenEXR image"
 dd if=a.pfm of=cut.pfm bs=1 count=30 2>/dev/null
 run 2 a.pfm cut.pfm
 has "imgdiff: cannot read 'cut.pfm': truncated: expected 144 bytes of pixels, found 18"

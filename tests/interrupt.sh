@@ -11,8 +11,10 @@
 #   1. SIGINT (1 thread), then SIGTERM (2 threads), during a long render: raytra stops
 #      within 2 s with exit status 130 or 143, says the image was not written, and leaves
 #      the old image byte for byte as it was and no temporary file beside it.
-#   2. The output's folder removed while raytra runs: it says it cannot write, exits 1.
-#   3. Writing fails (a file-size limit smaller than the image, as a full disk would): it
+#   2. SIGINT while the scene is still being read (an endless stream of lines, then one
+#      endless line, through the pipe): raytra stops within 1 s with exit status 130.
+#   3. The output's folder removed while raytra runs: it says it cannot write, exits 1.
+#   4. Writing fails (a file-size limit smaller than the image, as a full disk would): it
 #      says so, exits 1, and the old image and the folder are as they were.
 set -u
 [ $# -eq 1 ] || { echo "usage: $0 RAYTRA" >&2; exit 2; }
@@ -125,6 +127,41 @@ for signal in INT TERM; do
         continue
     fi
     sed 's/^/    /' err
+done
+
+# SIGINT while loading: the pipe never ends, so only the signal can stop the reading.
+for kind in lines line; do
+    start out/image.png
+    rm -f opened
+    (
+        exec 3>scene
+        : >opened
+        case $kind in
+        lines) yes '/ an endless scene, one comment line after another' ;;
+        line) yes x | tr -d '\n' ;;
+        esac >&3 2>/dev/null
+    ) &
+    feeder=$!
+    n=0
+    while [ ! -e opened ] && [ "$n" -lt 600 ]; do sleep 0.1; n=$((n + 1)); done
+    sleep 0.5
+    kill -INT "$pid"
+    if ! ends_within 10; then
+        kill -KILL "$pid"
+        wait "$pid"
+        fail "SIGINT while reading endless $kind: raytra was still running 1 s after it"
+    else
+        wait "$pid"
+        status=$?
+        if [ "$status" -eq 130 ] && grep -q "interrupted; 'out/image.png' was not written" err; then
+            ok "SIGINT while reading endless $kind: stopped within 1 s, exit status 130"
+        else
+            fail "SIGINT while reading endless $kind: exit status $status, expected 130 and the message:"
+            sed 's/^/    /' err
+        fi
+    fi
+    kill "$feeder" 2>/dev/null
+    wait "$feeder" 2>/dev/null
 done
 
 # The output's folder disappears after raytra checked it and before it writes.

@@ -7,7 +7,7 @@
 #   render  renders, as PFM, every scene of REFDIR/renders.txt with its options and every
 #           scene of scenes/ with none, and checks that raytra succeeds, does not warn
 #           that pixels came out NaN or infinite (the render loop writes such pixels
-#           black, so the image alone cannot show them), and that every float is finite
+#           magenta, so the floats alone cannot show them), and that every float is finite
 set -u
 
 # Prints how many floats of PFM file $1 are NaN or infinite; false when there are any.

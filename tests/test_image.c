@@ -512,7 +512,7 @@ START_TEST(png_read_errors)
     write_file("empty.png", "", 0);
     assert_read_fails("empty.png", "empty file");
     write_file("text.png", "hello, world\n", 13);
-    assert_read_fails("text.png", "not a PNG or PFM image");
+    assert_read_fails("text.png", "not a PNG, PFM or OpenEXR image");
     Image img;
     Error err = {""};
     ck_assert(!image_read_png(&img, "text.png", &err));
@@ -646,7 +646,7 @@ END_TEST
 
 START_TEST(pfm_malformed_headers)
 {
-    assert_pfm_fails("PX\n1 1\n-1\n", 12, "not a PNG or PFM image");
+    assert_pfm_fails("PX\n1 1\n-1\n", 12, "not a PNG, PFM or OpenEXR image");
     Image img;
     Error err = {""};
     write_file("px.pfm", "PX\n1 1\n-1\n", 10);

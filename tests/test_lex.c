@@ -83,12 +83,39 @@ START_TEST(lines)
     ck_assert_str_eq(r->buf, "");
     ck_assert_int_eq(lex_next_line(r), LINE_BINARY);
     ck_assert_int_eq(r->line, 4);
-    ck_assert_int_eq(lex_next_line(r), LINE_OK);
-    ck_assert_str_eq(r->buf, "last");
-    ck_assert_int_eq(r->line, 5);
-    ck_assert_int_eq(lex_next_line(r), LINE_END);
+    ck_assert_str_eq(lex_binary_byte_name(r), "NUL byte");
+    /* The reader stops at the NUL byte itself, reading nothing after it. */
+    ck_assert_int_eq(ftell(f), (long)strlen("one\r\ntwo\n\nbad") + 1);
     fclose(f);
     free(r);
+}
+END_TEST
+
+START_TEST(binary_stops_at_the_first_bad_byte)
+{
+    /* A megabyte of zeros and no newline, as /dev/zero gives: one byte is read. */
+    size_t size = 1 << 20;
+    char *zeros = calloc(size, 1);
+    FILE *f = fmemopen(zeros, size, "r");
+    LineReader *r = malloc(sizeof *r);
+    lex_start(r, f);
+    ck_assert_int_eq(lex_next_line(r), LINE_BINARY);
+    ck_assert_int_eq(r->line, 1);
+    ck_assert_int_eq(ftell(f), 1);
+    fclose(f);
+    /* A control character (here BEL, as in a terminal escape) is binary too; tabs, form
+     * feeds, carriage returns, ESC and Ctrl-Z are not. */
+    static const char text[] = "s 1\t2\v3\f4\r\n\x1b[1m \x1a\nab\acd\n";
+    f = fmemopen((void *)text, sizeof text - 1, "r");
+    lex_start(r, f);
+    ck_assert_int_eq(lex_next_line(r), LINE_OK);
+    ck_assert_int_eq(lex_next_line(r), LINE_OK);
+    ck_assert_int_eq(lex_next_line(r), LINE_BINARY);
+    ck_assert_int_eq(r->line, 3);
+    ck_assert_str_eq(lex_binary_byte_name(r), "control character");
+    fclose(f);
+    free(r);
+    free(zeros);
 }
 END_TEST
 
@@ -120,6 +147,7 @@ static Suite *lex_suite(void)
     tcase_add_test(tc, words);
     tcase_add_test(tc, many_words_are_counted_not_kept);
     tcase_add_test(tc, lines);
+    tcase_add_test(tc, binary_stops_at_the_first_bad_byte);
     tcase_add_test(tc, long_lines_are_skipped);
     suite_add_tcase(s, tc);
     return s;

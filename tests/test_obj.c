@@ -148,8 +148,29 @@ START_TEST(errors)
     assert_error(SQUARE "f 1 2 x\n", "m.obj:5: malformed face vertex 'x'");
     assert_error(SQUARE "f 1 2 3/a\n", "m.obj:5: malformed face vertex '3/a'");
     assert_error(SQUARE "f 1 2 3.5\n", "m.obj:5: malformed face vertex '3.5'");
+    /* Indices too large for any mesh, or for a long, are out of range, not malformed. */
+    assert_error(SQUARE "f 1 2 2147483648\n", "m.obj:5: face vertex index 2147483648 is out "
+                                               "of range (a mesh has at most 50000000 vertices)");
+    assert_error(SQUARE "f 1 2 99999999999999999999999/1\n",
+                 "m.obj:5: face vertex index 99999999999999999999999/1 is out of range");
+    assert_error(SQUARE "f 1 2 -99999999999999999999999\n",
+                 "m.obj:5: face vertex index -99999999999999999999999 is out of range");
     assert_error("v 0 0\n", "m.obj:1: vertex (v) needs 3 numbers x y z, got 2");
     assert_error("v 0 nan 0\n", "m.obj:1: vertex coordinate 'nan' is not a finite number");
+}
+END_TEST
+
+START_TEST(comments_after_statements)
+{
+    /* Exporters write "f 1 2 3 # quad half" and "v 1 2 3 #top": the comment is dropped. */
+    Loaded l = load("v 0 0 0 # origin\nv 1 0 0#x\nv 0 1 0\t# y\nf 1 2 3 # the face\n"
+                    "# f 3 2 1\n");
+    ck_assert_msg(l.ok, "%s", l.messages);
+    ck_assert_int_eq(l.mesh.vertex_count, 3);
+    ck_assert_int_eq(l.mesh.triangle_count, 1);
+    assert_triangle(&l.mesh, 0, 0, 1, 2);
+    ck_assert_str_eq(l.messages, "");
+    done(&l);
 }
 END_TEST
 
@@ -181,7 +202,7 @@ START_TEST(missing_file)
 {
     Loaded l = load_path("absent.obj");
     ck_assert(!l.ok);
-    ck_assert_str_eq(l.messages, "absent.obj: cannot open: No such file or directory\n");
+    ck_assert_str_eq(l.messages, "absent.obj: cannot open OBJ file: No such file or directory\n");
     done(&l);
 }
 END_TEST
@@ -227,6 +248,7 @@ static Suite *obj_suite(void)
     tcase_add_test(tc, ignored_statements_and_extra_numbers);
     tcase_add_test(tc, faces_may_come_before_their_vertices);
     tcase_add_test(tc, errors);
+    tcase_add_test(tc, comments_after_statements);
     tcase_add_test(tc, binary_file);
     tcase_add_test(tc, degenerate_faces_are_skipped);
     tcase_add_test(tc, missing_file);

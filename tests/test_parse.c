@@ -1,11 +1,14 @@
 /* test_parse.c: the scene parser: every command, both conventions, every diagnostic. */
+#include <signal.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/resource.h>
 #include <sys/stat.h>
 #include <unistd.h>
 
 #include "scene.h"
+#include "stop.h"
 #include "testing.h"
 
 /* A camera line that every scene below can start with. */
@@ -466,6 +469,215 @@ START_TEST(nul_byte_and_long_lines)
 }
 END_TEST
 
+START_TEST(a_binary_scene_gives_one_message)
+{
+    /* Unknown commands before the binary part would be warnings printed after the error;
+     * "no camera" would follow it too. One message says it all. */
+    FILE *f = fopen("t.scn", "w");
+    fputs("GIF89a\r\nIHDR x\n\x01\x02 garbage\nc 0 0 0\n", f);
+    fclose(f);
+    Loaded l = load_path_with("t.scn", (SceneLoadOptions){0});
+    ck_assert(!l.ok);
+    ck_assert_str_eq(l.messages,
+                     "t.scn:3: control character in the file: this is not a text scene file\n");
+    done(&l);
+}
+END_TEST
+
+START_TEST(an_image_given_as_the_scene_is_named)
+{
+    /* The first bytes of a PNG, a PFM and an OpenEXR file, each followed by binary data:
+     * the usual slip is the output named before the scene. */
+    static const struct {
+        const char *bytes;
+        size_t size;
+        const char *kind;
+    } images[] = {
+        {"\x89PNG\r\n\x1a\n\0\0\0\rIHDR", 16, "a PNG image"},
+        {"PF\n4 2\n-1.0\n\0\0\x80?", 16, "a PFM image"},
+        {"Pf\n4 2\n-1.0\n\0\0\x80?", 16, "a PFM image"},
+        {"v/1\x01\x02\0\0\0channels", 16, "an OpenEXR image"},
+    };
+    for (size_t k = 0; k < sizeof images / sizeof images[0]; k++) {
+        FILE *f = fopen("t.scn", "wb");
+        fwrite(images[k].bytes, 1, images[k].size, f);
+        fclose(f);
+        Loaded l = load_path_with("t.scn", (SceneLoadOptions){0});
+        ck_assert(!l.ok);
+        char expected[256];
+        snprintf(expected, sizeof expected,
+                 "t.scn: this is %s, not a scene file (the scene comes first: raytra SCENE "
+                 "[OUTPUT])\n",
+                 images[k].kind);
+        ck_assert_str_eq(l.messages, expected);
+        done(&l);
+    }
+}
+END_TEST
+
+START_TEST(material_colours_are_reflectances)
+{
+    assert_error(CAMERA "m 1.5 0 0  0 0 0  1  0 0 0\n",
+                 "t.scn:2: diffuse colour must be in [0, 1] (a material reflects at most the "
+                 "light it gets), got 1.5; a percentage? write it as a fraction");
+    assert_error(CAMERA "m 0 0 0  0 0 200  1  0 0 0\n",
+                 "t.scn:2: specular colour must be in [0, 1] (a material reflects at most the "
+                 "light it gets), got 200\n");
+    assert_error(CAMERA "m 0 0 0  0 0 0  1  0 85 0\n", "t.scn:2: mirror colour must be in [0, 1]");
+    /* Exactly 1 is fine, and so are light colours above 1 (slide 66 ("these may be > 1")). */
+    Loaded l = load(CAMERA "m 1 1 1  1 1 1  1  1 1 1\nl p 0 0 0  5 5 5\nl a 2 2 2\n");
+    ck_assert_msg(l.ok, "%s", l.messages);
+    done(&l);
+}
+END_TEST
+
+START_TEST(errors_beyond_twenty_are_counted_not_shown)
+{
+    char text[4096] = CAMERA;
+    for (int k = 0; k < 40; k++)
+        strcat(text, "s 0 0 -5 -1\n");
+    Loaded l = load(text);
+    ck_assert(!l.ok);
+    int lines = 0;
+    for (const char *c = l.messages; *c != '\0'; c++)
+        lines += *c == '\n';
+    /* 20 errors and the line that says reading stopped. */
+    ck_assert_int_eq(lines, 21);
+    ck_assert_contains(l.messages, "t.scn: too many errors; stopped reading\n");
+    done(&l);
+
+    /* The cap holds for any caller of diag_error, not only the loops that check it. */
+    Diag d;
+    char *buf;
+    size_t size;
+    FILE *out = open_memstream(&buf, &size);
+    diag_init(&d, out);
+    for (int k = 0; k < 1000; k++)
+        diag_error(&d, "x", k + 1, "error %d", k);
+    fclose(out);
+    ck_assert_int_eq(d.errors, 1000);
+    ck_assert_contains(buf, "x:20: error 19\n");
+    ck_assert_msg(strstr(buf, "x:21:") == NULL, "error 21 was shown:\n%s", buf);
+    free(buf);
+}
+END_TEST
+
+START_TEST(a_stop_request_ends_loading_silently)
+{
+    /* The request arrives while loading (Ctrl-C): the loader stops, says nothing, and
+     * returns false; the program then says it was interrupted. */
+    write_file("m.obj", "v 0 0 -5\nv 1 0 -5\nv 0 1 -5\nf 1 2 3\n");
+    stop_request(SIGINT);
+    Loaded l = load(CAMERA "s 0 0 -5 1\nw m.obj\n");
+    ck_assert(!l.ok);
+    ck_assert_str_eq(l.messages, "");
+    done(&l);
+    /* An endless line, as from a pipe that never sends a newline, is read until the stop. */
+    size_t big = 4 << 20;
+    char *endless = malloc(big);
+    memset(endless, 'x', big);
+    FILE *f = fmemopen(endless, big, "r");
+    size_t size;
+    char *messages;
+    FILE *out = open_memstream(&messages, &size);
+    Scene scene;
+    ck_assert(!scene_load_stream(&scene, f, "pipe", &(SceneLoadOptions){.messages = out}));
+    fclose(out);
+    /* It stopped within 64 KiB of the request, not at the end of the 4 MB. */
+    ck_assert_int_le(ftell(f), 65536);
+    ck_assert_str_eq(messages, "");
+    fclose(f);
+    free(messages);
+    free(endless);
+    stop_reset();
+}
+END_TEST
+
+/* Tells whether this test program runs under AddressSanitizer, which reserves terabytes of
+ * address space and so cannot run under a limit of it. */
+static bool under_asan(void)
+{
+#if defined(__SANITIZE_ADDRESS__)
+    return true;
+#elif defined(__has_feature)
+#if __has_feature(address_sanitizer)
+    return true;
+#endif
+#endif
+    return false;
+}
+
+START_TEST(running_out_of_memory_gives_one_message)
+{
+    if (under_asan()) {
+        fprintf(stderr, "test_parse: AddressSanitizer cannot run under a memory limit: "
+                        "out-of-memory test skipped\n");
+        return;
+    }
+    /* A mesh of 2 million triangles (a 1001 x 1001 grid) and an address space that holds
+     * only part of it (a loop test: two limits): whichever array fails to grow first, one
+     * message says so, not one per triangle. */
+    FILE *f = fopen("big.obj", "w");
+    for (int i = 0; i <= 1000; i++)
+        for (int j = 0; j <= 1000; j++)
+            fprintf(f, "v %d %d -50\n", i, j);
+    for (int i = 0; i < 1000; i++)
+        for (int j = 0; j < 1000; j++) {
+            int a = i * 1001 + j + 1;
+            fprintf(f, "f %d %d %d\nf %d %d %d\n", a, a + 1, a + 1002, a, a + 1002, a + 1001);
+        }
+    fclose(f);
+    write_file("t.scn", CAMERA "w big.obj\n");
+    /* The process's address space now, from /proc, plus 40 MB. */
+    long pages = 0;
+    f = fopen("/proc/self/statm", "r");
+    ck_assert_ptr_nonnull(f);
+    ck_assert_int_eq(fscanf(f, "%ld", &pages), 1);
+    fclose(f);
+    rlim_t extra = _i == 0 ? 40u << 20 : 150u << 20;
+    rlim_t limit = (rlim_t)pages * (rlim_t)sysconf(_SC_PAGESIZE) + extra;
+    struct rlimit rl = {limit, limit};
+    ck_assert_int_eq(setrlimit(RLIMIT_AS, &rl), 0);
+    Loaded l = load_path_with("t.scn", (SceneLoadOptions){0});
+    ck_assert(!l.ok);
+    ck_assert_contains(l.messages, "out of memory for ");
+    int lines = 0;
+    for (const char *c = l.messages; *c != '\0'; c++)
+        lines += *c == '\n';
+    ck_assert_msg(lines <= 2, "%d lines:\n%s", lines, l.messages);
+    /* With 40 MB more the OBJ reader's arrays fail; with 150 MB the mesh loads and the
+     * scene's triangle array fails, at the first of a million triangles left to add. */
+    ck_assert_contains(l.messages, _i == 0 ? "big.obj:" : "t.scn:2: out of memory for ");
+    done(&l);
+}
+END_TEST
+
+START_TEST(files_read_are_recorded)
+{
+    write_file("m.obj", "v 0 0 -5\nv 1 0 -5\nv 0 1 -5\nf 1 2 3\n");
+    Loaded l = load(CAMERA "w m.obj\n");
+    ck_assert_msg(l.ok, "%s", l.messages);
+    ck_assert_int_eq(l.scene.file_count, 2);
+    ck_assert(input_same_file(&l.scene.files[0], "m.obj"));
+    ck_assert(input_same_file(&l.scene.files[1], "./t.scn"));
+    ck_assert(!input_same_file(&l.scene.files[1], "m.obj"));
+    done(&l);
+}
+END_TEST
+
+START_TEST(devices_and_pipes_are_refused_as_meshes)
+{
+    assert_error(CAMERA "w /dev/zero\n",
+                 "t.scn:2: mesh '/dev/zero' is a device, not an OBJ file (/dev/zero)");
+    ck_assert_int_eq(mkfifo("p.obj", 0600), 0);
+    assert_error(CAMERA "w p.obj\n", "mesh 'p.obj' is a named pipe, not an OBJ file");
+    Loaded l = load_path_with("/dev/zero", (SceneLoadOptions){0});
+    ck_assert(!l.ok);
+    ck_assert_str_eq(l.messages, "/dev/zero: is a device, not a scene file\n");
+    done(&l);
+}
+END_TEST
+
 START_TEST(missing_scene_file_and_directory)
 {
     Loaded l = load_path_with("no-such.scn", (SceneLoadOptions){0});
@@ -677,6 +889,14 @@ static Suite *parse_suite(void)
     tcase_add_test(diag, degenerate_triangles_warn);
     tcase_add_test(diag, several_errors_are_all_reported);
     tcase_add_test(diag, nul_byte_and_long_lines);
+    tcase_add_test(diag, a_binary_scene_gives_one_message);
+    tcase_add_test(diag, an_image_given_as_the_scene_is_named);
+    tcase_add_test(diag, material_colours_are_reflectances);
+    tcase_add_test(diag, errors_beyond_twenty_are_counted_not_shown);
+    tcase_add_test(diag, a_stop_request_ends_loading_silently);
+    tcase_add_loop_test(diag, running_out_of_memory_gives_one_message, 0, 2);
+    tcase_add_test(diag, files_read_are_recorded);
+    tcase_add_test(diag, devices_and_pipes_are_refused_as_meshes);
     tcase_add_test(diag, missing_scene_file_and_directory);
     tcase_add_test(diag, an_obj_file_given_as_a_scene);
     tcase_add_test(diag, sizes_and_directions_too_small_to_compute_with);

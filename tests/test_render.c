@@ -1,4 +1,5 @@
-/* test_render.c: the render loop: pixel placement, thread-count independence, counts, NaN, stop. */
+/* test_render.c: the render loop: pixels, thread counts, counts, NaN and overflow, stop. */
+#include <float.h>
 #include <signal.h>
 #include <string.h>
 
@@ -57,7 +58,8 @@ START_TEST(same_image_whatever_the_thread_count)
 }
 END_TEST
 
-/* NaN at two pixels and infinity at a third. */
+/* NaN at two pixels, infinity at a third, and at a fourth a finite double too large for
+ * the image's floats (1e39 > FLT_MAX = 3.4e38), which a float would hold as infinity. */
 static Color some_bad(const void *ctx, int i, int j, RayStats *stats)
 {
     (void)ctx, (void)stats;
@@ -65,20 +67,42 @@ static Color some_bad(const void *ctx, int i, int j, RayStats *stats)
         return color(NAN, 0, 0);
     if (i == 0 && j == 0)
         return color(0, INFINITY, 0);
+    if (i == 2 && j == 0)
+        return color(0, 0, -1e39);
     return color(0.5, 0.5, 0.5);
 }
 
-START_TEST(nonfinite_pixels_are_black_and_counted)
+START_TEST(nonfinite_pixels_are_magenta_and_counted)
 {
     Image img;
     RenderResult r = render(&img, 4, 3, some_bad, 3);
-    ck_assert_int_eq(r.nonfinite, 3);
+    ck_assert_int_eq(r.nonfinite, 4);
     /* In reading order the first is (1, 2): row 0 from the top. */
     ck_assert_int_eq(r.first_nonfinite_x, 1);
     ck_assert_int_eq(r.first_nonfinite_y, 0);
-    ck_assert_color_near(image_get(&img, 1, 0), color(0, 0, 0), 0);
-    ck_assert_color_near(image_get(&img, 0, 2), color(0, 0, 0), 0);
-    ck_assert_color_near(image_get(&img, 2, 2), color(0.5, 0.5, 0.5), 0);
+    ck_assert_color_near(image_get(&img, 1, 0), color(1, 0, 1), 0);
+    ck_assert_color_near(image_get(&img, 0, 2), color(1, 0, 1), 0);
+    ck_assert_color_near(image_get(&img, 2, 2), color(1, 0, 1), 0);
+    ck_assert_color_near(image_get(&img, 3, 1), color(1, 0, 1), 0);
+    ck_assert_color_near(image_get(&img, 2, 1), color(0.5, 0.5, 0.5), 0);
+    image_free(&img);
+}
+END_TEST
+
+/* Colours at the very edge of the float range. */
+static Color edge_of_float(const void *ctx, int i, int j, RayStats *stats)
+{
+    (void)ctx, (void)j, (void)stats;
+    return i == 0 ? color(FLT_MAX, 0, 0) : color(0, -FLT_MAX, 1e-300);
+}
+
+START_TEST(the_largest_float_is_kept)
+{
+    Image img;
+    RenderResult r = render(&img, 2, 1, edge_of_float, 1);
+    ck_assert_int_eq(r.nonfinite, 0);
+    ck_assert(image_get(&img, 0, 0).r == FLT_MAX);
+    ck_assert(image_get(&img, 1, 0).g == -FLT_MAX);
     image_free(&img);
 }
 END_TEST
@@ -120,7 +144,8 @@ static Suite *render_suite(void)
     TCase *tc = tcase_create("loop");
     tcase_add_test(tc, row_zero_is_the_top);
     tcase_add_test(tc, same_image_whatever_the_thread_count);
-    tcase_add_test(tc, nonfinite_pixels_are_black_and_counted);
+    tcase_add_test(tc, nonfinite_pixels_are_magenta_and_counted);
+    tcase_add_test(tc, the_largest_float_is_kept);
     tcase_add_test(tc, a_stop_request_ends_the_render);
     tcase_add_test(tc, default_threads);
     suite_add_tcase(s, tc);

@@ -2,7 +2,8 @@
 # deps.sh: makes sure the packages raytra builds with are installed.
 #
 # Usage: tools/deps.sh [build|test]
-#   build  needs a C compiler, make, pkg-config and libpng's headers;
+#   build  needs a C compiler, make, pkg-config, and the headers of libpng and of
+#          OpenEXR 3 (its C API, openexr.h);
 #   test   needs, in addition, the Check unit-test framework.
 #
 # On Debian and Ubuntu it installs what is missing with apt-get when it may
@@ -18,6 +19,9 @@ command -v cc >/dev/null 2>&1 || missing="$missing gcc"
 command -v pkg-config >/dev/null 2>&1 || missing="$missing pkg-config"
 if ! pkg-config --exists libpng 2>/dev/null && [ ! -f /usr/include/png.h ]; then
     missing="$missing libpng-dev"
+fi
+if ! pkg-config --exists 'OpenEXR >= 3' 2>/dev/null && [ ! -f /usr/include/OpenEXR/openexr.h ]; then
+    missing="$missing libopenexr-dev"
 fi
 if [ $need_check = yes ] && ! pkg-config --exists check 2>/dev/null; then
     missing="$missing check"

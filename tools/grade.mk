@@ -13,7 +13,7 @@ grade: $(GRADE) $(IMGDIFF)
 	@:
 
 $(GRADE): $(GRADE_OBJECTS) $(COMMON_LIB)
-	$(CC) $(ALL_LDFLAGS) -o $@ $^ $(PNG_LIBS) -lm
+	$(CC) $(ALL_LDFLAGS) -o $@ $^ $(IMAGE_LIBS) -lm
 
 # The script makes its class of submissions in a temporary folder.
 grade-test: $(GRADE) $(IMGDIFF)

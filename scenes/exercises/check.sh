@@ -11,6 +11,8 @@ tmp=$(mktemp -d) || exit 1
 trap 'rm -rf "$tmp"' EXIT
 bad=0
 checked=0
+# Where make leaves each part's program: raytra, or build-sanitize/raytra with SANITIZE=1.
+program=${RAYTRA_PROGRAM:-raytra}
 
 # Prints the linear RGB of pixel (column $2, row $3) of PFM $1, which raytra writes
 # little-endian with its rows from the bottom up (read with od on a little-endian machine).
@@ -25,14 +27,14 @@ while read -r part scene opts col row r g b; do
     case "$part" in '' | '#'*) continue ;; esac
     [ "$opts" = - ] && opts=
     out="$tmp/$(basename "$scene" .scn)$(echo "$opts" | tr -dc 'a-z0-9').pfm"
-    if [ ! -f "$out" ] && ! milestones/"$part"/raytra -q $opts "$scene" "$out" 2>"$tmp/err"; then
+    checked=$((checked + 1))
+    if [ ! -f "$out" ] && ! milestones/"$part"/"$program" -q $opts "$scene" "$out" 2>"$tmp/err"; then
         echo "check: $part could not render $scene:"
         cat "$tmp/err"
         bad=$((bad + 1))
         continue
     fi
     got=$(echo $(pfm_pixel "$out" "$col" "$row"))
-    checked=$((checked + 1))
     if echo "$got $r $g $b" | awk '{ for (k = 1; k <= 3; k++) { d = $k - $(k + 3); if (d < 0) d = -d; if (d > 5e-6) exit 1 } }'; then
         echo "ok    $scene $opts ($col, $row): $got"
     else

@@ -1,0 +1,328 @@
+/* test_image_exr.c: OpenEXR: exact round trips, and files the library writes by itself. */
+#include <openexr.h>
+#include <stdint.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <unistd.h>
+
+#include "image.h"
+#include "stop.h"
+#include "testing.h"
+
+/* Returns the contents of path (size in *size); to free. */
+static unsigned char *slurp(const char *path, size_t *size)
+{
+    FILE *f = fopen(path, "rb");
+    ck_assert_msg(f != NULL, "cannot open %s", path);
+    fseek(f, 0, SEEK_END);
+    long n = ftell(f);
+    rewind(f);
+    unsigned char *data = malloc((size_t)n + 1);
+    ck_assert_uint_eq(fread(data, 1, (size_t)n, f), (size_t)n);
+    fclose(f);
+    *size = (size_t)n;
+    return data;
+}
+
+/* A 7 x 5 image of values a float holds but a half or an 8-bit PNG would not: a third, a
+ * tiny subnormal, 1e30, negatives; and a smooth gradient for the PNG comparison. */
+static Image float_test_image(void)
+{
+    Image img;
+    ck_assert(image_init(&img, 7, 5));
+    for (int y = 0; y < 5; y++)
+        for (int x = 0; x < 7; x++)
+            image_set(&img, x, y, color(x / 6.0, y / 4.0, (x + y) / 10.0));
+    image_set(&img, 0, 0, color(1.0 / 3.0, 1e-40, 1e30));
+    image_set(&img, 6, 4, color(-2.5, 70000.0, 0.1));
+    return img;
+}
+
+START_TEST(exr_by_extension)
+{
+    ck_assert_int_eq(image_format_for_path("a.exr"), IMAGE_FORMAT_EXR);
+    ck_assert_int_eq(image_format_for_path("out/A.EXR"), IMAGE_FORMAT_EXR);
+    ck_assert_int_eq(image_format_for_path("x.exr.png"), IMAGE_FORMAT_PNG);
+    Image img;
+    ck_assert(image_init(&img, 1, 1));
+    Error err;
+    ck_assert(!image_write(&img, "out.jpg", PNG_ENCODING_SRGB, &err));
+    ck_assert_str_eq(err.text, "unknown image format (use .png, .pfm or .exr)");
+    image_free(&img);
+}
+END_TEST
+
+START_TEST(exr_round_trip_is_exact)
+{
+    /* raytra writes 32-bit floats: every value comes back bit for bit. */
+    Image img = float_test_image(), back;
+    Error err;
+    ck_assert_msg(image_write(&img, "t.exr", PNG_ENCODING_SRGB, &err), "%s", err.text);
+    ck_assert_msg(image_read(&back, "t.exr", &err), "%s", err.text);
+    ck_assert_int_eq(back.width, 7);
+    ck_assert_int_eq(back.height, 5);
+    ck_assert_mem_eq(back.pixels, img.pixels, sizeof(float) * 3 * 7 * 5);
+    image_free(&back);
+    /* The same values as the PFM of the image. */
+    ck_assert(image_write(&img, "t.pfm", PNG_ENCODING_SRGB, &err));
+    ck_assert(image_read(&back, "t.pfm", &err));
+    ck_assert_mem_eq(back.pixels, img.pixels, sizeof(float) * 3 * 7 * 5);
+    image_free(&back);
+    image_free(&img);
+}
+END_TEST
+
+START_TEST(png_from_exr_equals_png_from_the_render)
+{
+    Image img = float_test_image(), back;
+    Error err;
+    ck_assert(image_write(&img, "direct.png", PNG_ENCODING_SRGB, &err));
+    ck_assert(image_write(&img, "t.exr", PNG_ENCODING_SRGB, &err));
+    ck_assert(image_read(&back, "t.exr", &err));
+    ck_assert(image_write(&back, "via-exr.png", PNG_ENCODING_SRGB, &err));
+    size_t n1, n2;
+    unsigned char *a = slurp("direct.png", &n1), *b = slurp("via-exr.png", &n2);
+    ck_assert_uint_eq(n1, n2);
+    ck_assert_mem_eq(a, b, n1);
+    free(a);
+    free(b);
+    image_free(&back);
+    image_free(&img);
+}
+END_TEST
+
+/* The value of channel c at pixel (x, y) in the files the library writes below. */
+static float value(char c, int x, int y)
+{
+    switch (c) {
+    case 'R': return x * 0.25f;
+    case 'G': return y * 0.5f;
+    case 'B': return 0.1f;
+    case 'Y': return 0.75f + x;
+    default: return 0.5f; /* A, and any other */
+    }
+}
+
+/* Writes a width x height EXR with the library alone: channels named by the letters of
+ * names, of type ptype, with compression ctype, its data window starting at (x0, y0), in
+ * scanlines or, when tile > 0, in tiles of tile x tile pixels. */
+static void write_with_library_tiled(const char *path, const char *names, exr_pixel_type_t ptype,
+                                     exr_compression_t ctype, int width, int height, int x0,
+                                     int y0, int tile)
+{
+    exr_context_t ctxt;
+    exr_context_initializer_t init = EXR_DEFAULT_CONTEXT_INITIALIZER;
+    ck_assert_int_eq(exr_start_write(&ctxt, path, EXR_WRITE_FILE_DIRECTLY, &init), 0);
+    int part;
+    ck_assert_int_eq(
+        exr_add_part(ctxt, "test", tile > 0 ? EXR_STORAGE_TILED : EXR_STORAGE_SCANLINE, &part),
+        0);
+    ck_assert_int_eq(exr_initialize_required_attr_simple(ctxt, part, width, height, ctype), 0);
+    if (tile > 0)
+        ck_assert_int_eq(exr_set_tile_descriptor(ctxt, part, (uint32_t)tile, (uint32_t)tile,
+                                                 EXR_TILE_ONE_LEVEL, EXR_TILE_ROUND_DOWN),
+                         0);
+    exr_attr_box2i_t dw;
+    dw.min.x = x0;
+    dw.min.y = y0;
+    dw.max.x = x0 + width - 1;
+    dw.max.y = y0 + height - 1;
+    ck_assert_int_eq(exr_set_data_window(ctxt, part, &dw), 0);
+    int count = (int)strlen(names);
+    for (int k = 0; k < count; k++) {
+        char name[2] = {names[k], '\0'};
+        ck_assert_int_eq(exr_add_channel(ctxt, part, name, ptype, EXR_PERCEPTUALLY_LOGARITHMIC,
+                                         1, 1),
+                         0);
+    }
+    ck_assert_int_eq(exr_write_header(ctxt), 0);
+    /* The values as floats, one plane per channel; the library converts them to ptype. */
+    float *planes = malloc(sizeof(float) * (size_t)(count * width * height));
+    for (int k = 0; k < count; k++)
+        for (int y = 0; y < height; y++)
+            for (int x = 0; x < width; x++)
+                planes[(k * height + y) * width + x] = value(names[k], x, y);
+    /* The chunks: blocks of rows, or tiles row by row, each at (cx, cy) of the planes. */
+    int32_t lines = 0;
+    if (tile == 0)
+        exr_get_scanlines_per_chunk(ctxt, part, &lines);
+    int step_x = tile > 0 ? tile : width, step_y = tile > 0 ? tile : lines;
+    exr_encode_pipeline_t enc = EXR_ENCODE_PIPELINE_INITIALIZER;
+    bool first = true;
+    for (int cy = 0; cy < height; cy += step_y)
+        for (int cx = 0; cx < width; cx += step_x) {
+            exr_chunk_info_t chunk;
+            ck_assert_int_eq(tile > 0 ? exr_write_tile_chunk_info(ctxt, part, cx / tile,
+                                                                  cy / tile, 0, 0, &chunk)
+                                      : exr_write_scanline_chunk_info(ctxt, part, y0 + cy,
+                                                                      &chunk),
+                             0);
+            ck_assert_int_eq(first ? exr_encoding_initialize(ctxt, part, &chunk, &enc)
+                                   : exr_encoding_update(ctxt, part, &chunk, &enc),
+                             0);
+            for (int c = 0; c < enc.channel_count; c++) {
+                int k = (int)(strchr(names, enc.channels[c].channel_name[0]) - names);
+                enc.channels[c].encode_from_ptr =
+                    (const uint8_t *)(planes + ((size_t)k * height + cy) * width + cx);
+                enc.channels[c].user_pixel_stride = sizeof(float);
+                enc.channels[c].user_line_stride = (int32_t)sizeof(float) * width;
+                enc.channels[c].user_data_type = EXR_PIXEL_FLOAT;
+                enc.channels[c].user_bytes_per_element = sizeof(float);
+            }
+            if (first)
+                ck_assert_int_eq(exr_encoding_choose_default_routines(ctxt, part, &enc), 0);
+            first = false;
+            ck_assert_int_eq(exr_encoding_run(ctxt, part, &enc), 0);
+        }
+    exr_encoding_destroy(ctxt, &enc);
+    ck_assert_int_eq(exr_finish(&ctxt), 0);
+    free(planes);
+}
+
+/* Writes a width x height EXR in scanlines with the library alone (see above). */
+static void write_with_library(const char *path, const char *names, exr_pixel_type_t ptype,
+                               exr_compression_t ctype, int width, int height, int x0, int y0)
+{
+    write_with_library_tiled(path, names, ptype, ctype, width, height, x0, y0, 0);
+}
+
+/* The half nearest to 0.1 is 0x2e66: exponent 11 - 15 = -4, significand 1 + 614/1024, so
+ * 1.599609375 / 16 = 0.0999755859375 (0.1 itself lies between it and the next half up,
+ * 0.10009765625, nearer to it). */
+#define HALF_0_1 0.0999755859375f
+
+/* Asserts that img holds value()'s colours, with blue as b. */
+static void assert_rgb(const Image *img, int width, int height, float b)
+{
+    ck_assert_int_eq(img->width, width);
+    ck_assert_int_eq(img->height, height);
+    for (int y = 0; y < height; y++)
+        for (int x = 0; x < width; x++) {
+            Color c = image_get(img, x, y);
+            ck_assert_msg(c.r == x * 0.25f && c.g == y * 0.5f && c.b == b,
+                          "pixel (%d, %d) is (%g, %g, %g)", x, y, c.r, c.g, c.b);
+        }
+}
+
+START_TEST(exr_from_the_library_half_rgba_zip)
+{
+    /* 40 rows: several chunks of 16 rows, the last one short. Alpha is not applied. */
+    write_with_library("half.exr", "RGBA", EXR_PIXEL_HALF, EXR_COMPRESSION_ZIP, 9, 40, 0, 0);
+    Image img;
+    Error err;
+    ck_assert_msg(image_read(&img, "half.exr", &err), "%s", err.text);
+    assert_rgb(&img, 9, 40, HALF_0_1);
+    image_free(&img);
+}
+END_TEST
+
+START_TEST(exr_from_the_library_half_piz_and_float_none)
+{
+    Image img;
+    Error err;
+    write_with_library("piz.exr", "BGR", EXR_PIXEL_HALF, EXR_COMPRESSION_PIZ, 33, 70, 0, 0);
+    ck_assert_msg(image_read(&img, "piz.exr", &err), "%s", err.text);
+    assert_rgb(&img, 33, 70, HALF_0_1);
+    image_free(&img);
+    /* Floats, no compression, a data window that does not start at (0, 0). */
+    write_with_library("float.exr", "RGB", EXR_PIXEL_FLOAT, EXR_COMPRESSION_NONE, 5, 3, -2, 10);
+    ck_assert_msg(image_read(&img, "float.exr", &err), "%s", err.text);
+    assert_rgb(&img, 5, 3, 0.1f);
+    image_free(&img);
+}
+END_TEST
+
+START_TEST(exr_tiled_from_the_library)
+{
+    /* 37 x 21 pixels in tiles of 16: partial tiles at the right and the bottom; with the
+     * data window away from the origin, and half and float samples. */
+    Image img;
+    Error err;
+    write_with_library_tiled("tiled.exr", "RGB", EXR_PIXEL_HALF, EXR_COMPRESSION_ZIP, 37, 21, 0,
+                             0, 16);
+    ck_assert_msg(image_read(&img, "tiled.exr", &err), "%s", err.text);
+    assert_rgb(&img, 37, 21, HALF_0_1);
+    image_free(&img);
+    write_with_library_tiled("tiled-offset.exr", "BGRA", EXR_PIXEL_FLOAT, EXR_COMPRESSION_PIZ,
+                             37, 21, 5, -3, 16);
+    ck_assert_msg(image_read(&img, "tiled-offset.exr", &err), "%s", err.text);
+    assert_rgb(&img, 37, 21, 0.1f);
+    image_free(&img);
+}
+END_TEST
+
+START_TEST(exr_grey_is_read_as_rgb)
+{
+    write_with_library("grey.exr", "Y", EXR_PIXEL_HALF, EXR_COMPRESSION_ZIP, 4, 2, 0, 0);
+    Image img;
+    Error err;
+    ck_assert_msg(image_read(&img, "grey.exr", &err), "%s", err.text);
+    for (int x = 0; x < 4; x++) {
+        Color c = image_get(&img, x, 1);
+        ck_assert(c.r == 0.75f + x && c.g == c.r && c.b == c.r);
+    }
+    image_free(&img);
+}
+END_TEST
+
+START_TEST(exr_errors)
+{
+    Image img;
+    Error err;
+    /* No colour channels. */
+    write_with_library("alpha.exr", "A", EXR_PIXEL_HALF, EXR_COMPRESSION_ZIP, 2, 2, 0, 0);
+    ck_assert(!image_read(&img, "alpha.exr", &err));
+    ck_assert_str_eq(err.text, "no R, G and B channels, nor a Y channel");
+    ck_assert_ptr_null(img.pixels);
+    /* Cut short: the header's end, then in the middle of the pixels. */
+    Image good = float_test_image();
+    ck_assert(image_write(&good, "good.exr", PNG_ENCODING_SRGB, &err));
+    size_t size;
+    unsigned char *data = slurp("good.exr", &size);
+    size_t cuts[] = {4, 40, size / 2, size - 1};
+    for (size_t k = 0; k < sizeof cuts / sizeof cuts[0]; k++) {
+        FILE *f = fopen("cut.exr", "wb");
+        fwrite(data, 1, cuts[k], f);
+        fclose(f);
+        ck_assert_msg(!image_read(&img, "cut.exr", &err), "a file cut at %zu bytes was read",
+                      cuts[k]);
+        ck_assert_ptr_null(img.pixels);
+    }
+    free(data);
+    image_free(&good);
+}
+END_TEST
+
+START_TEST(exr_write_stops_when_asked)
+{
+    Image img = float_test_image();
+    Error err;
+    stop_request(2);
+    ck_assert(!image_write(&img, "stopped.exr", PNG_ENCODING_SRGB, &err));
+    stop_reset();
+    ck_assert_str_eq(err.text, "interrupted");
+    ck_assert_int_ne(access("stopped.exr", F_OK), 0);
+    image_free(&img);
+}
+END_TEST
+
+/* The OpenEXR tests. */
+static Suite *exr_suite(void)
+{
+    Suite *s = suite_create("image_exr");
+    TCase *tc = tcase_create("exr");
+    tcase_add_test(tc, exr_by_extension);
+    tcase_add_test(tc, exr_round_trip_is_exact);
+    tcase_add_test(tc, png_from_exr_equals_png_from_the_render);
+    tcase_add_test(tc, exr_from_the_library_half_rgba_zip);
+    tcase_add_test(tc, exr_from_the_library_half_piz_and_float_none);
+    tcase_add_test(tc, exr_tiled_from_the_library);
+    tcase_add_test(tc, exr_grey_is_read_as_rgb);
+    tcase_add_test(tc, exr_errors);
+    tcase_add_test(tc, exr_write_stops_when_asked);
+    suite_add_tcase(s, tc);
+    return s;
+}
+
+TEST_MAIN(exr_suite)
