@@ -191,9 +191,9 @@ static bool view_usable(const Program *program, const Options *opts)
         return false;
     }
     if (program->probe == NULL ||
-        (kind == VIEW_BOX_TESTS && cli_part_number(program->cli.part) < 14)) {
+        (kind == VIEW_BOX_TESTS && cli_part_number(program->cli.part) != 14)) {
         fprintf(stderr, "raytra: part %s cannot draw the view '%s'%s\n", program->cli.part,
-                opts->view, kind == VIEW_BOX_TESTS ? " (boxes come in part 1.4)" : "");
+                opts->view, kind == VIEW_BOX_TESTS ? " (part 1.4 draws it)" : "");
         return false;
     }
     return true;

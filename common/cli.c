@@ -43,7 +43,7 @@ const CliOption cli_options[] = {
     {.name = "view", .kind = OPTION_TEXT, .metavar = "NAME",
      .help = "draw what each camera ray meets instead of its light: normal, depth, id "
              "(a colour per surface), material (kd), light-count (lights that reach the "
-             "point), box-tests (from part 1.4: a heat map of the tests per ray)",
+             "point), box-tests (part 1.4: a heat map of the tests per ray)",
      .field = FIELD(view)},
     {.name = "two-sided",
      .help = "shade the backs of triangles and planes with their own material, not lit yellow",
@@ -69,6 +69,23 @@ const CliOption cli_options[] = {
              "their pixel (default 2^-16, far below a PNG's steps; 0: only --max-depth "
              "stops them)",
      .field = FIELD(min_weight), .fallback = 0x1p-16, .min = 0, .max = 1, .first_part = 15},
+    {.name = "samples", .kind = OPTION_INT, .metavar = "P",
+     .help = "trace P x P primary rays per pixel, one in each of P x P sub-squares "
+             "(default 1, through the pixel's centre; at most 64)",
+     .field = FIELD(samples), .fallback = 1, .min = 1, .max = 64, .first_part = 16,
+     .last_part = 16, .argument = "P"},
+    {.name = "light-samples", .kind = OPTION_INT, .metavar = "S",
+     .help = "trace S x S shadow rays to every area light at every hit (default 1; at most 64)",
+     .field = FIELD(light_samples), .fallback = 1, .min = 1, .max = 64, .first_part = 16,
+     .last_part = 16, .argument = "S"},
+    {.name = "seed", .kind = OPTION_INT, .metavar = "N",
+     .help = "pick other random numbers; the same seed always gives the same image (default 0)",
+     .field = FIELD(seed), .min = 0, .max = 2147483647, .first_part = 16, .last_part = 16},
+    {.name = "sampling", .kind = OPTION_TEXT, .metavar = "NAME",
+     .help = "how sample points are placed: random (independent), jittered (one in each "
+             "sub-square, pixel and light apart) or correlated (jittered, and with S = 1 the "
+             "shadow rays of a pixel's P x P rays cover the light evenly; the default)",
+     .field = FIELD(sampling_name), .first_part = 16, .last_part = 16},
     {.name = "help", .letter = 'h', .help = "show this help and exit", .field = FIELD(help)},
     {.name = "version", .help = "show the version and exit", .field = FIELD(version)},
     {0},

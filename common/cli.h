@@ -45,6 +45,11 @@ typedef struct {
     /* From part 1.5 on. */
     const char *fresnel_name; /* how glass reflects: "schlick" (NULL: the default) or "exact" */
     double min_weight;        /* reflected and refracted rays that count less are not traced */
+    /* Part 1.6. */
+    int samples;               /* P: P x P primary rays per pixel */
+    int light_samples;         /* S: S x S shadow rays per area light at every hit */
+    int seed;                  /* picks the random numbers; the same seed, the same image */
+    const char *sampling_name; /* random, jittered or correlated (the default) */
 } Options;
 
 /* excerpt: cli-option */

@@ -1,0 +1,51 @@
+/* montecarlo.h: Monte Carlo ray tracing: many rays per pixel, many shadow rays per area light. */
+#ifndef RAYTRA_MONTECARLO_H
+#define RAYTRA_MONTECARLO_H
+
+#include <stdbool.h>
+#include <stdint.h>
+
+#include "camera.h"
+#include "cli.h"
+#include "rng.h"
+#include "below.h"
+#include "strata.h"
+
+/* The largest P and S: the command line's limit (--samples, --light-samples). */
+#define MONTECARLO_MAX_SIDE 64
+
+/* excerpt: sample-struct */
+/* What a pixel sample carries down its path in Path.sample: its own random numbers,
+ * drawn in order at every hit, and, in correlated sampling with S = 1, the stratum of
+ * the light its shadow rays use. */
+typedef struct {
+    Rng *rng;
+    int stratum;     /* which of strata_side^2 light strata */
+    int strata_side; /* P when the light strata follow the pixel's; 0 otherwise */
+} Sample;
+/* end excerpt: sample-struct */
+
+/* excerpt: montecarlo-struct */
+/* Everything the pixels read. below comes first, and begins with 1.3's Tracer: the
+ * tracer's direct hook receives a pointer to it and finds the rest of the struct. */
+typedef struct {
+    Below below;        /* the part below's tracer, its direct hook montecarlo_direct_radiance */
+    Below point_lights; /* the same over point_scene, with the part below's direct light */
+    Scene point_scene;  /* the scene without its area lights */
+    Camera camera;
+    Sampling sampling;
+    int pixel_side; /* P */
+    int light_side; /* S */
+    uint64_t seed;
+} MonteCarlo;
+/* end excerpt: montecarlo-struct */
+
+bool montecarlo_init(MonteCarlo *mc, const Scene *scene, Surfaces surfaces, const Options *opts);
+void montecarlo_free(MonteCarlo *mc);
+Color montecarlo_area_radiance(const MonteCarlo *mc, const Light *light, const Hit *hit, Ray r,
+                                int depth, Path *path);
+Color montecarlo_direct_radiance(const Tracer *tr, const Hit *hit, Ray r, int depth, Path *path);
+Color montecarlo_pixel(const MonteCarlo *mc, int i, int j, RayStats *stats);
+void montecarlo_probe(const MonteCarlo *mc, int i, int j, Probe *probe);
+
+#endif

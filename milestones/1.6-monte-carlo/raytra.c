@@ -1,0 +1,80 @@
+/* raytra.c: part 1.6, Monte Carlo ray tracing: jittered rays per pixel, soft shadows. */
+#include <stdio.h>
+#include <stdlib.h>
+
+#include "app.h"
+#include "montecarlo.h"
+#include "accel.h"
+
+/* The sampling, and the BVH behind it. */
+typedef struct {
+    MonteCarlo mc;
+    Accel accel;
+} Part16;
+
+/* excerpt: setup */
+/* Builds the camera, the tracer and the sampling of the scene. The geometry comes from
+ * the parts below (1.3's brute force; 1.4's BVH, accel_surfaces, once merged), and the
+ * tracing itself from below.h. */
+static bool setup(const Scene *scene, const Options *opts, void **ctx)
+{
+    Part16 *part = malloc(sizeof *part);
+    FresnelModel fresnel;
+    if (opts->fresnel_name != NULL && !dielectric_fresnel_from_name(opts->fresnel_name, &fresnel)) {
+        fprintf(stderr, "raytra: --fresnel takes schlick or exact, got '%s'\n", opts->fresnel_name);
+        free(part);
+        return false;
+    }
+    if (part == NULL || !accel_build(&part->accel, scene, ACCEL_BVH)) {
+        free(part);
+        return false;
+    }
+    if (!montecarlo_init(&part->mc, scene, accel_surfaces(&part->accel), opts)) {
+        accel_free(&part->accel);
+        free(part);
+        return false;
+    }
+    *ctx = part;
+    return true;
+}
+/* end excerpt: setup */
+
+/* Part 1.6's pixel: the mean of its P x P samples. */
+static Color sample_pixel(const void *ctx, int i, int j, RayStats *stats)
+{
+    return montecarlo_pixel(&((const Part16 *)ctx)->mc, i, j, stats);
+}
+
+/* Tells --view what the camera ray meets first. */
+static void probe_pixel(const void *ctx, int i, int j, Probe *probe)
+{
+    montecarlo_probe(&((const Part16 *)ctx)->mc, i, j, probe);
+}
+
+/* Frees the part's state. */
+static void cleanup(void *ctx)
+{
+    Part16 *part = ctx;
+    montecarlo_free(&part->mc);
+    accel_free(&part->accel);
+    free(part);
+}
+
+static const Program program = {
+    .cli = {.part = "1.6-monte-carlo",
+            .purpose = "Monte Carlo ray tracing: P x P jittered rays per pixel, S x S shadow "
+                       "rays per area light"},
+    .features = FEATURE_SPHERES | FEATURE_PLANES | FEATURE_TRIANGLES | FEATURE_POINT_LIGHTS |
+                FEATURE_DIRECTIONAL_LIGHTS | FEATURE_AREA_LIGHTS | FEATURE_AMBIENT_LIGHT |
+                FEATURE_MIRRORS | FEATURE_REFRACTION | FEATURE_SHADING,
+    .setup = setup,
+    .pixel = sample_pixel,
+    .probe = probe_pixel,
+    .cleanup = cleanup,
+};
+
+/* Renders a scene by the rules of part 1.6. */
+int main(int argc, char **argv)
+{
+    return app_main(&program, argc, argv);
+}
