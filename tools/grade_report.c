@@ -23,7 +23,7 @@ static const char *const meanings[VERDICT_COUNT] = {
     "the image differs from the reference by more than the tolerances allow",
     "the image has another width or height than the reference",
     "the file is a symbolic link, or a hard link to the reference: not an image handed in",
-    "the file is not a PNG, PFM or EXR image that imgdiff can read, or not a regular file",
+    "the file is not a PNG, PFM or OpenEXR image that imgdiff can read, or not a regular file",
     "there is no image: none in the folder, or the program ended normally without writing it",
     "the program ended with a failure exit status and wrote no image",
     "the program was killed by a signal: a segmentation fault, an abort, a file too large",

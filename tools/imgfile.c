@@ -125,7 +125,7 @@ bool imgfile_header(const char *path, ImgFileKind *kind, int *width, int *height
             w = ht = 0;
     }
     if (*kind == IMGFILE_UNKNOWN) {
-        error_set(err, n == 0 ? "empty file" : "not a PNG, PFM or EXR image");
+        error_set(err, n == 0 ? "empty file" : "not a PNG, PFM or OpenEXR image");
         return false;
     }
     if (!image_size_ok(w, ht)) {
