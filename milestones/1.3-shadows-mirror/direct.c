@@ -43,6 +43,20 @@ void direct_explain_blocked(const Tracer *tr, int depth, int k, const Hit *hit, 
         world_explain_hit(tr->explain, depth + 2, &blocker);
 }
 
+/* excerpt: direct-ambient */
+/* Returns k_d (.) ambient, slide 21 ("+ shadows + ambient"): at every hit by the lecture
+ * convention, where camera rays hit only by fall2016's (docs/1.3-shadows-mirror.md). */
+Color direct_ambient(const Tracer *tr, const Material *m, int depth)
+{
+    const Scene *scene = tr->scene;
+    Color ambient = color(0, 0, 0);
+    if (depth == 0 || scene->convention != CONVENTION_FALL2016)
+        ambient = color_mul(m->diffuse, scene->ambient);
+    explain_color(tr->explain, depth + 1, "ambient, kd (.) ambient light", ambient);
+    return ambient;
+}
+/* end excerpt: direct-ambient */
+
 /* starter: todo */
 /* excerpt: direct-radiance */
 /* Returns the light that hit's surface reflects back along ray r straight from the
@@ -55,12 +69,7 @@ Color direct_radiance(const Tracer *tr, const Hit *hit, Ray r, int depth, Path *
     shade_explain_material(tr->explain, depth + 1, m);
     Vec3 n = shade_normal(hit);
     Vec3 v = vec3_neg(r.dir);
-    /* k_d (.) ambient, slide 21 ("+ shadows + ambient"): at every hit by the lecture
-     * convention, where camera rays hit only by fall2016's (docs/1.3-shadows-mirror.md). */
-    Color sum = color(0, 0, 0);
-    if (depth == 0 || scene->convention != CONVENTION_FALL2016)
-        sum = color_mul(m->diffuse, scene->ambient);
-    explain_color(tr->explain, depth + 1, "ambient, kd (.) ambient light", sum);
+    Color sum = direct_ambient(tr, m, depth);
     for (int k = 0; k < scene->light_count; k++) {
         Incident in = light_incident(&scene->lights[k], hit->point, scene_light_falls_off(scene));
         /* No shadow ray for a light behind the surface: it adds nothing anyway. */

@@ -13,6 +13,7 @@
 bool direct_in_shadow(const Tracer *tr, const Hit *hit, Ray r, const Incident *in, Path *path);
 void direct_explain_blocked(const Tracer *tr, int depth, int k, const Hit *hit, Ray r,
                             const Incident *in);
+Color direct_ambient(const Tracer *tr, const Material *m, int depth);
 Color direct_radiance(const Tracer *tr, const Hit *hit, Ray r, int depth, Path *path);
 
 #endif

@@ -27,18 +27,12 @@ static bool setup(const Scene *scene, const Options *opts, void **ctx)
     return true;
 }
 
-/* excerpt: trace-pixel */
 /* Part 1.3's pixel: the radiance along the primary ray through its centre. */
 static Color trace_pixel(const void *ctx, int i, int j, RayStats *stats)
 {
     const Part13 *part = ctx;
-    Ray r = camera_ray(&part->view.camera, i + 0.5, j + 0.5);
-    stats->rays[RAY_PRIMARY]++;
-    explain_ray(part->tracer.explain, 0, "camera", r);
-    Path path = {.stats = stats};
-    return trace_radiance(&part->tracer, r, 0, &path);
+    return trace_camera_pixel(&part->tracer, &part->view.camera, i, j, stats);
 }
-/* end excerpt: trace-pixel */
 
 /* Tells --view what the camera ray meets first. */
 static void probe_pixel(const void *ctx, int i, int j, Probe *probe)

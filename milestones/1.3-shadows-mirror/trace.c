@@ -72,3 +72,16 @@ void trace_probe(const Tracer *tr, Ray r, Probe *probe)
             vec3_dot(n, in.dir) > 0 && !direct_in_shadow(tr, &hit, r, &in, &path);
     }
 }
+
+/* excerpt: trace-pixel */
+/* Returns the radiance along the camera ray through the centre of pixel (i, j): the
+ * pixel of part 1.3, and of every later part that traces with its Tracer. */
+Color trace_camera_pixel(const Tracer *tr, const Camera *cam, int i, int j, RayStats *stats)
+{
+    Ray r = camera_ray(cam, i + 0.5, j + 0.5);
+    stats->rays[RAY_PRIMARY]++;
+    explain_ray(tr->explain, 0, "camera", r);
+    Path path = {.stats = stats};
+    return trace_radiance(tr, r, 0, &path);
+}
+/* end excerpt: trace-pixel */

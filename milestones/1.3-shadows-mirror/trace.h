@@ -5,6 +5,7 @@
 
 #include <stdbool.h>
 
+#include "camera.h"
 #include "cli.h"
 #include "color.h"
 #include "debugview.h"
@@ -42,5 +43,6 @@ struct Tracer {
 Tracer tracer_make(const Scene *scene, Surfaces surfaces, const Options *opts);
 Color trace_radiance(const Tracer *tr, Ray r, int depth, Path *path);
 void trace_probe(const Tracer *tr, Ray r, Probe *probe);
+Color trace_camera_pixel(const Tracer *tr, const Camera *cam, int i, int j, RayStats *stats);
 
 #endif

@@ -42,11 +42,7 @@ static bool setup(const Scene *scene, const Options *opts, void **ctx)
 static Color trace_pixel(const void *ctx, int i, int j, RayStats *stats)
 {
     const Part14 *part = ctx;
-    Ray r = camera_ray(&part->view.camera, i + 0.5, j + 0.5);
-    stats->rays[RAY_PRIMARY]++;
-    explain_ray(part->tracer.explain, 0, "camera", r);
-    Path path = {.stats = stats};
-    return trace_radiance(&part->tracer, r, 0, &path);
+    return trace_camera_pixel(&part->tracer, &part->view.camera, i, j, stats);
 }
 
 /* Tells --view what the camera ray meets first, and for box-tests how many boxes and

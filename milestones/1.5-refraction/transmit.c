@@ -1,6 +1,7 @@
 /* transmit.c: shadow rays that pass through glass, dimmed by Fresnel and Beer but not bent. */
 #include "transmit.h"
 
+#include "direct.h"
 #include "secondary.h"
 #include "shade.h"
 
@@ -58,11 +59,7 @@ Color transmit_direct_radiance(const Tracer *tr, const Hit *hit, Ray r, int dept
     shade_explain_material(tr->explain, depth + 1, m);
     Vec3 n = shade_normal(hit);
     Vec3 v = vec3_neg(r.dir);
-    /* The ambient light as in part 1.3: at every hit, or under fall2016 at camera hits. */
-    Color sum = color(0, 0, 0);
-    if (depth == 0 || scene->convention != CONVENTION_FALL2016)
-        sum = color_mul(m->diffuse, scene->ambient);
-    explain_color(tr->explain, depth + 1, "ambient, kd (.) ambient light", sum);
+    Color sum = direct_ambient(tr, m, depth); /* as in part 1.3 */
     for (int k = 0; k < scene->light_count; k++) {
         Incident in = light_incident(&scene->lights[k], hit->point, scene_light_falls_off(scene));
         if (vec3_dot(n, in.dir) <= 0) { /* it adds nothing, and needs no shadow ray */
