@@ -132,12 +132,19 @@ static bool fast_decimal(const char *s, double *value)
         s++;
     long long m = 0;
     int digits = 0, fraction = 0;
+    /* More than 15 digits go to strtod, before m could overflow. */
     for (; isdigit((unsigned char)*s); s++, digits++)
-        m = 10 * m + (*s - '0');
+        if (digits == 15)
+            return false;
+        else
+            m = 10 * m + (*s - '0');
     if (*s == '.')
         for (s++; isdigit((unsigned char)*s); s++, digits++, fraction++)
-            m = 10 * m + (*s - '0');
-    if (*s != '\0' || digits == 0 || digits > 15)
+            if (digits == 15)
+                return false;
+            else
+                m = 10 * m + (*s - '0');
+    if (*s != '\0' || digits == 0)
         return false;
     double v = (double)m / pow10[fraction];
     *value = negative ? -v : v;
