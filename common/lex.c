@@ -133,17 +133,18 @@ static bool fast_decimal(const char *s, double *value)
     long long m = 0;
     int digits = 0, fraction = 0;
     /* More than 15 digits go to strtod, before m could overflow. */
-    for (; isdigit((unsigned char)*s); s++, digits++)
+    for (; isdigit((unsigned char)*s); s++, digits++) {
         if (digits == 15)
             return false;
-        else
-            m = 10 * m + (*s - '0');
-    if (*s == '.')
-        for (s++; isdigit((unsigned char)*s); s++, digits++, fraction++)
+        m = 10 * m + (*s - '0');
+    }
+    if (*s == '.') {
+        for (s++; isdigit((unsigned char)*s); s++, digits++, fraction++) {
             if (digits == 15)
                 return false;
-            else
-                m = 10 * m + (*s - '0');
+            m = 10 * m + (*s - '0');
+        }
+    }
     if (*s != '\0' || digits == 0)
         return false;
     double v = (double)m / pow10[fraction];
