@@ -2,6 +2,7 @@
 #include "accel.h"
 
 #include <math.h>
+#include <stdio.h>
 #include <stdlib.h>
 #include <time.h>
 
@@ -18,7 +19,8 @@ static double seconds_now(void)
     return ts.tv_sec + ts.tv_nsec * 1e-9;
 }
 
-/* Builds what mode needs for scene: the surfaces' boxes or the BVH; false when out of memory. */
+/* Builds what mode needs for scene: the surfaces' boxes or the BVH; false (reported, with
+ * nothing left to free) when out of memory. */
 bool accel_build(Accel *accel, const Scene *scene, AccelMode mode)
 {
     double start = seconds_now();
@@ -34,6 +36,10 @@ bool accel_build(Accel *accel, const Scene *scene, AccelMode mode)
         ok = bvh_build(&accel->bvh, scene);
     }
     accel->build_seconds = seconds_now() - start;
+    if (!ok) {
+        fprintf(stderr, "raytra: not enough memory for the bounding boxes of %s\n", scene->path);
+        accel_free(accel);
+    }
     return ok;
 }
 

@@ -29,8 +29,6 @@ static bool setup(const Scene *scene, const Options *opts, void **ctx)
     if (part == NULL)
         return false;
     if (!accel_build(&part->accel, scene, (AccelMode)opts->mode)) {
-        fprintf(stderr, "raytra: not enough memory for the bounding boxes of %s\n", scene->path);
-        accel_free(&part->accel);
         free(part);
         return false;
     }
