@@ -95,8 +95,8 @@ static void subdivide(Scene *scene, Vec3 a, Vec3 b, Vec3 c, int level)
 static void mesh_sphere(BenchMesh *m, const char *name, int level)
 {
     double p = (1 + sqrt(5)) / 2;
-    Vec3 v[12] = {{-1, p, 0}, {1, p, 0}, {-1, -p, 0}, {1, -p, 0}, {0, -1, p}, {0, 1, p},
-                  {0, -1, -p}, {0, 1, -p}, {p, 0, -1}, {p, 0, 1}, {-p, 0, -1}, {-p, 0, 1}};
+    Vec3 v[12] = {{-1, p, 0},  {1, p, 0},  {-1, -p, 0}, {1, -p, 0}, {0, -1, p},  {0, 1, p},
+                  {0, -1, -p}, {0, 1, -p}, {p, 0, -1},  {p, 0, 1},  {-p, 0, -1}, {-p, 0, 1}};
     static const int f[20][3] = {{0, 11, 5}, {0, 5, 1},  {0, 1, 7},   {0, 7, 10}, {0, 10, 11},
                                  {1, 5, 9},  {5, 11, 4}, {11, 10, 2}, {10, 7, 6}, {7, 1, 8},
                                  {3, 9, 4},  {3, 4, 2},  {3, 2, 6},   {3, 6, 8},  {3, 8, 9},
@@ -204,27 +204,45 @@ static void *trace_worker(void *arg)
     return NULL;
 }
 
-/* Traces the rays with threads threads, at least twice and for at least 0.3 s; returns
- * millions of rays a second of the fastest pass, and the hits in *hits. */
-static double trace_rate(Job *job, int threads, long *hits)
+/* Traces all of job's rays once with threads threads; returns the seconds it took. */
+static double trace_pass(Job *job, int threads)
 {
-    double best = INFINITY, total = 0;
-    for (int pass = 0; pass < 2 || (total < 0.3 && pass < 20); pass++) {
-        atomic_store(&job->next, 0);
-        atomic_store(&job->hits, 0);
-        pthread_t tid[8];
-        double start = now();
-        for (int t = 1; t < threads; t++)
-            pthread_create(&tid[t], NULL, trace_worker, job);
-        trace_worker(job);
-        for (int t = 1; t < threads; t++)
-            pthread_join(tid[t], NULL);
-        double s = now() - start;
-        best = fmin(best, s);
-        total += s;
+    atomic_store(&job->next, 0);
+    atomic_store(&job->hits, 0);
+    pthread_t tid[8];
+    double start = now();
+    for (int t = 1; t < threads; t++)
+        pthread_create(&tid[t], NULL, trace_worker, job);
+    trace_worker(job);
+    for (int t = 1; t < threads; t++)
+        pthread_join(tid[t], NULL);
+    return now() - start;
+}
+
+/* Traces jobs[0 .. n) with threads[k] threads each, taking turns pass by pass, so that
+ * whatever else the machine does slows them alike: at least three passes each, and on
+ * until each has run 0.3 s in all (20 passes at most). Sets rate[k] to millions of rays
+ * a second of job k's fastest pass, and hits[k] to its hits. */
+static void trace_rates(Job **jobs, const int *threads, int n, double *rate, long *hits)
+{
+    double best[4], total[4] = {0};
+    for (int k = 0; k < n; k++)
+        best[k] = INFINITY;
+    for (int pass = 0; pass < 20; pass++) {
+        bool enough = pass >= 3;
+        for (int k = 0; k < n; k++) {
+            double s = trace_pass(jobs[k], threads[k]);
+            best[k] = fmin(best[k], s);
+            total[k] += s;
+            enough = enough && total[k] >= 0.3;
+        }
+        if (enough)
+            break;
     }
-    *hits = atomic_load(&job->hits);
-    return job->count / best / 1e6;
+    for (int k = 0; k < n; k++) {
+        rate[k] = jobs[k]->count / best[k] / 1e6;
+        hits[k] = atomic_load(&jobs[k]->hits);
+    }
 }
 
 /* One view of a mesh: where the camera is and where the light. */
@@ -273,21 +291,32 @@ static void bench_mesh(BenchMesh *m, View v, int res)
     for (int s = 0; s < 2; s++) {
         const BenchRay *rays = s == 0 ? primary : shadow;
         long count = s == 0 ? np : ns;
-        for (int threads = 1; threads <= 2; threads++) {
-            Job job = {.by = BY_BVH, .bvh = &bvh, .rays = rays, .count = count, .shadow = s == 1};
-            long hits, base_hits;
-            double rate = trace_rate(&job, threads, &hits);
-            printf("   %-7s %d thread%s  %7.2f Mrays/s (%ld rays, %ld %s)", names[s], threads,
-                   threads > 1 ? "s" : " ", rate, count, hits, s == 0 ? "hit" : "blocked");
-            if (base != NULL) {
-                Job bj = {.by = BY_BASELINE, .baseline = base, .rays = rays, .count = count,
-                          .shadow = s == 1};
-                double brate = trace_rate(&bj, threads, &base_hits);
-                printf("   Embree %7.2f Mrays/s (%ld)   raytra/Embree %.2f", brate, base_hits,
-                       rate / brate);
-            }
+        /* raytra with 1 and 2 threads, then Embree likewise, measured in turns. */
+        Job job[4];
+        Job *jobs[4] = {&job[0], &job[1], &job[2], &job[3]};
+        int threads[4] = {1, 2, 1, 2};
+        for (int k = 0; k < 4; k++)
+            job[k] = (Job){.by = k < 2 ? BY_BVH : BY_BASELINE,
+                           .bvh = &bvh,
+                           .baseline = base,
+                           .rays = rays,
+                           .count = count,
+                           .shadow = s == 1};
+        double rate[4];
+        long hits[4];
+        trace_rates(jobs, threads, base != NULL ? 4 : 2, rate, hits);
+        for (int k = 0; k < 2; k++) {
+            printf("   %-7s %d thread%s  %7.2f Mrays/s (%ld rays, %ld %s)", names[s], threads[k],
+                   threads[k] > 1 ? "s" : " ", rate[k], count, hits[k], s == 0 ? "hit" : "blocked");
+            if (base != NULL)
+                printf("   Embree %7.2f Mrays/s (%ld)   raytra/Embree %.2f", rate[k + 2],
+                       hits[k + 2], rate[k] / rate[k + 2]);
             printf("\n");
         }
+        printf("   %-7s 2 threads / 1 thread: raytra %.2f", names[s], rate[1] / rate[0]);
+        if (base != NULL)
+            printf(", Embree %.2f", rate[3] / rate[2]);
+        printf("\n");
     }
     if (base == NULL)
         printf("   Embree baseline skipped: not built with Embree 3 (libembree-dev)\n");
@@ -305,13 +334,17 @@ static void bench_brute_force(void)
     Bvh bvh;
     bvh_build(&bvh, &m.scene);
     BenchRay *rays = primary_rays(vec3(0, 0, 3), vec3(0, 0, -1), 0.8, 128);
-    long n = 128 * 128, hits_bvh, hits_brute;
+    long n = 128 * 128;
     Job a = {.by = BY_BVH, .bvh = &bvh, .rays = rays, .count = n};
     Job b = {.by = BY_BRUTE_FORCE, .bvh = &bvh, .rays = rays, .count = n};
-    double fast = trace_rate(&a, 1, &hits_bvh), slow = trace_rate(&b, 1, &hits_brute);
+    Job *jobs[2] = {&a, &b};
+    int threads[2] = {1, 1};
+    double rate[2];
+    long hits[2];
+    trace_rates(jobs, threads, 2, rate, hits);
     printf("\n== brute force: geodesic sphere of %d triangles, %ld primary rays, 1 thread\n"
            "   BVH %.2f Mrays/s, brute force %.4f Mrays/s: %.0f times faster (hits %ld = %ld)\n",
-           m.scene.triangle_count, n, fast, slow, fast / slow, hits_bvh, hits_brute);
+           m.scene.triangle_count, n, rate[0], rate[1], rate[0] / rate[1], hits[0], hits[1]);
     free(rays);
     bvh_free(&bvh);
     scene_free(&m.scene);
@@ -323,8 +356,9 @@ int main(int argc, char **argv)
     const char *dir = argc > 1 ? argv[1] : "../../shared/meshes";
     int res = argc > 2 ? atoi(argv[2]) : 1024;
     printf("raytra bench: part 1.4's BVH; %d x %d primary rays a view; Embree baseline: %s\n", res,
-           res, baseline_available() ? "Embree 3, rtcIntersect1/rtcOccluded1, build quality HIGH"
-                                     : "none (not built with Embree 3)");
+           res,
+           baseline_available() ? "Embree 3, rtcIntersect1/rtcOccluded1, build quality HIGH"
+                                : "none (not built with Embree 3)");
     char path[4096];
     BenchMesh m;
     snprintf(path, sizeof path, "%s/bunny.obj", dir);
