@@ -89,9 +89,11 @@ long baseline_trace(const Baseline *b, const BenchRay *rays, long begin, long en
     return hits;
 }
 
-/* Frees the baseline. */
+/* Frees the baseline, if there is one. */
 void baseline_free(Baseline *b)
 {
+    if (b == NULL)
+        return;
     rtcReleaseScene(b->scene);
     rtcReleaseDevice(b->device);
     free(b);
