@@ -83,18 +83,20 @@ Color montecarlo_area_radiance(const MonteCarlo *mc, const Light *light, const H
                                     scene_light_falls_off(scene));
         /* As for a point light: no shadow ray where the light adds nothing anyway. */
         if (color_is_black(in.radiance) || vec3_dot(n, in.dir) <= 0) {
-            explain_line(tr->explain, depth + 1, "area light sample %d of %d: faces away",
-                         q + 1, count);
+            explain_line(tr->explain, depth + 1, "area light sample %d of 0 to %d: faces away",
+                         q, count - 1);
             continue;
         }
         Color through = below_light_through(&mc->below, hit, r, &in, path);
         if (color_is_black(through)) {
-            explain_line(tr->explain, depth + 1, "area light sample %d of %d: in shadow", q + 1,
-                         count);
+            explain_line(tr->explain, depth + 1, "area light sample %d of 0 to %d: in shadow", q,
+                         count - 1);
             continue;
         }
         Color c = color_mul(shade_blinn_phong(m, n, v, &in), through);
-        explain_color(tr->explain, depth + 1, "area light sample, Blinn-Phong", c);
+        explain_line(tr->explain, depth + 1,
+                     "area light sample %d of 0 to %d: Blinn-Phong = (%.6g, %.6g, %.6g)", q,
+                     count - 1, c.r, c.g, c.b);
         sum = color_add(sum, c);
     }
     explain_color(tr->explain, depth + 1, "area light", sum);

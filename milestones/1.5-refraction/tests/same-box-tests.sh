@@ -8,10 +8,11 @@
 #               a part that always uses the BVH, mode 3 (part 1.6)
 #
 # The same geometry gives the same camera rays the same tests: each scene is drawn in
-# view box-tests by both programs, as PFM at a quarter of its size; the files must be
-# the same byte for byte, and the scale they print (the most tests of any pixel) the
-# same. On scenes/exercises/1.4-two-spheres.scn the counts are worked out by hand
-# (docs/exercises-answers.md, 1.4.1): at most 4 tests with the BVH, 2 in modes 0 and 1.
+# view box-tests by both programs, as PFM (the larger ones at a quarter of their size);
+# the files must be the same byte for byte, and the scale they print (the most tests of
+# any pixel) the same. On scenes/exercises/1.4-four-spheres.scn the counts are worked out
+# by hand (docs/exercises-answers.md, 1.4.1): at most 6 tests with the BVH, 4 in modes 0
+# and 1.
 set -u
 [ $# -eq 3 ] || { echo "usage: $0 RAYTRA RAYTRA_1_4 MODES" >&2; exit 2; }
 raytra=$1 part14=$2 modes=$3
@@ -21,16 +22,17 @@ trap 'rm -rf "$tmp"' EXIT
 trap 'exit 130' INT TERM
 
 count=0 failed=0
-# Draws scene $1 in mode $2 ("-": this part's only one, 3 in part 1.4) with both
-# programs; checks they agree, and when $3 is given that the scale line says $3 tests.
+# Draws scene $1 at --scale $2 in mode $3 ("-": this part's only one, 3 in part 1.4)
+# with both programs; checks they agree, and when $4 is given that the scale line says
+# $4 tests.
 compare() {
-    scene=$1 mode=$2 want=${3:-}
+    scene=$1 scale=$2 mode=$3 want=${4:-}
     count=$((count + 1))
     if [ "$mode" = - ]; then this_mode= part14_mode="--mode 3"; else this_mode="--mode $mode" part14_mode="--mode $mode"; fi
     # shellcheck disable=SC2086 # the modes are words by design
-    if ! "$part14" --scale 0.25 --view box-tests $part14_mode "$top/scenes/$scene" "$tmp/a.pfm" \
+    if ! "$part14" --scale "$scale" --view box-tests $part14_mode "$top/scenes/$scene" "$tmp/a.pfm" \
         >/dev/null 2>"$tmp/a.txt" ||
-        ! "$raytra" --scale 0.25 --view box-tests $this_mode "$top/scenes/$scene" "$tmp/b.pfm" \
+        ! "$raytra" --scale "$scale" --view box-tests $this_mode "$top/scenes/$scene" "$tmp/b.pfm" \
             >/dev/null 2>"$tmp/b.txt"; then
         echo "FAIL $scene mode $mode: a render failed:"
         sed 's/^/    /' "$tmp/a.txt" "$tmp/b.txt"
@@ -47,13 +49,11 @@ compare() {
     fi
 }
 
-# 1.4-two-spheres.scn is 3 x 1 pixels: --scale 0.25 keeps it at 1 x 1, the middle ray.
-# It meets the root's box and neither child's: 3 tests with the BVH; 2 spheres' boxes.
 for mode in $([ "$modes" = - ] && echo - || echo "$modes"); do
-    case $mode in 0 | 1) want=2 ;; *) want=3 ;; esac
-    compare exercises/1.4-two-spheres.scn "$mode" "$want"
+    case $mode in 0 | 1) want=4 ;; *) want=6 ;; esac
+    compare exercises/1.4-four-spheres.scn 1 "$mode" "$want"
     for scene in bvh-torus.scn demo.scn; do
-        compare "$scene" "$mode"
+        compare "$scene" 0.25 "$mode"
     done
 done
 
