@@ -107,11 +107,17 @@ done <<'ANSWERS'
 1.6-monte-carlo      scenes/exercises/1.6-quarter-blocked.scn --samples=2       0 0  0.75 0.75 0.75
 ANSWERS
 
+# Prints $1 without its leading and trailing blanks.
+trim() {
+    echo "$1" | sed 's/^ *//; s/ *$//'
+}
+
 # Answers that are words raytra prints: part | scene | options | the words, which must
-# stand in what it prints (standard output and error) with these options.
+# stand in what it prints (standard output and error) with these options; TMP in the
+# options is a scratch folder.
 while IFS='|' read -r part scene opts text; do
-    part=$(echo $part) scene=$(echo $scene) opts=$(echo $opts | sed "s|TMP|$tmp|g")
-    text=$(echo "$text" | sed 's/^ *//; s/ *$//')
+    part=$(trim "$part") scene=$(trim "$scene") text=$(trim "$text")
+    opts=$(trim "$opts" | sed "s|TMP|$tmp|g")
     case "$part" in '' | '#'*) continue ;; esac
     checked=$((checked + 1))
     # shellcheck disable=SC2086 # the options are words by design

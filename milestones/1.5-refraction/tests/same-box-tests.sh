@@ -28,7 +28,8 @@ count=0 failed=0
 compare() {
     scene=$1 scale=$2 mode=$3 want=${4:-}
     count=$((count + 1))
-    if [ "$mode" = - ]; then this_mode= part14_mode="--mode 3"; else this_mode="--mode $mode" part14_mode="--mode $mode"; fi
+    this_mode="--mode $mode" part14_mode="--mode $mode"
+    if [ "$mode" = - ]; then this_mode='' part14_mode="--mode 3"; fi
     # shellcheck disable=SC2086 # the modes are words by design
     if ! "$part14" --scale "$scale" --view box-tests $part14_mode "$top/scenes/$scene" "$tmp/a.pfm" \
         >/dev/null 2>"$tmp/a.txt" ||
