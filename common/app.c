@@ -137,8 +137,8 @@ static bool check_scene(const Program *program, const Options *opts)
     return true;
 }
 
-/* Reads a whole number of digits alone from text into *v; false when text is anything
- * else, or more than INT_MAX. */
+/* Reads the len characters of text, digits alone, as a whole number into *v; false when
+ * they are anything else, none, or more than 9 (a number that large is no pixel). */
 static bool parse_count(const char *text, size_t len, int *v)
 {
     if (len == 0 || len > 9 || strspn(text, "0123456789") < len)
@@ -235,7 +235,8 @@ static bool view_usable(const Program *program, const Options *opts)
     if (program->probe == NULL ||
         (kind == VIEW_BOX_TESTS && cli_part_number(program->cli.part) < 14)) {
         fprintf(stderr, "raytra: part %s cannot draw the view '%s'%s\n", program->cli.part,
-                opts->view, kind == VIEW_BOX_TESTS ? " (parts 1.4 to 1.6, which have boxes, draw it)" : "");
+                opts->view,
+                kind == VIEW_BOX_TESTS ? " (parts 1.4 to 1.6, which have boxes, draw it)" : "");
         return false;
     }
     return true;

@@ -83,8 +83,8 @@ Color montecarlo_area_radiance(const MonteCarlo *mc, const Light *light, const H
                                     scene_light_falls_off(scene));
         /* As for a point light: no shadow ray where the light adds nothing anyway. */
         if (color_is_black(in.radiance) || vec3_dot(n, in.dir) <= 0) {
-            explain_line(tr->explain, depth + 1, "area light sample %d of 0 to %d: faces away",
-                         q, count - 1);
+            explain_line(tr->explain, depth + 1, "area light sample %d of 0 to %d: faces away", q,
+                         count - 1);
             continue;
         }
         Color through = below_light_through(&mc->below, hit, r, &in, path);
@@ -134,8 +134,7 @@ Color montecarlo_direct_radiance(const Tracer *tr, const Hit *hit, Ray r, int de
  * pixel's area. Each ray has its own random numbers, from (seed, pixel, k) alone, so
  * that no pixel depends on which thread renders it, or when, and ray k is the same
  * whether it is traced with the others or alone (--trace-pixel X,Y@k). */
-static Color sum_samples(const MonteCarlo *mc, int i, int j, int first, int last,
-                         RayStats *stats)
+static Color sum_samples(const MonteCarlo *mc, int i, int j, int first, int last, RayStats *stats)
 {
     int side = mc->pixel_side, count = side * side;
     uint64_t key = rng_hash(rng_hash(mc->seed) ^ ((uint64_t)(uint32_t)j << 32 | (uint32_t)i));

@@ -1,4 +1,5 @@
-/* test_explain.c: --trace-pixel X,Y@SAMPLE: one sample's ray tree and colour, as the render has it. */
+/* test_explain.c: --trace-pixel X,Y@SAMPLE: one sample's ray tree and colour, as the render has it.
+ */
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -69,8 +70,10 @@ START_TEST(each_sample_of_a_pixel_on_an_edge_by_hand)
         ck_assert_int_eq(status, 0);
         /* Only sample k is traced: one camera ray. */
         char header[96];
-        snprintf(header, sizeof header, "sample %d of 0 to 3: in sub-square %d from the left, %d "
-                 "from the bottom", k, k % 2, k / 2);
+        snprintf(header, sizeof header,
+                 "sample %d of 0 to 3: in sub-square %d from the left, %d "
+                 "from the bottom",
+                 k, k % 2, k / 2);
         ck_assert_msg(strstr(text, header) != NULL, "'%s' missing from:\n%s", header, text);
         const char *camera = strstr(text, "camera ray");
         ck_assert(camera != NULL && strstr(camera + 1, "camera ray") == NULL);
@@ -121,7 +124,8 @@ static Color mean_of_samples(const char *arguments, const char *pixel, int count
 START_TEST(the_samples_traced_alone_make_the_pixel)
 {
     char scene[1024];
-    snprintf(scene, sizeof scene, "'%s/scenes/soft-shadow.scn' --scale 0.25 --seed 3 --samples 3 --light-samples 2",
+    snprintf(scene, sizeof scene,
+             "'%s/scenes/soft-shadow.scn' --scale 0.25 --seed 3 --samples 3 --light-samples 2",
              TOP_DIR);
     char arguments[1200];
     snprintf(arguments, sizeof arguments, "%s --sampling random", scene);
@@ -155,7 +159,8 @@ START_TEST(a_sample_traced_twice_and_on_more_threads_is_the_same)
 {
     char arguments[1200];
     snprintf(arguments, sizeof arguments,
-             "'%s/scenes/soft-shadow.scn' --scale 0.25 --samples 4 --trace-pixel 17,27@13", TOP_DIR);
+             "'%s/scenes/soft-shadow.scn' --scale 0.25 --samples 4 --trace-pixel 17,27@13",
+             TOP_DIR);
     int status;
     char *a = run(arguments, &status);
     ck_assert_int_eq(status, 0);
@@ -174,8 +179,8 @@ END_TEST
 START_TEST(bad_samples_are_usage_errors)
 {
     write_edge();
-    const char *bad[] = {"3,1@", "3,1@x", "3,1@-1", "3,1@4", "3,1@1x", "3,1@@1", "3@1",
-                         "3,1@99999999999999"};
+    const char *bad[] = {"3,1@",   "3,1@x",  "3,1@-1", "3,1@4",
+                         "3,1@1x", "3,1@@1", "3@1",    "3,1@99999999999999"};
     for (size_t k = 0; k < sizeof bad / sizeof *bad; k++) {
         char arguments[128];
         snprintf(arguments, sizeof arguments, "edge.scn --samples 2 --trace-pixel '%s'", bad[k]);
