@@ -137,14 +137,47 @@ static bool check_scene(const Program *program, const Options *opts)
     return true;
 }
 
-/* Reads "X,Y" into the pixel's column and row; false (reported) when it is not one of
- * the image's pixels. */
-static bool parse_pixel(const char *text, const CameraSpec *c, int *x, int *y)
+/* Reads the len characters of text, digits alone, as a whole number into *v; false when
+ * they are anything else, none, or more than 9 (a number that large is no pixel). */
+static bool parse_count(const char *text, size_t len, int *v)
 {
-    int used = 0;
-    if (sscanf(text, "%d,%d%n", x, y, &used) != 2 || text[used] != '\0' ||
-        strspn(text, "0123456789,") != strlen(text)) {
-        fprintf(stderr, "raytra: --trace-pixel takes X,Y (column, row), got '%s'\n", text);
+    if (len == 0 || len > 9 || strspn(text, "0123456789") < len)
+        return false;
+    *v = 0;
+    for (size_t k = 0; k < len; k++)
+        *v = 10 * *v + (text[k] - '0');
+    return true;
+}
+
+/* Reads "X,Y" into the pixel's column and row, and "X,Y@K" also into *sample, the
+ * number of one of the pixel's sample_count samples (-1 when not given); false
+ * (reported) when it is not one of the image's pixels, or not one of its samples.
+ * sample_count is 0 in a part that traces one ray a pixel. */
+static bool parse_pixel(const char *text, const CameraSpec *c, int sample_count, int *x, int *y,
+                        int *sample)
+{
+    const char *at = strchr(text, '@');
+    size_t len = at != NULL ? (size_t)(at - text) : strlen(text);
+    const char *comma = memchr(text, ',', len);
+    *sample = -1;
+    if (comma == NULL || !parse_count(text, (size_t)(comma - text), x) ||
+        !parse_count(comma + 1, len - (size_t)(comma + 1 - text), y)) {
+        fprintf(stderr, "raytra: --trace-pixel takes X,Y (column, row)%s, got '%s'\n",
+                sample_count > 0 ? " or X,Y@SAMPLE" : "", text);
+        return false;
+    }
+    if (at != NULL && sample_count == 0) {
+        fprintf(stderr,
+                "raytra: --trace-pixel %s: this part traces one ray a pixel, through its "
+                "centre; @SAMPLE is for part 1.6, which samples\n",
+                text);
+        return false;
+    }
+    if (at != NULL && (!parse_count(at + 1, strlen(at + 1), sample) || *sample >= sample_count)) {
+        fprintf(stderr,
+                "raytra: --trace-pixel %s: SAMPLE is the number of one of the pixel's %d "
+                "samples, 0 to %d, counted row by row from its bottom-left sub-square\n",
+                text, sample_count, sample_count - 1);
         return false;
     }
     if (*x >= c->nx || *y >= c->ny) {
@@ -158,11 +191,12 @@ static bool parse_pixel(const char *text, const CameraSpec *c, int *x, int *y)
 }
 
 /* Traces the one pixel (x, y) of --trace-pixel, printing its ray tree and its colour
- * before and after clamping and encoding. Row y counts from the top, as in the image;
- * the pixel function's j counts from the bottom, as in the lecture:
+ * before and after clamping and encoding; or, with @SAMPLE, the tree and the colour of
+ * that one sample. Row y counts from the top, as in the image; the pixel function's j
+ * counts from the bottom, as in the lecture:
  * slide 38 ("relationship of (i, j) th pixel in image plane to u, v"). */
 static void trace_one_pixel(const Program *program, const void *ctx, const Scene *scene,
-                            const Options *opts, int x, int y)
+                            const Options *opts, int x, int y, int sample)
 {
     const CameraSpec *c = &scene->camera;
     int j = c->ny - 1 - y;
@@ -170,6 +204,14 @@ static void trace_one_pixel(const Program *program, const void *ctx, const Scene
            "j = %d counted from the bottom, its centre at image point (%g, %g)\n",
            x, y, c->nx, c->ny, x, j, x + 0.5, j + 0.5);
     RayStats stats = {{0}};
+    if (sample >= 0) {
+        Color s = program->sample(ctx, x, j, sample, &stats);
+        int count = opts->samples * opts->samples;
+        printf("sample %d: colour (%.9g, %.9g, %.9g); the pixel's colour is the mean of its "
+               "%d sample%s\n",
+               sample, s.r, s.g, s.b, count, count == 1 ? "" : "s");
+        return;
+    }
     Color radiance = program->pixel(ctx, x, j, &stats);
     PngEncoding enc = opts->linear ? PNG_ENCODING_LINEAR : PNG_ENCODING_SRGB;
     printf("colour (%.9g, %.9g, %.9g); clamped to [0, 1]: (%.9g, %.9g, %.9g); in a PNG "
@@ -191,9 +233,10 @@ static bool view_usable(const Program *program, const Options *opts)
         return false;
     }
     if (program->probe == NULL ||
-        (kind == VIEW_BOX_TESTS && cli_part_number(program->cli.part) != 14)) {
+        (kind == VIEW_BOX_TESTS && cli_part_number(program->cli.part) < 14)) {
         fprintf(stderr, "raytra: part %s cannot draw the view '%s'%s\n", program->cli.part,
-                opts->view, kind == VIEW_BOX_TESTS ? " (part 1.4 draws it)" : "");
+                opts->view,
+                kind == VIEW_BOX_TESTS ? " (parts 1.4 to 1.6, which have boxes, draw it)" : "");
         return false;
     }
     return true;
@@ -291,10 +334,12 @@ int app_main(const Program *program, int argc, char **argv)
     if (!loaded || output_is_input(&scene, output, opts.scene) || !apply_scale(&scene, &opts))
         goto done;
     note_ignored(program, &scene);
-    int trace_x, trace_y;
+    int trace_x = 0, trace_y = 0, trace_sample = -1;
     Explain explain = {stdout, &scene};
     if (opts.trace_pixel != NULL) {
-        if (!parse_pixel(opts.trace_pixel, &scene.camera, &trace_x, &trace_y)) {
+        int samples = program->sample != NULL ? opts.samples * opts.samples : 0;
+        if (!parse_pixel(opts.trace_pixel, &scene.camera, samples, &trace_x, &trace_y,
+                         &trace_sample)) {
             status = EXIT_USAGE;
             goto done;
         }
@@ -303,7 +348,7 @@ int app_main(const Program *program, int argc, char **argv)
     if (program->setup != NULL && !program->setup(&scene, &opts, &ctx))
         goto done;
     if (opts.trace_pixel != NULL) {
-        trace_one_pixel(program, ctx, &scene, &opts, trace_x, trace_y);
+        trace_one_pixel(program, ctx, &scene, &opts, trace_x, trace_y, trace_sample);
         status = EXIT_SUCCESS;
         goto done;
     }

@@ -16,6 +16,10 @@ typedef struct {
     /* Builds the state pixel reads from the loaded scene; false (reported) on failure. */
     bool (*setup)(const Scene *scene, const Options *opts, void **ctx);
     PixelFn pixel;
+    /* The radiance of sample k alone of pixel (i, j), with the rays and random numbers
+     * it has in pixel's mean: --trace-pixel X,Y@K. NULL when the part traces one ray a
+     * pixel; a part that sets it reads P, its P x P samples a pixel, from Options.samples. */
+    Color (*sample)(const void *ctx, int i, int j, int k, RayStats *stats);
     /* Tells what a pixel's camera ray meets first, for --view; NULL if the part cannot. */
     ProbeFn probe;
     /* Prints part-specific figures after the summary line; may be NULL. */

@@ -38,12 +38,15 @@ const CliOption cli_options[] = {
      .field = FIELD(strict)},
     {.name = "trace-pixel", .kind = OPTION_TEXT, .metavar = "X,Y",
      .help = "print the ray tree of the pixel in column X, row Y (0,0 is the top-left "
-             "corner, as in image viewers) and write no image",
+             "corner, as in image viewers) and write no image; in part 1.6, X,Y@K traces "
+             "its sample K alone: K from 0 to P x P - 1, the sub-squares of the pixel "
+             "counted row by row from its bottom left",
      .field = FIELD(trace_pixel)},
     {.name = "view", .kind = OPTION_TEXT, .metavar = "NAME",
      .help = "draw what each camera ray meets instead of its light: normal, depth, id "
              "(a colour per surface), material (kd), light-count (lights that reach the "
-             "point), box-tests (part 1.4: a heat map of the tests per ray)",
+             "point), box-tests (parts 1.4 to 1.6: a heat map of the boxes and primitives "
+             "each camera ray is tested against)",
      .field = FIELD(view)},
     {.name = "two-sided",
      .help = "shade the backs of triangles and planes with their own material, not lit yellow",

@@ -227,3 +227,15 @@ Surfaces accel_surfaces(const Accel *accel)
     }
     return (Surfaces){bvh_surfaces_hit, bvh_surfaces_blocked, accel};
 }
+
+/* Returns how many boxes and primitives ray r is tested against to find its closest hit
+ * in accel's mode, for --view box-tests: with the BVH (modes 2 and 3) the nodes' boxes
+ * and the leaves' primitives it visits (bvh_count_tests), in modes 0 and 1 every
+ * surface's box; and every plane, which has no box. */
+long accel_count_tests(const Accel *accel, Ray r)
+{
+    const Scene *s = accel->scene;
+    if (accel->mode == ACCEL_BVH || accel->mode == ACCEL_LEAF_BOXES)
+        return bvh_count_tests(&accel->bvh, r) + s->plane_count;
+    return s->sphere_count + s->triangle_count + s->plane_count;
+}

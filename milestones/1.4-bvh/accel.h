@@ -31,5 +31,6 @@ typedef struct {
 bool accel_build(Accel *accel, const Scene *scene, AccelMode mode);
 Surfaces accel_surfaces(const Accel *accel);
 void accel_free(Accel *accel);
+long accel_count_tests(const Accel *accel, Ray r);
 
 #endif

@@ -44,17 +44,13 @@ static Color trace_pixel(const void *ctx, int i, int j, RayStats *stats)
 }
 
 /* Tells --view what the camera ray meets first, and for box-tests how many boxes and
- * primitives it was tested against: in modes 0 and 1 every surface's box (and planes). */
+ * primitives it was tested against (accel_count_tests). */
 static void probe_pixel(const void *ctx, int i, int j, Probe *probe)
 {
     const Part14 *part = ctx;
-    const Accel *a = &part->accel;
     Ray r = camera_ray(&part->view.camera, i + 0.5, j + 0.5);
     trace_probe(&part->tracer, r, probe);
-    const Scene *s = a->scene;
-    probe->tests = a->mode == ACCEL_BVH || a->mode == ACCEL_LEAF_BOXES
-                       ? bvh_count_tests(&a->bvh, r) + s->plane_count
-                       : s->sphere_count + s->triangle_count + s->plane_count;
+    probe->tests = accel_count_tests(&part->accel, r);
 }
 
 /* Prints the size and build time of the BVH, or of the boxes, after the summary line. */

@@ -53,11 +53,14 @@ static Color refract_pixel(const void *ctx, int i, int j, RayStats *stats)
 }
 /* end excerpt: refract-pixel */
 
-/* Tells --view what the camera ray meets first, as part 1.3 does. */
+/* Tells --view what the camera ray meets first, as part 1.3 does, and for box-tests how
+ * many boxes and primitives it was tested against, as part 1.4 does. */
 static void probe_pixel(const void *ctx, int i, int j, Probe *probe)
 {
     const Part15 *part = ctx;
-    trace_probe(&part->refractor.tracer, camera_ray(&part->view.camera, i + 0.5, j + 0.5), probe);
+    Ray r = camera_ray(&part->view.camera, i + 0.5, j + 0.5);
+    trace_probe(&part->refractor.tracer, r, probe);
+    probe->tests = accel_count_tests(&part->accel, r);
 }
 
 /* Frees the part's state. */

@@ -83,18 +83,20 @@ Color montecarlo_area_radiance(const MonteCarlo *mc, const Light *light, const H
                                     scene_light_falls_off(scene));
         /* As for a point light: no shadow ray where the light adds nothing anyway. */
         if (color_is_black(in.radiance) || vec3_dot(n, in.dir) <= 0) {
-            explain_line(tr->explain, depth + 1, "area light sample %d of %d: faces away",
-                         q + 1, count);
+            explain_line(tr->explain, depth + 1, "area light sample %d of 0 to %d: faces away", q,
+                         count - 1);
             continue;
         }
         Color through = below_light_through(&mc->below, hit, r, &in, path);
         if (color_is_black(through)) {
-            explain_line(tr->explain, depth + 1, "area light sample %d of %d: in shadow", q + 1,
-                         count);
+            explain_line(tr->explain, depth + 1, "area light sample %d of 0 to %d: in shadow", q,
+                         count - 1);
             continue;
         }
         Color c = color_mul(shade_blinn_phong(m, n, v, &in), through);
-        explain_color(tr->explain, depth + 1, "area light sample, Blinn-Phong", c);
+        explain_line(tr->explain, depth + 1,
+                     "area light sample %d of 0 to %d: Blinn-Phong = (%.6g, %.6g, %.6g)", q,
+                     count - 1, c.r, c.g, c.b);
         sum = color_add(sum, c);
     }
     explain_color(tr->explain, depth + 1, "area light", sum);
@@ -123,14 +125,16 @@ Color montecarlo_direct_radiance(const Tracer *tr, const Hit *hit, Ray r, int de
 
 /* starter: todo */
 /* excerpt: montecarlo-pixel */
-/* Returns the colour of pixel (i, j): the mean radiance of P x P rays through it, ray k
- * through a random point of sub-square k (jittered), or through its centre when P = 1.
+/* Returns the summed radiance of samples first to last - 1 of the P x P rays through
+ * pixel (i, j): ray k through a random point of sub-square k (jittered; k counts the
+ * sub-squares row by row from the pixel's bottom left), or through its centre when P = 1.
  * The lecture's one ray per pixel, at u = l + (r - l)(i + 0.5)/n_x, samples the image at
  * a point: slide 38 ("relationship of (i, j) th pixel in image plane to u, v").
  * One point a pixel aliases: slide 75 ("note aliasing"). P x P points average the
  * pixel's area. Each ray has its own random numbers, from (seed, pixel, k) alone, so
- * that no pixel depends on which thread renders it, or when. */
-Color montecarlo_pixel(const MonteCarlo *mc, int i, int j, RayStats *stats)
+ * that no pixel depends on which thread renders it, or when, and ray k is the same
+ * whether it is traced with the others or alone (--trace-pixel X,Y@k). */
+static Color sum_samples(const MonteCarlo *mc, int i, int j, int first, int last, RayStats *stats)
 {
     int side = mc->pixel_side, count = side * side;
     uint64_t key = rng_hash(rng_hash(mc->seed) ^ ((uint64_t)(uint32_t)j << 32 | (uint32_t)i));
@@ -141,8 +145,9 @@ Color montecarlo_pixel(const MonteCarlo *mc, int i, int j, RayStats *stats)
         Rng shuffle = rng_make(key, 0);
         strata_shuffle(&shuffle, perm, count);
     }
+    const Explain *explain = below_tracer(&mc->below)->explain;
     Color sum = color(0, 0, 0);
-    for (int k = 0; k < count; k++) {
+    for (int k = first; k < last; k++) {
         Rng rng = rng_make(key, (uint64_t)k + 1);
         double x = i + 0.5, y = j + 0.5;
         if (side > 1) {
@@ -157,12 +162,34 @@ Color montecarlo_pixel(const MonteCarlo *mc, int i, int j, RayStats *stats)
         Path path = {.stats = stats, .sample = &sample};
         Ray r = camera_ray(&mc->camera, x, y);
         stats->rays[RAY_PRIMARY]++;
-        const Explain *explain = below_tracer(&mc->below)->explain;
-        explain_line(explain, 0, "sample %d of %d, at (%.4f, %.4f)", k + 1, count, x, y);
+        if (side > 1 && mc->sampling != SAMPLING_RANDOM)
+            explain_line(explain, 0,
+                         "sample %d of 0 to %d: in sub-square %d from the left, %d from the "
+                         "bottom, at image point (%.6f, %.6f)",
+                         k, count - 1, k % side, k / side, x, y);
+        else
+            explain_line(explain, 0, "sample %d of 0 to %d: at image point (%.6f, %.6f)", k,
+                         count - 1, x, y);
         explain_ray(explain, 0, "camera", r);
         sum = color_add(sum, below_radiance(&mc->below, r, 0, &path));
     }
-    /* The box filter: every ray through the pixel counts 1/P^2. */
-    return color_scale(sum, 1.0 / count);
+    return sum;
 }
 /* end excerpt: montecarlo-pixel */
+
+/* excerpt: montecarlo-mean */
+/* Returns the colour of pixel (i, j): the mean radiance of its P x P rays. The box
+ * filter: every ray through the pixel counts 1/P^2. */
+Color montecarlo_pixel(const MonteCarlo *mc, int i, int j, RayStats *stats)
+{
+    int count = mc->pixel_side * mc->pixel_side;
+    return color_scale(sum_samples(mc, i, j, 0, count, stats), 1.0 / count);
+}
+/* end excerpt: montecarlo-mean */
+
+/* Returns the radiance of ray k alone of pixel (i, j), the very ray and random numbers
+ * it has in montecarlo_pixel: --trace-pixel X,Y@k. */
+Color montecarlo_sample(const MonteCarlo *mc, int i, int j, int k, RayStats *stats)
+{
+    return sum_samples(mc, i, j, k, k + 1, stats);
+}

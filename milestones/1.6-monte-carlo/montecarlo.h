@@ -46,6 +46,7 @@ Color montecarlo_area_radiance(const MonteCarlo *mc, const Light *light, const H
                                 int depth, Path *path);
 Color montecarlo_direct_radiance(const Tracer *tr, const Hit *hit, Ray r, int depth, Path *path);
 Color montecarlo_pixel(const MonteCarlo *mc, int i, int j, RayStats *stats);
+Color montecarlo_sample(const MonteCarlo *mc, int i, int j, int k, RayStats *stats);
 void montecarlo_probe(const MonteCarlo *mc, int i, int j, Probe *probe);
 
 #endif

@@ -45,10 +45,19 @@ static Color sample_pixel(const void *ctx, int i, int j, RayStats *stats)
     return montecarlo_pixel(&((const Part16 *)ctx)->mc, i, j, stats);
 }
 
-/* Tells --view what the camera ray meets first. */
+/* Part 1.6's sample k alone of pixel (i, j), for --trace-pixel X,Y@k. */
+static Color one_sample(const void *ctx, int i, int j, int k, RayStats *stats)
+{
+    return montecarlo_sample(&((const Part16 *)ctx)->mc, i, j, k, stats);
+}
+
+/* Tells --view what the camera ray through the pixel's centre meets first, and for
+ * box-tests how many of the BVH's boxes and primitives it was tested against. */
 static void probe_pixel(const void *ctx, int i, int j, Probe *probe)
 {
-    montecarlo_probe(&((const Part16 *)ctx)->mc, i, j, probe);
+    const Part16 *part = ctx;
+    montecarlo_probe(&part->mc, i, j, probe);
+    probe->tests = accel_count_tests(&part->accel, camera_ray(&part->mc.camera, i + 0.5, j + 0.5));
 }
 
 /* Frees the part's state. */
@@ -69,6 +78,7 @@ static const Program program = {
                 FEATURE_MIRRORS | FEATURE_REFRACTION | FEATURE_SHADING,
     .setup = setup,
     .pixel = sample_pixel,
+    .sample = one_sample,
     .probe = probe_pixel,
     .cleanup = cleanup,
 };
