@@ -118,6 +118,8 @@ typedef struct {
     double time_limit;       /* seconds for each run of a student's program */
     double build_time_limit; /* seconds for make */
     long long memory_limit;  /* bytes of address space; 0: none */
+    bool quiet;              /* no progress lines */
+    bool self;               /* submissions is one student's folder: a check before handing in */
     char started[32];        /* when grading began, for the report */
 } Grading;
 
@@ -125,5 +127,10 @@ void *grade_alloc(size_t size);
 char *grade_format(const char *fmt, ...) DIAG_PRINTF(1, 2);
 char *grade_copy(const char *text);
 void grade_size_text(long long bytes, char *text, size_t size);
+bool grade_is_folder(const char *path);
+bool grade_is_file(const char *path);
+bool grade_make_folder(const char *path, bool anew);
+void grade_print_first_line(const char *prefix, const char *path);
+void grade_verdict(SceneResult *res, Verdict v, const char *fmt, ...) DIAG_PRINTF(3, 4);
 
 #endif

@@ -7,6 +7,7 @@
 #include <stdlib.h>
 #include <string.h>
 #include <sys/stat.h>
+#include <unistd.h>
 
 #include "imgfile.h"
 #include "outfile.h"
@@ -532,4 +533,23 @@ static void write_html(FILE *f, const Grading *g)
 bool report_write_html(const Grading *g, const char *path, Error *err)
 {
     return write_whole(path, write_html, g, err);
+}
+
+/* Prints, for a student checking their own work, each scene's verdict and reason, and the
+ * heat map to look at when it did not pass; returns the exit status: 0 when every scene
+ * passes, 1 otherwise. */
+int report_print_self(const Grading *g)
+{
+    const Submission *s = &g->subs[0];
+    for (int k = 0; k < g->render_count; k++) {
+        const SceneResult *res = &s->results[k];
+        char *heat = grade_format("%s/%s.heat.png", s->work, g->renders[k].name);
+        printf("%-12s %s: %s\n", verdict_name(res->verdict), g->renders[k].name, res->message);
+        if (res->verdict != VERDICT_PASS && access(heat, F_OK) == 0)
+            printf("%12s heat map: %s\n", "", heat);
+        free(heat);
+    }
+    printf("%d of %d scenes pass; the report: %s/report.html\n", s->tally[TALLY_PASS],
+           g->render_count, g->out);
+    return s->tally[TALLY_PASS] == g->render_count ? 0 : 1;
 }
