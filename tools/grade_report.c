@@ -9,11 +9,9 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
-#include "imgfile.h"
+#include "grade_csv.h"
+#include "grade_thumb.h"
 #include "outfile.h"
-
-/* The largest picture embedded: thumbnails are far smaller; a larger file is a mistake. */
-#define EMBED_MAX_BYTES (8L << 20)
 
 /* A thumbnail this narrow or narrower is shown enlarged with sharp pixels. */
 #define PIXELATED_WIDTH 200
@@ -37,74 +35,6 @@ static const char *const meanings[VERDICT_COUNT] = {
 /* The summary's class (and colour) for each tally. */
 static const char *const tally_class[TALLY_COUNT] = {"pass", "fail", "missing", "error"};
 
-/* Writes text as one CSV field followed by end (',' or '\n'): quoted, its quotes doubled
- * (RFC 4180), when it holds a comma, a quote or a line break, or starts or ends with a
- * space. A text field (not a figure) that a spreadsheet would take for a formula, starting
- * with =, +, -, @, a tab or a carriage return, gets a quote ' first, and quotes around. */
-static void csv_field(FILE *f, const char *text, bool is_text, char end)
-{
-    size_t len = strlen(text);
-    bool formula = is_text && len > 0 && strchr("=+-@\t\r", text[0]) != NULL;
-    bool quote = formula || strpbrk(text, ",\"\r\n") != NULL ||
-                 (len > 0 && (text[0] == ' ' || text[len - 1] == ' '));
-    if (quote) {
-        fputc('"', f);
-        if (formula)
-            fputc('\'', f);
-        for (const char *p = text; *p != '\0'; p++) {
-            if (*p == '"')
-                fputc('"', f);
-            fputc(*p, f);
-        }
-        fputc('"', f);
-    } else {
-        fputs(text, f);
-    }
-    fputc(end, f);
-}
-
-/* Writes the CSV: a header line, then one line a submission and scene. */
-static void write_csv(FILE *f, const Grading *g)
-{
-    static const char *const columns[] = {
-        "submission",         "scene",         "verdict", "max_diff_r", "max_diff_g",
-        "max_diff_b",         "mean_abs_diff", "rmse",    "psnr_db",    "differing_pixels",
-        "differing_fraction", "bbox",          "message", "seconds",
-    };
-    enum { COLUMNS = sizeof columns / sizeof columns[0] };
-    for (int c = 0; c < COLUMNS; c++)
-        csv_field(f, columns[c], true, c + 1 < COLUMNS ? ',' : '\n');
-    for (int i = 0; i < g->sub_count; i++)
-        for (int k = 0; k < g->render_count; k++) {
-            const Submission *s = &g->subs[i];
-            const SceneResult *res = &s->results[k];
-            const Figures *fig = &res->figures;
-            char v[COLUMNS][64] = {{0}};
-            if (res->compared) {
-                for (int c = 0; c < 3; c++)
-                    snprintf(v[3 + c], sizeof v[0], "%.6g", fig->max[c]);
-                snprintf(v[6], sizeof v[0], "%.6g", fig->mean);
-                snprintf(v[7], sizeof v[0], "%.6g", fig->rmse);
-                snprintf(v[8], sizeof v[0], isinf(fig->psnr) ? "inf" : "%.2f", fig->psnr);
-                snprintf(v[9], sizeof v[0], "%ld", fig->differing);
-                snprintf(v[10], sizeof v[0], "%.6g",
-                         fig->pixels > 0 ? (double)fig->differing / fig->pixels : 0.0);
-                if (fig->has_box)
-                    snprintf(v[11], sizeof v[0], "(%d,%d)-(%d,%d)", fig->box[0], fig->box[1],
-                             fig->box[2], fig->box[3]);
-            }
-            if (res->seconds >= 0)
-                snprintf(v[13], sizeof v[0], "%.3f", res->seconds);
-            csv_field(f, s->name, true, ',');
-            csv_field(f, g->renders[k].name, true, ',');
-            csv_field(f, verdict_name(res->verdict), true, ',');
-            for (int c = 3; c <= 11; c++)
-                csv_field(f, v[c], false, ',');
-            csv_field(f, res->message, true, ',');
-            csv_field(f, v[13], false, '\n');
-        }
-}
-
 /* Writes the file at path through a temporary renamed onto it, so that it appears only
  * complete; false (err) on any failure. */
 static bool write_whole(const char *path, void (*write)(FILE *, const Grading *), const Grading *g,
@@ -125,7 +55,7 @@ static bool write_whole(const char *path, void (*write)(FILE *, const Grading *)
 /* Writes grades.csv to path; false (err) when it cannot. */
 bool report_write_csv(const Grading *g, const char *path, Error *err)
 {
-    return write_whole(path, write_csv, g, err);
+    return write_whole(path, csv_write, g, err);
 }
 
 /* Writes text with the characters HTML gives a meaning made plain. */
@@ -142,102 +72,11 @@ static void html_text(FILE *f, const char *text)
         }
 }
 
-/* Reads the whole file at path, if it is at most EMBED_MAX_BYTES; NULL otherwise. */
-static unsigned char *read_small_file(const char *path, size_t *size)
-{
-    struct stat st;
-    FILE *f = imgfile_fopen(path);
-    unsigned char *data = NULL;
-    if (f != NULL && fstat(fileno(f), &st) == 0 && st.st_size <= EMBED_MAX_BYTES) {
-        data = grade_alloc((size_t)st.st_size + 1);
-        *size = fread(data, 1, (size_t)st.st_size, f);
-        if (ferror(f) || *size != (size_t)st.st_size) {
-            free(data);
-            data = NULL;
-        }
-    }
-    if (f != NULL)
-        fclose(f);
-    return data;
-}
-
-/* Writes the bytes data[0..size) in base64. */
-static void write_base64(FILE *f, const unsigned char *data, size_t size)
-{
-    static const char digits[] = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
-    for (size_t i = 0; i < size; i += 3) {
-        unsigned long bits = (unsigned long)data[i] << 16;
-        if (i + 1 < size)
-            bits |= (unsigned long)data[i + 1] << 8;
-        if (i + 2 < size)
-            bits |= data[i + 2];
-        fputc(digits[(bits >> 18) & 63], f);
-        fputc(digits[(bits >> 12) & 63], f);
-        fputc(i + 1 < size ? digits[(bits >> 6) & 63] : '=', f);
-        fputc(i + 2 < size ? digits[bits & 63] : '=', f);
-    }
-}
-
-/* The page's style sheet; write_style adds a rule a reference picture. */
+/* The page's style sheet: grade_report.css, made a C string by the build (grade.mk);
+ * write_style adds a rule a reference picture. */
 static const char style[] =
-    ":root{--pass:#1a7f37;--pass-bg:#dafbe1;--fail:#cf222e;--fail-bg:#ffebe9;--missing:#57606a;"
-    "--missing-bg:#eaeef2;--error:#8250df;--error-bg:#f6edfe;--line:#d0d7de;--soft:#eaeef2;"
-    "--muted:#59636e}\n*{box-sizing:border-box}\n"
-    "body{margin:0;font:14px/1.45 system-ui,-apple-system,'Segoe UI',Roboto,Arial,sans-serif;"
-    "color:#1f2328;background:#f6f8fa}\n"
-    "header.page{background:#fff;border-bottom:1px solid var(--line)}\n"
-    "header.page>div,main,footer{max-width:1240px;margin:0 auto;padding:0 28px}\n"
-    "header.page>div{padding-top:20px;padding-bottom:14px}\nmain{padding-top:22px}\n"
-    "h1{margin:0 0 6px;font-size:22px;font-weight:600}\n.meta{color:var(--muted);margin:2px 0}\n"
-    "code{font:12.5px ui-monospace,Menlo,Consolas,monospace;background:#eff1f3;padding:1px 5px;"
-    "border-radius:4px}\nsection{background:#fff;border:1px solid var(--line);border-radius:8px;"
-    "padding:16px 20px;margin-bottom:20px}\n"
-    "h2{font-size:18px;margin:0 0 10px;display:flex;align-items:center;gap:10px;flex-wrap:wrap}\n"
-    "h2 .name{overflow-wrap:anywhere}\na{color:#0969da;text-decoration:none}\n"
-    ".back{margin-left:auto;font-size:12.5px;font-weight:400}\n"
-    "table.summary{border-collapse:collapse;width:100%}\ntable.summary th,table.summary td{"
-    "padding:7px 10px;border-bottom:1px solid var(--soft);text-align:left}\n"
-    "table.summary th{font-size:11.5px;text-transform:uppercase;color:var(--muted)}\n"
-    "table.summary td:first-child{overflow-wrap:anywhere;min-width:8em}\n"
-    ".n{text-align:right!important;font-variant-numeric:tabular-nums;width:64px}\n"
-    "td.zero{color:#b8bfc6}\n.dots{white-space:nowrap}\n.dot{display:inline-block;width:11px;"
-    "height:11px;border-radius:3px;margin-right:3px;vertical-align:middle}\n"
-    ".dot.pass{background:#2da44e}.dot.fail{background:var(--fail)}"
-    ".dot.missing{background:#afb8c1}.dot.error{background:var(--error)}\n"
-    ".badge{display:inline-block;font-size:11px;font-weight:700;padding:2px 9px;"
-    "border-radius:999px;white-space:nowrap}\n"
-    ".badge.pass{color:var(--pass);background:var(--pass-bg)}"
-    ".badge.fail{color:var(--fail);background:var(--fail-bg)}\n"
-    ".badge.missing{color:var(--missing);background:var(--missing-bg)}"
-    ".badge.error{color:var(--error);background:var(--error-bg)}\n"
-    ".kind{font-size:12px;color:var(--muted);border:1px solid var(--line);border-radius:999px;"
-    "padding:0 8px}\n.counts{color:var(--muted);margin:0 0 4px}\n"
-    "details.scene{border-top:1px solid var(--soft)}\ndetails.scene>summary{display:flex;"
-    "align-items:center;gap:10px;padding:9px 2px;cursor:pointer}\n"
-    "details.scene>summary::before{content:'\\25B8';color:var(--muted)}\n"
-    "details.scene[open]>summary::before{content:'\\25BE'}\n"
-    ".scene-name{font-weight:600;min-width:200px}\n.message{flex:1}\n"
-    ".message::first-letter{text-transform:uppercase}\n"
-    ".time,.file{color:var(--muted);font-size:12.5px}\n.scene-body{padding:0 0 14px 16px}\n"
-    ".pictures{display:grid;grid-template-columns:repeat(3,minmax(0,1fr)) 240px;gap:16px;"
-    "align-items:start}\nfigure{margin:0}\n.pic{display:block;width:100%;height:auto;"
-    "border:1px solid var(--line);border-radius:4px;background:#000 no-repeat;"
-    "background-size:100% 100%}\n.px{image-rendering:pixelated}\n"
-    ".pic.none{display:flex;align-items:center;justify-content:center;padding:8px;"
-    "color:var(--muted);background:repeating-linear-gradient(45deg,#f6f8fa 0 8px,#eef1f4 8px "
-    "16px)}\n"
-    ".pic.black{background:#000}\nfigcaption{font-size:12px;color:var(--muted);margin-top:4px}\n"
-    "table.figures{font-size:12.5px}\ntable.figures th{text-align:left;font-weight:500;"
-    "color:var(--muted);padding:2px 10px 2px 0;white-space:nowrap}\n"
-    "details.log pre{background:#f6f8fa;border:1px solid var(--line);border-radius:6px;"
-    "padding:8px 10px;font-size:12px;max-height:260px;overflow:auto;white-space:pre-wrap;"
-    "overflow-wrap:anywhere}\ndetails.log>summary{cursor:pointer;color:var(--muted);"
-    "font-size:12.5px;margin-top:8px}\n.broken{border-left:3px solid var(--error);"
-    "background:var(--error-bg);padding:8px 12px;border-radius:4px}\n"
-    "dl.legend{display:grid;grid-template-columns:max-content 1fr;gap:4px 12px;font-size:13px}\n"
-    "dl.legend dd{margin:0;color:var(--muted)}\n"
-    "footer{color:var(--muted);font-size:12px;padding-bottom:28px}\n"
-    "@media (max-width:900px){.pictures{grid-template-columns:repeat(2,minmax(0,1fr))}}\n";
+#include "grade_style.h"
+    ;
 
 /* The page's parts, filled by html_put: %s is a text made plain, %S raw HTML, %d a number. */
 static const char page_head[] =
@@ -291,41 +130,16 @@ static const char *plural(int n)
     return n == 1 ? "" : "s";
 }
 
-/* A PNG thumbnail read for embedding: its bytes and its size in pixels. */
-typedef struct {
-    unsigned char *data;
-    size_t size;
-    int width, height;
-} Picture;
-
-/* Reads the PNG at path (a thumbnail the grader made) into p; false when it cannot. */
-static bool picture_read(const char *path, Picture *p)
-{
-    ImgFileKind kind;
-    Error err;
-    *p = (Picture){0};
-    return path != NULL && imgfile_header(path, &kind, &p->width, &p->height, &err) &&
-           kind == IMGFILE_PNG && (p->data = read_small_file(path, &p->size)) != NULL;
-}
-
-/* Writes picture p as a data: URI, and frees its bytes. */
-static void write_picture(FILE *f, Picture *p)
-{
-    fputs("data:image/png;base64,", f);
-    write_base64(f, p->data, p->size);
-    free(p->data);
-}
-
 /* Writes the style sheet, with one rule a reference picture: each is embedded once and
  * shown, as a background, beside every submission's image. */
 static void write_style(FILE *f, const Grading *g)
 {
     fputs(style, f);
     for (int k = 0; k < g->render_count; k++) {
-        Picture p;
-        if (picture_read(g->renders[k].reference_show, &p)) {
+        Thumb p;
+        if (thumb_read(g->renders[k].reference_show, &p)) {
             fprintf(f, ".ref%d{aspect-ratio:%d/%d;background-image:url(", k, p.width, p.height);
-            write_picture(f, &p);
+            thumb_write_uri(f, &p);
             fputs(")}\n", f);
         }
     }
@@ -404,16 +218,16 @@ static void write_log(FILE *f, const char *title, const char *log, bool open)
 static void write_figure(FILE *f, const char *path, const char *same, double width, int k,
                          const char *alt, const char *caption, const char *none)
 {
-    Picture p;
+    Thumb p;
     fputs("<figure>", f);
     if (path == NULL && same != NULL) {
         html_put(f, "<div class=\"pic %S%d\" role=\"img\" aria-label=\"%S\"></div>", same, k, alt);
-    } else if (picture_read(path, &p)) {
+    } else if (thumb_read(path, &p)) {
         fprintf(f,
                 "<img class=\"pic%s\" width=\"%d\" height=\"%d\" style=\"width:%.1f%%\" "
                 "alt=\"%s\" src=\"",
                 p.width <= PIXELATED_WIDTH ? " px" : "", p.width, p.height, 100 * width, alt);
-        write_picture(f, &p);
+        thumb_write_uri(f, &p);
         fputs("\">", f);
     } else {
         /* The reference's rule gives the box its shape; .pic.none wins its background. */

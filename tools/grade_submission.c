@@ -1,5 +1,4 @@
-/* grade_submission.c: the class's submissions: listed, then built and run, or their images found.
- */
+/* grade_submission.c: the class's submissions: listed, then built and run or their images found. */
 #include "grade_submission.h"
 
 #include <ctype.h>
