@@ -17,7 +17,6 @@ enum { EXIT_MATCH = 0, EXIT_DIFFER = 1, EXIT_TROUBLE = 2 };
 /* What the command line asks for. */
 typedef struct {
     const char *paths[2];
-    int path_count;
     double threshold; /* a pixel differs when its largest channel difference exceeds this */
     double allow;     /* the fraction of the pixels that may differ */
     double scale;     /* the difference shown white in the heat map; 0: the largest found */
@@ -167,14 +166,13 @@ static bool parse_args(int argc, char **argv, DiffOptions *o)
             return false;
         }
     }
-    for (; optind < argc; optind++) {
-        if (o->path_count == 2) {
-            fprintf(stderr, "imgdiff: unexpected argument '%s': give two images\n", argv[optind]);
-            return false;
-        }
-        o->paths[o->path_count++] = argv[optind];
+    if (argc - optind > 2) {
+        fprintf(stderr, "imgdiff: unexpected argument '%s': give two images\n", argv[optind + 2]);
+        return false;
     }
-    if (!o->help && o->path_count < 2) {
+    for (int k = 0; optind + k < argc; k++)
+        o->paths[k] = argv[optind + k];
+    if (!o->help && argc - optind < 2) {
         fprintf(stderr, "imgdiff: give two images to compare (imgdiff --help shows how)\n");
         return false;
     }
@@ -207,26 +205,9 @@ static bool check_diff_path(const DiffOptions *o)
     return true;
 }
 
-/* Returns the difference of two channel values; a NaN or an infinity in either counts as
- * an infinite difference, even against another: such a pixel is broken, never equal. */
-static double channel_diff(float a, float b)
-{
-    if (!isfinite(a) || !isfinite(b))
-        return INFINITY;
-    return fabs((double)a - (double)b);
-}
-
-/* Returns the largest difference between the channels of pixel k of a and of b. */
-static double pixel_diff(const Image *a, const Image *b, long k)
-{
-    double largest = 0;
-    for (int c = 0; c < 3; c++)
-        largest = fmax(largest, channel_diff(a->pixels[3 * k + c], b->pixels[3 * k + c]));
-    return largest;
-}
-
-/* Measures how a and b, of the same size, differ, counting the pixels beyond threshold. */
-static Diff diff_images(const Image *a, const Image *b, double threshold)
+/* Measures how a and b, of the same size, differ, counting the pixels beyond threshold;
+ * gives each pixel of map, when there is one, its largest channel difference as red. */
+static Diff diff_images(const Image *a, const Image *b, double threshold, Image *map)
 {
     Diff d = {.x0 = a->width, .y0 = a->height, .x1 = -1, .y1 = -1};
     for (int y = 0; y < a->height; y++)
@@ -234,7 +215,10 @@ static Diff diff_images(const Image *a, const Image *b, double threshold)
             long k = (long)y * a->width + x;
             double largest = 0;
             for (int c = 0; c < 3; c++) {
-                double e = channel_diff(a->pixels[3 * k + c], b->pixels[3 * k + c]);
+                float p = a->pixels[3 * k + c], q = b->pixels[3 * k + c];
+                /* A NaN or an infinity in either is an infinite difference, even against
+                 * another: such a pixel is broken, never equal. */
+                double e = isfinite(p) && isfinite(q) ? fabs((double)p - (double)q) : INFINITY;
                 d.max[c] = fmax(d.max[c], e);
                 d.sum += e;
                 d.sum_squares += e * e;
@@ -243,6 +227,8 @@ static Diff diff_images(const Image *a, const Image *b, double threshold)
                     d.largest_finite = fmax(d.largest_finite, e);
             }
             d.nonfinite += isinf(largest);
+            if (map->pixels != NULL)
+                map->pixels[3 * k] = (float)largest;
             if (largest > threshold) {
                 d.differing++;
                 d.x0 = x < d.x0 ? x : d.x0;
@@ -261,84 +247,59 @@ static Color heat_color(double e, double top)
     if (e == 0)
         return color(0, 0, 0);
     double t = fmin(e / top, 1.0) * (RAMP_STOPS - 1);
-    int k = (int)t;
-    if (k >= RAMP_STOPS - 1)
-        return ramp[RAMP_STOPS - 1];
+    int k = t < RAMP_STOPS - 2 ? (int)t : RAMP_STOPS - 2; /* the stops t lies between */
     double f = t - k;
     return color_add(color_scale(ramp[k], 1 - f), color_scale(ramp[k + 1], f));
 }
 
-/* Writes the heat map of a against b to path, linear so that the ramp's colours are
- * stored as chosen; false (reported) when it cannot. */
-static bool write_heat_map(const Image *a, const Image *b, double top, const char *path)
+/* Colours map, whose pixels hold their largest difference as red, into the heat map and
+ * writes it to path, linear so that the ramp's colours are stored as chosen; false
+ * (reported) when it cannot. */
+static bool write_heat_map(Image *map, double top, const char *path)
 {
-    Image map;
-    if (!image_init(&map, a->width, a->height)) {
-        fprintf(stderr, "imgdiff: not enough memory for the heat map\n");
-        return false;
-    }
-    for (int y = 0; y < a->height; y++)
-        for (int x = 0; x < a->width; x++)
-            image_set(&map, x, y, heat_color(pixel_diff(a, b, (long)y * a->width + x), top));
+    for (int y = 0; y < map->height; y++)
+        for (int x = 0; x < map->width; x++)
+            image_set(map, x, y, heat_color(image_get(map, x, y).r, top));
     Error err;
-    bool ok = image_write(&map, path, PNG_ENCODING_LINEAR, &err);
+    bool ok = image_write(map, path, PNG_ENCODING_LINEAR, &err);
     if (!ok)
         fprintf(stderr, "imgdiff: cannot write '%s': %s\n", path, err.text);
-    image_free(&map);
     return ok;
 }
 
-/* Returns the root of the mean squared difference over every channel of every pixel. */
-static double diff_rmse(const Diff *d, int width, int height)
+/* Prints the measures of d for images of width x height pixels: in words, or with
+ * --machine with the tolerances as NAME VALUE lines with enough digits to be read back
+ * exactly; top is the heat map's scale, 0 when none was written. */
+static void print_figures(const Diff *d, int width, int height, double top, const DiffOptions *o)
 {
-    return sqrt(d->sum_squares / (3.0 * width * height));
-}
-
-/* Prints the measures of d for images of width x height pixels. */
-static void print_report(const Diff *d, int width, int height, double threshold)
-{
-    double samples = 3.0 * width * height;
-    double rmse = diff_rmse(d, width, height);
+    long pixels = (long)width * height;
+    double mean = d->sum / (3.0 * pixels), rmse = sqrt(d->sum_squares / (3.0 * pixels));
+    /* PSNR = 10 log10(peak^2 / MSE) with peak 1: equal images, no noise, give inf. */
+    double psnr = -20 * log10(rmse), t = o->threshold;
+    if (o->machine) {
+        printf("threshold %.9g\nallow %.9g\nsize %d %d\nmax %.9g %.9g %.9g\nmean %.9g\n"
+               "rmse %.9g\npsnr %.9g\ndiffering %ld %ld\n",
+               t, o->allow, width, height, d->max[0], d->max[1], d->max[2], mean, rmse, psnr,
+               d->differing, pixels);
+        if (d->differing > 0)
+            printf("box %d %d %d %d\n", d->x0, d->y0, d->x1, d->y1);
+        if (top > 0)
+            printf("heat_scale %.9g\n", top);
+        if (d->nonfinite > 0)
+            printf("nonfinite %ld\n", d->nonfinite);
+        return;
+    }
     printf("size: %d x %d pixels\n", width, height);
     printf("largest difference: R %.4g (%.1f/255), G %.4g (%.1f/255), B %.4g (%.1f/255)\n",
            d->max[0], d->max[0] * 255, d->max[1], d->max[1] * 255, d->max[2], d->max[2] * 255);
-    printf("mean absolute difference: %.4g (%.2f/255)\n", d->sum / samples, d->sum / samples * 255);
-    printf("RMSE: %.4g\n", rmse);
-    /* PSNR = 10 log10(peak^2 / MSE) with peak 1: equal images have no noise at all. */
-    if (rmse == 0)
-        printf("PSNR: inf dB\n");
-    else
-        printf("PSNR: %.2f dB\n", -20 * log10(rmse));
+    printf("mean absolute difference: %.4g (%.2f/255)\n", mean, mean * 255);
+    printf("RMSE: %.4g\nPSNR: %.2f dB\n", rmse, psnr);
     printf("differing pixels: %ld of %ld (%.4g%%) differ by more than %.4g (%.1f/255)\n",
-           d->differing, (long)width * height, 100.0 * d->differing / ((double)width * height),
-           threshold, threshold * 255);
+           d->differing, pixels, 100.0 * d->differing / pixels, t, t * 255);
     if (d->differing > 0)
         printf("differing region: (%d,%d)-(%d,%d), y from the top\n", d->x0, d->y0, d->x1, d->y1);
     if (d->nonfinite > 0)
         printf("non-finite pixels: %ld (NaN or infinite in either image)\n", d->nonfinite);
-}
-
-/* Prints the measures of d and the tolerances as NAME VALUE lines, with enough digits to
- * be read back exactly; top is the heat map's scale, 0 when none was written. */
-static void print_machine(const Diff *d, int width, int height, double top, const DiffOptions *o)
-{
-    double rmse = diff_rmse(d, width, height);
-    printf("threshold %.9g\nallow %.9g\n", o->threshold, o->allow);
-    printf("size %d %d\n", width, height);
-    printf("max %.9g %.9g %.9g\n", d->max[0], d->max[1], d->max[2]);
-    printf("mean %.9g\n", d->sum / (3.0 * width * height));
-    printf("rmse %.9g\n", rmse);
-    if (rmse == 0)
-        printf("psnr inf\n");
-    else
-        printf("psnr %.9g\n", -20 * log10(rmse));
-    printf("differing %ld %ld\n", d->differing, (long)width * height);
-    if (d->differing > 0)
-        printf("box %d %d %d %d\n", d->x0, d->y0, d->x1, d->y1);
-    if (top > 0)
-        printf("heat_scale %.9g\n", top);
-    if (d->nonfinite > 0)
-        printf("nonfinite %ld\n", d->nonfinite);
 }
 
 /* Prints the verdict line; returns the exit status it means. */
@@ -368,13 +329,12 @@ static int print_verdict(const Diff *d, long pixels, const DiffOptions *o)
 
 /* Tells, from the headers alone, whether both images can be read and have the same size;
  * reports why not. Nothing is decoded before: an image's pixels may be a bomb. */
-static bool check_headers(const DiffOptions *o)
+static bool check_headers(const DiffOptions *o, ImgFileKind kind[2])
 {
-    ImgFileKind kind;
     int w[2], h[2];
     Error err;
     for (int k = 0; k < 2; k++)
-        if (!imgfile_header(o->paths[k], &kind, &w[k], &h[k], &err)) {
+        if (!imgfile_header(o->paths[k], &kind[k], &w[k], &h[k], &err)) {
             fprintf(stderr, "imgdiff: cannot read '%s': %s\n", o->paths[k], err.text);
             return false;
         }
@@ -394,21 +354,25 @@ static int compare(const Image *a, const Image *b, const DiffOptions *o)
         fprintf(stderr, "imgdiff: '%s' changed while it was read\n", o->paths[1]);
         return EXIT_TROUBLE;
     }
-    Diff d = diff_images(a, b, o->threshold);
-    if (!o->quiet && !o->machine)
-        print_report(&d, a->width, a->height, o->threshold);
-    double top = 0;
-    if (o->diff_path != NULL) {
-        /* Equal images get an all-black map; the scale then only needs to be positive. */
-        top = o->scale > 0 ? o->scale : d.largest_finite > 0 ? d.largest_finite : 1.0 / 255;
-        if (!write_heat_map(a, b, top, o->diff_path))
-            return EXIT_TROUBLE;
-        if (!o->quiet && !o->machine)
-            printf("heat map: black = 0, white = %.4g (%.1f/255), written to %s\n", top, top * 255,
-                   o->diff_path);
+    Image map = {0};
+    if (o->diff_path != NULL && !image_init(&map, a->width, a->height)) {
+        fprintf(stderr, "imgdiff: not enough memory for the heat map\n");
+        return EXIT_TROUBLE;
     }
+    Diff d = diff_images(a, b, o->threshold, &map);
+    if (!o->quiet && !o->machine)
+        print_figures(&d, a->width, a->height, 0, o);
+    /* Equal images get an all-black map; the scale then only needs to be positive. */
+    double top = o->scale > 0 ? o->scale : d.largest_finite > 0 ? d.largest_finite : 1.0 / 255;
+    bool written = o->diff_path == NULL || write_heat_map(&map, top, o->diff_path);
+    image_free(&map);
+    if (!written)
+        return EXIT_TROUBLE;
+    if (o->diff_path != NULL && !o->quiet && !o->machine)
+        printf("heat map: black = 0, white = %.4g (%.1f/255), written to %s\n", top, top * 255,
+               o->diff_path);
     if (o->machine)
-        print_machine(&d, a->width, a->height, top, o);
+        print_figures(&d, a->width, a->height, o->diff_path != NULL ? top : 0, o);
     return print_verdict(&d, (long)a->width * a->height, o);
 }
 
@@ -417,22 +381,9 @@ static int compare(const Image *a, const Image *b, const DiffOptions *o)
  * with a PNG's stored values. A non-finite value stays as it is, to be reported. */
 static void encode_like_png(Image *img)
 {
-    for (long k = 0; k < 3L * img->width * img->height; k++) {
-        double v = img->pixels[k];
-        if (isfinite(v))
-            img->pixels[k] =
-                (float)((int)(image_srgb_encode(fmin(fmax(v, 0), 1)) * 255 + 0.5) / 255.0);
-    }
-}
-
-/* Reads the image at path into img; false (reported) when it cannot. */
-static bool read_image(Image *img, const char *path)
-{
-    Error err;
-    if (image_read(img, path, &err))
-        return true;
-    fprintf(stderr, "imgdiff: cannot read '%s': %s\n", path, err.text);
-    return false;
+    for (long k = 0; k < 3L * img->width * img->height; k++)
+        if (isfinite(img->pixels[k]))
+            img->pixels[k] = (float)(image_encode_8bit(img->pixels[k], PNG_ENCODING_SRGB) / 255.0);
 }
 
 /* Runs imgdiff: exit status 0 when the images match, 1 when not, 2 on trouble. */
@@ -445,25 +396,29 @@ int main(int argc, char **argv)
         print_help(stdout);
         return EXIT_MATCH;
     }
-    if ((o.diff_path != NULL && !check_diff_path(&o)) || !check_headers(&o))
+    ImgFileKind kind[2];
+    if ((o.diff_path != NULL && !check_diff_path(&o)) || !check_headers(&o, kind))
         return EXIT_TROUBLE;
-    Image a, b;
-    if (!read_image(&a, o.paths[0]))
-        return EXIT_TROUBLE;
-    int status = EXIT_TROUBLE;
-    if (read_image(&b, o.paths[1])) {
-        /* A PNG against linear values: the linear image is encoded as a PNG would be. */
-        bool linear[2] = {imgfile_is_linear(o.paths[0]), imgfile_is_linear(o.paths[1])};
-        if (linear[0] != linear[1]) {
-            encode_like_png(linear[0] ? &a : &b);
-            if (!o.quiet && !o.machine)
-                printf("note: %s holds linear values: compared as raytra would write them to "
-                       "a PNG (clamped to [0, 1], sRGB, 8 bits)\n",
-                       o.paths[linear[0] ? 0 : 1]);
-        }
-        status = compare(&a, &b, &o);
-        image_free(&b);
+    Image img[2] = {{0}};
+    Error err;
+    int status = EXIT_TROUBLE, read = 0;
+    while (read < 2 && image_read(&img[read], o.paths[read], &err))
+        read++;
+    if (read < 2)
+        fprintf(stderr, "imgdiff: cannot read '%s': %s\n", o.paths[read], err.text);
+    /* A PNG against linear values (a PFM's, an EXR's): the linear image is encoded as a
+     * PNG would be. */
+    int linear = kind[0] == IMGFILE_PNG; /* the index of the linear one, if one is */
+    if (read == 2 && (kind[0] == IMGFILE_PNG) != (kind[1] == IMGFILE_PNG)) {
+        encode_like_png(&img[linear]);
+        if (!o.quiet && !o.machine)
+            printf("note: %s holds linear values: compared as raytra would write them to "
+                   "a PNG (clamped to [0, 1], sRGB, 8 bits)\n",
+                   o.paths[linear]);
     }
-    image_free(&a);
+    if (read == 2)
+        status = compare(&img[0], &img[1], &o);
+    for (int k = 0; k < read; k++)
+        image_free(&img[k]);
     return status;
 }
