@@ -27,7 +27,6 @@ static void read_figure(const char *line, Figures *fig)
     /* || stops at the first pattern that fits the line. */
     (void)(sscanf(line, "threshold %lf", &fig->threshold) == 1 ||
            sscanf(line, "allow %lf", &fig->allow) == 1 ||
-           sscanf(line, "size %d %d", &fig->width, &fig->height) == 2 ||
            sscanf(line, "max %lf %lf %lf", &fig->max[0], &fig->max[1], &fig->max[2]) == 3 ||
            sscanf(line, "mean %lf", &fig->mean) == 1 || sscanf(line, "rmse %lf", &fig->rmse) == 1 ||
            sscanf(line, "psnr %lf", &fig->psnr) == 1 ||

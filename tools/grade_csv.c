@@ -64,7 +64,7 @@ void csv_write(FILE *f, const Grading *g)
                 snprintf(v[13], sizeof v[0], "%.3f", res->seconds);
             csv_field(f, s->name, true, ',');
             csv_field(f, g->renders[k].name, true, ',');
-            csv_field(f, verdict_name(res->verdict), true, ',');
+            csv_field(f, verdict_info[res->verdict].name, true, ',');
             for (int c = 3; c <= 11; c++)
                 csv_field(f, v[c], false, ',');
             csv_field(f, res->message, true, ',');

@@ -16,20 +16,27 @@
 /* A thumbnail this narrow or narrower is shown enlarged with sharp pixels. */
 #define PIXELATED_WIDTH 200
 
-/* What each verdict means, for the report's legend; in the order of Verdict. */
-static const char *const meanings[VERDICT_COUNT] = {
-    "the image matches the reference within the tolerances",
-    "the image differs from the reference by more than the tolerances allow",
-    "the image has another width or height than the reference",
-    "the file is a symbolic link, or a hard link to the reference: not an image handed in",
-    "the file is not a PNG, PFM or OpenEXR image that imgdiff can read, or not a regular file",
-    "there is no image: none in the folder, or the program ended normally without writing it",
-    "the program ended with a failure exit status and wrote no image",
-    "the program was killed by a signal: a segmentation fault, an abort, a file too large",
-    "the program did not finish within the time limit; it was killed, with all it started",
-    "the program failed saying that it ran out of memory, or was killed as the system's "
-    "out-of-memory killer kills",
-    "make failed, ran too long or made no raytra: no scene could be rendered",
+/* Each verdict's name, column and meaning; in the order of Verdict. */
+const VerdictInfo verdict_info[VERDICT_COUNT] = {
+    {"PASS", TALLY_PASS, "the image matches the reference within the tolerances"},
+    {"FAIL", TALLY_FAIL, "the image differs from the reference by more than the tolerances allow"},
+    {"WRONG SIZE", TALLY_FAIL, "the image has another width or height than the reference"},
+    {"LINK", TALLY_FAIL,
+     "the file is a symbolic link, or a hard link to the reference: not an image handed in"},
+    {"UNREADABLE", TALLY_FAIL,
+     "the file is not a PNG, PFM or OpenEXR image that imgdiff can read, or not a regular file"},
+    {"MISSING", TALLY_MISSING,
+     "there is no image: none in the folder, or the program ended normally without writing it"},
+    {"ERROR", TALLY_ERROR, "the program ended with a failure exit status and wrote no image"},
+    {"CRASHED", TALLY_ERROR,
+     "the program was killed by a signal: a segmentation fault, an abort, a file too large"},
+    {"TIMEOUT", TALLY_ERROR,
+     "the program did not finish within the time limit; it was killed, with all it started"},
+    {"OUT OF MEMORY", TALLY_ERROR,
+     "the program failed saying that it ran out of memory, or was killed as the system's "
+     "out-of-memory killer kills"},
+    {"BUILD FAILED", TALLY_ERROR,
+     "make failed, ran too long or made no raytra: no scene could be rendered"},
 };
 
 /* The summary's class (and colour) for each tally. */
@@ -189,7 +196,7 @@ static void write_summary(FILE *f, const Grading *g)
         for (int k = 0; k < g->render_count; k++) {
             Verdict v = s->results[k].verdict;
             html_put(f, "<span class=\"dot %S\" title=\"%s: %S\"></span>",
-                     tally_class[verdict_tally(v)], g->renders[k].name, verdict_name(v));
+                     tally_class[verdict_info[v].tally], g->renders[k].name, verdict_info[v].name);
         }
         Tally tally;
         const char *verdict = overall_verdict(g, s, &tally);
@@ -199,8 +206,8 @@ static void write_summary(FILE *f, const Grading *g)
     html_put(f, legend_head);
     for (int v = 0; v < VERDICT_COUNT; v++)
         html_put(f, "<dt><span class=\"badge %S\">%S</span></dt><dd>%S; counted as %S</dd>\n",
-                 tally_class[verdict_tally((Verdict)v)], verdict_name((Verdict)v), meanings[v],
-                 tally_class[verdict_tally((Verdict)v)]);
+                 tally_class[verdict_info[v].tally], verdict_info[v].name, verdict_info[v].meaning,
+                 tally_class[verdict_info[v].tally]);
     fputs("</dl>\n</details>\n</section>\n", f);
 }
 
@@ -286,7 +293,7 @@ static void write_scene(FILE *f, const Grading *g, const Submission *s, int k)
 {
     const Render *r = &g->renders[k];
     const SceneResult *res = &s->results[k];
-    Tally tally = verdict_tally(res->verdict);
+    Tally tally = verdict_info[res->verdict].tally;
     char seconds[400] = "";
     if (res->seconds >= 0)
         snprintf(seconds, sizeof seconds, "<span class=\"time\">%.2f s</span>", res->seconds);
@@ -295,7 +302,7 @@ static void write_scene(FILE *f, const Grading *g, const Submission *s, int k)
              "<span class=\"badge %S\">%S</span><span class=\"message\">%s</span>%S</summary>\n"
              "<div class=\"scene-body\">\n<p class=\"file\">Scene <code>%s",
              res->verdict == VERDICT_PASS ? "" : " open", r->name, tally_class[tally],
-             verdict_name(res->verdict), res->message, seconds, r->scene);
+             verdict_info[res->verdict].name, res->message, seconds, r->scene);
     for (char **a = r->args; *a != NULL; a++)
         html_put(f, " %s", *a);
     fputs("</code></p>\n", f);
@@ -358,7 +365,7 @@ int report_print_self(const Grading *g)
     for (int k = 0; k < g->render_count; k++) {
         const SceneResult *res = &s->results[k];
         char *heat = grade_format("%s/%s.heat.png", s->work, g->renders[k].name);
-        printf("%-12s %s: %s\n", verdict_name(res->verdict), g->renders[k].name, res->message);
+        printf("%-12s %s: %s\n", verdict_info[res->verdict].name, g->renders[k].name, res->message);
         if (res->verdict != VERDICT_PASS && access(heat, F_OK) == 0)
             printf("%12s heat map: %s\n", "", heat);
         free(heat);

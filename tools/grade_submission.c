@@ -199,7 +199,7 @@ static bool grade_one(const Grading *g, Submission *s)
     free(program);
     for (int k = 0; k < g->render_count; k++) {
         s->verdicts[s->results[k].verdict]++;
-        s->tally[verdict_tally(s->results[k].verdict)]++;
+        s->tally[verdict_info[s->results[k].verdict].tally]++;
     }
     return !stop_requested();
 }
@@ -224,7 +224,7 @@ static void print_tally(const Grading *g, const Submission *s)
     for (int v = 0; v < VERDICT_COUNT; v++)
         if (s->verdicts[v] > 0) {
             fprintf(stderr, "%s%d ", sep, s->verdicts[v]);
-            for (const char *p = verdict_name((Verdict)v); *p != '\0'; p++)
+            for (const char *p = verdict_info[v].name; *p != '\0'; p++)
                 fputc(*p >= 'A' && *p <= 'Z' ? *p - 'A' + 'a' : *p, stderr);
             sep = ", ";
         }
