@@ -77,7 +77,8 @@ static void judge_figures(SceneResult *res, const DiffAnswer *a)
     double percent = f->pixels > 0 ? 100.0 * f->differing / f->pixels : 0;
     res->compared = true;
     res->figures = *f;
-    if (f->max[0] == 0 && f->max[1] == 0 && f->max[2] == 0)
+    res->identical = f->max[0] == 0 && f->max[1] == 0 && f->max[2] == 0;
+    if (res->identical)
         grade_verdict(res, v, "identical to the reference");
     else if (f->differing == 0)
         grade_verdict(res, v, "no pixel differs by more than %.3g/255", f->threshold * 255);
@@ -95,14 +96,13 @@ void compare_image(const Grading *g, const Submission *s, int k, const char *ima
     SceneResult *res = &s->results[k];
     char *log = grade_format("%s/%s.diff.txt", s->work, r->name);
     char *heat = grade_format("%s/%s.heat.png", s->work, r->name);
-    const char *reference = r->reference, *compared = image;
-    char *argv[] = {g->imgdiff, "--machine",       "--threshold",    (char *)g->threshold,
-                    "--allow",  (char *)g->allow,  "--diff",         heat,
-                    "--",       (char *)reference, (char *)compared, NULL};
+    char *argv[] = {g->imgdiff, "--machine",          "--threshold", (char *)g->threshold,
+                    "--allow",  (char *)g->allow,     "--diff",      heat,
+                    "--",       (char *)r->reference, (char *)image, NULL};
     RunSpec spec = {.log = log, .time_limit = 600, .memory_limit = RUN_OWN_MEMORY(g->memory_limit)};
     RunResult run = run_program(argv, &spec);
     DiffAnswer a;
-    read_answer(log, compared, &a);
+    read_answer(log, image, &a);
     char how[200];
     run_describe(&run, spec.time_limit, how, sizeof how);
     if (run.end == RUN_EXITED && run.status <= 1 && a.has_verdict)
@@ -115,13 +115,11 @@ void compare_image(const Grading *g, const Submission *s, int k, const char *ima
         grade_verdict(res, VERDICT_UNREADABLE, "the file cannot be read as an image: %s", a.reason);
     else if (run.end != RUN_INTERRUPTED)
         grade_verdict(res, VERDICT_UNREADABLE, "imgdiff could not compare the file (%s)", how);
-    res->identical =
-        res->compared && a.figures.max[0] == 0 && a.figures.max[1] == 0 && a.figures.max[2] == 0;
     if (res->verdict == VERDICT_UNREADABLE || run.end == RUN_INTERRUPTED || res->identical)
         goto done;
     char *show = grade_format("%s/%s.show.png", s->work, r->name);
     char *heat_show = grade_format("%s/%s.heat-show.png", s->work, r->name);
-    if (thumb_make(compared, show, THUMB_SIDE, THUMB_MEAN, NULL, g->memory_limit))
+    if (thumb_make(image, show, THUMB_SIDE, THUMB_MEAN, NULL, g->memory_limit))
         res->image_show = grade_copy(show);
     if (res->compared &&
         thumb_make(heat, heat_show, THUMB_SIDE, THUMB_PEAKS, NULL, g->memory_limit))

@@ -6,7 +6,6 @@
 #include <libgen.h>
 #include <limits.h>
 #include <signal.h>
-#include <stdarg.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -17,8 +16,6 @@
 #include "grade_compare.h"
 #include "grade_part.h"
 #include "grade_run.h"
-#include "grade_thumb.h"
-#include "imgfile.h"
 #include "stop.h"
 
 /* Tells whether a program's last output says that it ran out of memory, in the words of
@@ -225,7 +222,7 @@ static void print_tally(const Grading *g, const Submission *s)
         if (s->verdicts[v] > 0) {
             fprintf(stderr, "%s%d ", sep, s->verdicts[v]);
             for (const char *p = verdict_info[v].name; *p != '\0'; p++)
-                fputc(*p >= 'A' && *p <= 'Z' ? *p - 'A' + 'a' : *p, stderr);
+                fputc(tolower((unsigned char)*p), stderr);
             sep = ", ";
         }
     fputc('\n', stderr);
@@ -265,14 +262,13 @@ static char *safe_name(const char *name)
     return safe;
 }
 
-/* Adds the submission in the folder path, named name, with its work folder, to g. */
-static void add_submission(Grading *g, const char *name, char *path, const char *work)
+/* Adds the submission in the folder path, named name, with its work folder, to g; takes
+ * path and work. */
+static void add_submission(Grading *g, const char *name, char *path, char *work)
 {
     static const char *const makefiles[] = {"GNUmakefile", "makefile", "Makefile"};
     Submission *s = &g->subs[g->sub_count++];
-    s->name = grade_copy(name);
-    s->path = path;
-    s->work = grade_copy(work);
+    *s = (Submission){.name = grade_copy(name), .path = path, .work = work};
     /* It is a program when it holds a Makefile, as make looks for one. */
     for (size_t k = 0; k < sizeof makefiles / sizeof makefiles[0] && !s->program; k++) {
         char *makefile = grade_format("%s/%s", path, makefiles[k]);
@@ -293,11 +289,9 @@ bool submission_list(Grading *g)
 {
     if (g->self) {
         /* One student's folder: it is the one submission, named as the folder. */
-        char *copy = grade_copy(g->submissions), *work = grade_format("%s/1-self", g->work);
+        char *copy = grade_copy(g->submissions);
         g->subs = grade_alloc(sizeof *g->subs);
-        add_submission(g, basename(copy), grade_copy(g->submissions), work);
-        free(work);
-        free(copy);
+        add_submission(g, basename(copy), copy, grade_format("%s/1-self", g->work));
         return true;
     }
     int count = 0;
@@ -318,9 +312,8 @@ bool submission_list(Grading *g)
             continue;
         }
         char *safe = safe_name(names[k]);
-        char *work = grade_format("%s/%0*d-%s", g->work, digits, g->sub_count + 1, safe);
-        add_submission(g, names[k], path, work);
-        free(work);
+        add_submission(g, names[k], path,
+                       grade_format("%s/%0*d-%s", g->work, digits, g->sub_count + 1, safe));
         free(safe);
     }
     part_free_names(names, count);

@@ -1,10 +1,9 @@
-/* imgdiff.c: compares two images, PNG or PFM, and tells whether they match. */
+/* imgdiff.c: compares two images, PNG, PFM or EXR, and tells whether they match. */
 #include <getopt.h>
 #include <math.h>
 #include <stdbool.h>
 #include <stdio.h>
 #include <stdlib.h>
-#include <string.h>
 #include <sys/stat.h>
 
 #include "image.h"
@@ -21,8 +20,7 @@ typedef struct {
     double allow;     /* the fraction of the pixels that may differ */
     double scale;     /* the difference shown white in the heat map; 0: the largest found */
     const char *diff_path;
-    bool quiet, help;
-    bool machine; /* figures as NAME VALUE lines, for tools/grade */
+    bool quiet, help, machine; /* machine: figures as NAME VALUE lines, for tools/grade */
 } DiffOptions;
 
 /* How two images of the same size differ. */
@@ -73,11 +71,7 @@ static void print_help(FILE *f)
             "                 too (default: the largest difference found)\n"
             "  -q, --quiet    print only the verdict\n"
             "  --machine      print the figures as NAME VALUE lines instead, for programs\n"
-            "                 (tools/grade reads them): threshold T, allow F, size W H,\n"
-            "                 max R G B, mean M, rmse E, psnr P (inf when equal),\n"
-            "                 differing N OF, box X0 Y0 X1 Y1 (when N > 0), heat_scale S\n"
-            "                 (with --diff), verdict PASS or FAIL; images of different\n"
-            "                 sizes give a line sizes WA HA WB HB instead\n"
+            "                 (tools/grade reads them; docs/grading.md lists them)\n"
             "  -h, --help     show this help and exit\n"
             "\n"
             "The report gives the largest difference in each channel (also in steps of\n"
@@ -91,45 +85,32 @@ static void print_help(FILE *f)
             IMGDIFF_THRESHOLD_TEXT, IMGDIFF_ALLOW_TEXT, IMGDIFF_ALLOW * 100);
 }
 
-/* Reads a number, a decimal or a fraction N/D (2/255); false when it is neither. */
-static bool parse_number(const char *text, double *value)
+/* Stores the value of option opt, for --threshold, --allow and --scale a number, a
+ * decimal or a fraction N/D (2/255); false (reported) when it is not a valid one. */
+static bool set_value(DiffOptions *o, const struct option *opt, const char *value)
 {
+    int c = opt->val;
     char *end;
-    double v = strtod(text, &end);
-    if (end == text)
-        return false;
-    if (*end == '/') {
+    double v = strtod(value, &end);
+    if (end != value && *end == '/') {
         const char *denominator = end + 1;
         double d = strtod(denominator, &end);
-        if (end == denominator || d == 0)
-            return false;
-        v /= d;
+        v = end != denominator ? v / d : NAN; /* N/0 is not finite either */
     }
-    if (*end != '\0' || !isfinite(v))
-        return false;
-    *value = v;
-    return true;
-}
-
-/* Stores the value of option --name; false (reported) when it is not a valid one. */
-static bool set_value(DiffOptions *o, const char *name, const char *value)
-{
-    double v = 0;
-    bool number = parse_number(value, &v);
-    if (strcmp(name, "diff") == 0)
+    bool number = end != value && *end == '\0' && isfinite(v);
+    if (c == 'd')
         o->diff_path = value;
-    else if (strcmp(name, "threshold") == 0 && number && v >= 0)
+    else if (c == 't' && number && v >= 0)
         o->threshold = v;
-    else if (strcmp(name, "allow") == 0 && number && v >= 0 && v <= 1)
+    else if (c == 'a' && number && v >= 0 && v <= 1)
         o->allow = v;
-    else if (strcmp(name, "scale") == 0 && number && v > 0)
+    else if (c == 's' && number && v > 0)
         o->scale = v;
     else {
-        const char *wanted = strcmp(name, "allow") == 0 ? "a fraction from 0 to 1"
-                             : strcmp(name, "scale") == 0
-                                 ? "a number above 0, or a fraction such as 8/255"
-                                 : "a number from 0 up, or a fraction such as 2/255";
-        fprintf(stderr, "imgdiff: --%s takes %s, got '%s'\n", name, wanted, value);
+        const char *wanted = c == 'a'   ? "a fraction from 0 to 1"
+                             : c == 's' ? "a number above 0, or a fraction such as 8/255"
+                                        : "a number from 0 up, or a fraction such as 2/255";
+        fprintf(stderr, "imgdiff: --%s takes %s, got '%s'\n", opt->name, wanted, value);
         return false;
     }
     return true;
@@ -162,7 +143,7 @@ static bool parse_args(int argc, char **argv, DiffOptions *o)
             fprintf(stderr, "imgdiff: unknown option '%s' (imgdiff --help lists them)\n",
                     argv[optind - 1]);
             return false;
-        } else if (!set_value(o, options[index].name, optarg)) {
+        } else if (!set_value(o, &options[index], optarg)) {
             return false;
         }
     }
@@ -193,16 +174,12 @@ static bool check_diff_path(const DiffOptions *o)
                     path, o->paths[k]);
             return false;
         }
-    if (image_format_for_path(path) == IMAGE_FORMAT_UNKNOWN) {
-        fprintf(stderr, "imgdiff: cannot write '%s': unknown image format (use .png or .pfm)\n",
-                path);
-        return false;
-    }
-    if (!outfile_check(path, &err)) {
-        fprintf(stderr, "imgdiff: cannot write '%s': %s\n", path, err.text);
-        return false;
-    }
-    return true;
+    if (image_format_for_path(path) == IMAGE_FORMAT_UNKNOWN)
+        error_set(&err, "unknown image format (use .png or .pfm)");
+    else if (outfile_check(path, &err))
+        return true;
+    fprintf(stderr, "imgdiff: cannot write '%s': %s\n", path, err.text);
+    return false;
 }
 
 /* Measures how a and b, of the same size, differ, counting the pixels beyond threshold;
@@ -252,9 +229,9 @@ static Color heat_color(double e, double top)
     return color_add(color_scale(ramp[k], 1 - f), color_scale(ramp[k + 1], f));
 }
 
-/* Colours map, whose pixels hold their largest difference as red, into the heat map and
- * writes it to path, linear so that the ramp's colours are stored as chosen; false
- * (reported) when it cannot. */
+/* Colours map, whose pixels hold their largest difference as red, into the heat map,
+ * writes it to path, linear so that the ramp's colours are stored as chosen, and frees
+ * it; false (reported) when it cannot be written. */
 static bool write_heat_map(Image *map, double top, const char *path)
 {
     for (int y = 0; y < map->height; y++)
@@ -264,6 +241,7 @@ static bool write_heat_map(Image *map, double top, const char *path)
     bool ok = image_write(map, path, PNG_ENCODING_LINEAR, &err);
     if (!ok)
         fprintf(stderr, "imgdiff: cannot write '%s': %s\n", path, err.text);
+    image_free(map);
     return ok;
 }
 
@@ -305,8 +283,6 @@ static void print_figures(const Diff *d, int width, int height, double top, cons
 /* Prints the verdict line; returns the exit status it means. */
 static int print_verdict(const Diff *d, long pixels, const DiffOptions *o)
 {
-    double percent = 100.0 * d->differing / pixels;
-    bool equal = d->max[0] == 0 && d->max[1] == 0 && d->max[2] == 0;
     /* A NaN or infinite pixel is a bug in the renderer, whatever the tolerances. */
     bool pass = (double)d->differing <= o->allow * pixels && d->nonfinite == 0;
     if (o->machine)
@@ -314,7 +290,7 @@ static int print_verdict(const Diff *d, long pixels, const DiffOptions *o)
     else if (d->nonfinite > 0)
         printf("FAIL: %ld pixel%s not finite (NaN or infinite)\n", d->nonfinite,
                d->nonfinite == 1 ? " is" : "s are");
-    else if (equal)
+    else if (d->max[0] == 0 && d->max[1] == 0 && d->max[2] == 0)
         printf("PASS: the images are identical\n");
     else if (d->differing == 0)
         printf("PASS: no pixel differs by more than %.4g (%.1f/255)\n", o->threshold,
@@ -322,8 +298,8 @@ static int print_verdict(const Diff *d, long pixels, const DiffOptions *o)
     else
         printf("%s: %.4g%% of the pixels differ by more than %.4g (%.1f/255), %s the %.4g%% "
                "allowed\n",
-               pass ? "PASS" : "FAIL", percent, o->threshold, o->threshold * 255,
-               pass ? "within" : "more than", o->allow * 100);
+               pass ? "PASS" : "FAIL", 100.0 * d->differing / pixels, o->threshold,
+               o->threshold * 255, pass ? "within" : "more than", o->allow * 100);
     return pass ? EXIT_MATCH : EXIT_DIFFER;
 }
 
@@ -347,12 +323,34 @@ static bool check_headers(const DiffOptions *o, ImgFileKind kind[2])
     return false;
 }
 
-/* Compares a and b, reports, writes the heat map if asked; returns the exit status. */
-static int compare(const Image *a, const Image *b, const DiffOptions *o)
+/* Encodes the linear image img (a PFM's, an EXR's) as raytra encodes its PNGs: each value
+ * clamped to [0, 1], given the sRGB curve and rounded to 8 bits, so that it compares
+ * with a PNG's stored values. A non-finite value stays as it is, to be reported. */
+static void encode_like_png(Image *img)
 {
+    for (long k = 0; k < 3L * img->width * img->height; k++)
+        if (isfinite(img->pixels[k]))
+            img->pixels[k] = (float)(image_encode_8bit(img->pixels[k], PNG_ENCODING_SRGB) / 255.0);
+}
+
+/* Compares the images img, of kinds kind, reports, writes the heat map if asked; returns
+ * the exit status. */
+static int compare(Image img[2], const ImgFileKind kind[2], const DiffOptions *o)
+{
+    const Image *a = &img[0], *b = &img[1];
     if (a->width != b->width || a->height != b->height) {
         fprintf(stderr, "imgdiff: '%s' changed while it was read\n", o->paths[1]);
         return EXIT_TROUBLE;
+    }
+    /* A PNG against linear values (a PFM's, an EXR's): the linear image is encoded as a
+     * PNG would be. */
+    int linear = kind[0] == IMGFILE_PNG; /* the index of the linear one, if one is */
+    if ((kind[0] == IMGFILE_PNG) != (kind[1] == IMGFILE_PNG)) {
+        encode_like_png(&img[linear]);
+        if (!o->quiet && !o->machine)
+            printf("note: %s holds linear values: compared as raytra would write them to "
+                   "a PNG (clamped to [0, 1], sRGB, 8 bits)\n",
+                   o->paths[linear]);
     }
     Image map = {0};
     if (o->diff_path != NULL && !image_init(&map, a->width, a->height)) {
@@ -364,9 +362,7 @@ static int compare(const Image *a, const Image *b, const DiffOptions *o)
         print_figures(&d, a->width, a->height, 0, o);
     /* Equal images get an all-black map; the scale then only needs to be positive. */
     double top = o->scale > 0 ? o->scale : d.largest_finite > 0 ? d.largest_finite : 1.0 / 255;
-    bool written = o->diff_path == NULL || write_heat_map(&map, top, o->diff_path);
-    image_free(&map);
-    if (!written)
+    if (o->diff_path != NULL && !write_heat_map(&map, top, o->diff_path))
         return EXIT_TROUBLE;
     if (o->diff_path != NULL && !o->quiet && !o->machine)
         printf("heat map: black = 0, white = %.4g (%.1f/255), written to %s\n", top, top * 255,
@@ -374,16 +370,6 @@ static int compare(const Image *a, const Image *b, const DiffOptions *o)
     if (o->machine)
         print_figures(&d, a->width, a->height, o->diff_path != NULL ? top : 0, o);
     return print_verdict(&d, (long)a->width * a->height, o);
-}
-
-/* Encodes the linear image img (a PFM's, an EXR's) as raytra encodes its PNGs: each value
- * clamped to [0, 1], given the sRGB curve and rounded to 8 bits, so that it compares
- * with a PNG's stored values. A non-finite value stays as it is, to be reported. */
-static void encode_like_png(Image *img)
-{
-    for (long k = 0; k < 3L * img->width * img->height; k++)
-        if (isfinite(img->pixels[k]))
-            img->pixels[k] = (float)(image_encode_8bit(img->pixels[k], PNG_ENCODING_SRGB) / 255.0);
 }
 
 /* Runs imgdiff: exit status 0 when the images match, 1 when not, 2 on trouble. */
@@ -401,23 +387,12 @@ int main(int argc, char **argv)
         return EXIT_TROUBLE;
     Image img[2] = {{0}};
     Error err;
-    int status = EXIT_TROUBLE, read = 0;
+    int read = 0;
     while (read < 2 && image_read(&img[read], o.paths[read], &err))
         read++;
     if (read < 2)
         fprintf(stderr, "imgdiff: cannot read '%s': %s\n", o.paths[read], err.text);
-    /* A PNG against linear values (a PFM's, an EXR's): the linear image is encoded as a
-     * PNG would be. */
-    int linear = kind[0] == IMGFILE_PNG; /* the index of the linear one, if one is */
-    if (read == 2 && (kind[0] == IMGFILE_PNG) != (kind[1] == IMGFILE_PNG)) {
-        encode_like_png(&img[linear]);
-        if (!o.quiet && !o.machine)
-            printf("note: %s holds linear values: compared as raytra would write them to "
-                   "a PNG (clamped to [0, 1], sRGB, 8 bits)\n",
-                   o.paths[linear]);
-    }
-    if (read == 2)
-        status = compare(&img[0], &img[1], &o);
+    int status = read == 2 ? compare(img, kind, &o) : EXIT_TROUBLE;
     for (int k = 0; k < read; k++)
         image_free(&img[k]);
     return status;
