@@ -309,24 +309,6 @@ static bool check_imgdiff(const Grading *g)
     return ok;
 }
 
-/* Writes report.html and grades.csv into g->out; false (reported) when it cannot. */
-static bool write_results(const Grading *g)
-{
-    char *csv = grade_format("%s/grades.csv", g->out);
-    char *html = grade_format("%s/report.html", g->out);
-    Error err;
-    bool ok = report_write_csv(g, csv, &err);
-    if (!ok)
-        fprintf(stderr, "grade: cannot write %s: %s\n", csv, err.text);
-    else if (!(ok = report_write_html(g, html, &err)))
-        fprintf(stderr, "grade: cannot write %s: %s\n", html, err.text);
-    else if (!g->quiet)
-        fprintf(stderr, "grade: wrote %s and %s\n", html, csv);
-    free(csv);
-    free(html);
-    return ok;
-}
-
 /* Does all the grading but reading the command line, for part `part`; returns the exit
  * status. */
 static int grade(Grading *g, const char *part, const char *argv0)
@@ -360,7 +342,7 @@ static int grade(Grading *g, const char *part, const char *argv0)
                 g->render_count == 1 ? "" : "s", g->sub_count, g->sub_count == 1 ? "" : "s");
     if (!g->quiet && g->illustrations != NULL)
         fprintf(stderr, "grade: not graded (illustrations): %s\n", g->illustrations);
-    if (submission_grade_all(g) && write_results(g))
+    if (submission_grade_all(g) && report_write(g))
         status = g->self ? report_print_self(g) : EXIT_REPORTED;
 done:
     if (stop_requested()) {

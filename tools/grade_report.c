@@ -42,29 +42,6 @@ const VerdictInfo verdict_info[VERDICT_COUNT] = {
 /* The summary's class (and colour) for each tally. */
 static const char *const tally_class[TALLY_COUNT] = {"pass", "fail", "missing", "error"};
 
-/* Writes the file at path through a temporary renamed onto it, so that it appears only
- * complete; false (err) on any failure. */
-static bool write_whole(const char *path, void (*write)(FILE *, const Grading *), const Grading *g,
-                        Error *err)
-{
-    OutFile out;
-    if (!outfile_open(&out, path, err))
-        return false;
-    write(out.file, g);
-    if (ferror(out.file)) {
-        error_set(err, "write error");
-        outfile_abort(&out);
-        return false;
-    }
-    return outfile_commit(&out, err);
-}
-
-/* Writes grades.csv to path; false (err) when it cannot. */
-bool report_write_csv(const Grading *g, const char *path, Error *err)
-{
-    return write_whole(path, csv_write, g, err);
-}
-
 /* Writes text with the characters HTML gives a meaning made plain. */
 static void html_text(FILE *f, const char *text)
 {
@@ -350,10 +327,43 @@ static void write_html(FILE *f, const Grading *g)
     html_put(f, page_end, g->work);
 }
 
-/* Writes report.html to path; false (err) when it cannot. */
-bool report_write_html(const Grading *g, const char *path, Error *err)
+/* Writes g->out/name with write, through a temporary renamed onto it so that it appears
+ * only complete; returns its path, or NULL (reported) on any failure. */
+static char *write_whole(const Grading *g, const char *name, void (*write)(FILE *, const Grading *))
 {
-    return write_whole(path, write_html, g, err);
+    char *path = grade_format("%s/%s", g->out, name);
+    OutFile out;
+    Error err;
+    bool ok = outfile_open(&out, path, &err);
+    if (ok) {
+        write(out.file, g);
+        if (ferror(out.file)) {
+            error_set(&err, "write error");
+            outfile_abort(&out);
+            ok = false;
+        } else {
+            ok = outfile_commit(&out, &err);
+        }
+    }
+    if (!ok) {
+        fprintf(stderr, "grade: cannot write %s: %s\n", path, err.text);
+        free(path);
+        path = NULL;
+    }
+    return path;
+}
+
+/* Writes grades.csv and report.html into g->out; false (reported) when it cannot. */
+bool report_write(const Grading *g)
+{
+    char *csv = write_whole(g, "grades.csv", csv_write);
+    char *html = csv != NULL ? write_whole(g, "report.html", write_html) : NULL;
+    if (html != NULL && !g->quiet)
+        fprintf(stderr, "grade: wrote %s and %s\n", html, csv);
+    bool ok = html != NULL;
+    free(csv);
+    free(html);
+    return ok;
 }
 
 /* Prints, for a student checking their own work, each scene's verdict and reason, and the

@@ -4,11 +4,9 @@
 
 #include <stdbool.h>
 
-#include "diag.h"
 #include "grade.h"
 
-bool report_write_csv(const Grading *g, const char *path, Error *err);
-bool report_write_html(const Grading *g, const char *path, Error *err);
+bool report_write(const Grading *g);
 int report_print_self(const Grading *g);
 
 #endif
