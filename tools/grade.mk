@@ -31,9 +31,9 @@ report-figure: $(GRADE) $(IMGDIFF)
 	    --figure $(TOP)/docs/figures/grading-report.png
 
 # The report's style sheet, kept as CSS and compiled in as a C string, a line a line of the
-# file: the report stays one self-contained page.
-$(BUILD)/grade_style.h: grade_report.css
+# file but the first, which says what the file is: the report stays one self-contained page.
+$(BUILD)/grade_style.h: grade_report.css grade.mk
 	@mkdir -p $(BUILD)
-	sed 's/[\\"]/\\&/g; s/.*/"&\\n"/' $< >$@
+	sed '1d; s/[\\"]/\\&/g; s/.*/"&\\n"/' $< >$@
 $(BUILD)/grade_report.o: $(BUILD)/grade_style.h
 $(BUILD)/grade_report.o: INCLUDES += -I$(BUILD)

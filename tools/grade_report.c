@@ -56,8 +56,9 @@ static void html_text(FILE *f, const char *text)
         }
 }
 
-/* The page's style sheet: grade_report.css, made a C string by the build (grade.mk);
- * write_style adds a rule a reference picture. */
+/* The page's style sheet: grade_report.css, made a C string by the build (grade.mk), which
+ * must stay under the 4095 bytes ISO C promises a string; write_style adds a rule a
+ * reference picture. */
 static const char style[] =
 #include "grade_style.h"
     ;
