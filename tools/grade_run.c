@@ -25,21 +25,16 @@
 #define TAIL_BYTES 2048
 #define TAIL_LINES 20
 
-/* Asks to stop when the terminal goes away, as on SIGINT: a child left hanging would
- * otherwise run on with no grader to end it. */
-static void on_hangup(int sig)
-{
-    stop_request(sig);
-}
-
 /* Makes SIGINT, SIGTERM and SIGHUP requests to stop, which the wait loop polls to end the
  * child's whole group; holds SIGCHLD back for the wait loop to wait for; and makes the
  * grader the parent of any process a child leaves behind, so that it can end those too. */
 void run_init(void)
 {
     stop_install();
+    /* The terminal going away asks to stop too (stop_request is safe in a handler): a
+     * child left hanging would otherwise run on with no grader to end it. */
     struct sigaction sa = {0};
-    sa.sa_handler = on_hangup;
+    sa.sa_handler = stop_request;
     sigemptyset(&sa.sa_mask);
     sigaction(SIGHUP, &sa, NULL);
     /* With its output piped into head, the grader must not die before ending a child. */
