@@ -15,11 +15,10 @@ enum { EXIT_MATCH = 0, EXIT_DIFFER = 1, EXIT_TROUBLE = 2 };
 
 /* What the command line asks for. */
 typedef struct {
-    const char *paths[2];
+    const char *paths[2], *diff_path; /* the images; --diff's heat map, or NULL */
     double threshold; /* a pixel differs when its largest channel difference exceeds this */
     double allow;     /* the fraction of the pixels that may differ */
     double scale;     /* the difference shown white in the heat map; 0: the largest found */
-    const char *diff_path;
     bool quiet, help, machine; /* machine: figures as NAME VALUE lines, for tools/grade */
 } DiffOptions;
 
@@ -182,30 +181,35 @@ static bool check_diff_path(const DiffOptions *o)
     return false;
 }
 
-/* Measures how a and b, of the same size, differ, counting the pixels beyond threshold;
- * gives each pixel of map, when there is one, its largest channel difference as red. */
-static Diff diff_images(const Image *a, const Image *b, double threshold, Image *map)
+/* Writes the differences of the channels of pixel k of a and b into e; returns the
+ * largest. A NaN or an infinity in either is an infinite difference, even against
+ * another: such a pixel is broken, never equal. */
+static double pixel_diff(const Image *a, const Image *b, long k, double e[3])
+{
+    double largest = 0;
+    for (int c = 0; c < 3; c++) {
+        float p = a->pixels[3 * k + c], q = b->pixels[3 * k + c];
+        e[c] = isfinite(p) && isfinite(q) ? fabs((double)p - (double)q) : INFINITY;
+        largest = fmax(largest, e[c]);
+    }
+    return largest;
+}
+
+/* Measures how a and b, of the same size, differ, counting the pixels beyond threshold. */
+static Diff diff_images(const Image *a, const Image *b, double threshold)
 {
     Diff d = {.x0 = a->width, .y0 = a->height, .x1 = -1, .y1 = -1};
     for (int y = 0; y < a->height; y++)
         for (int x = 0; x < a->width; x++) {
-            long k = (long)y * a->width + x;
-            double largest = 0;
+            double e[3], largest = pixel_diff(a, b, (long)y * a->width + x, e);
             for (int c = 0; c < 3; c++) {
-                float p = a->pixels[3 * k + c], q = b->pixels[3 * k + c];
-                /* A NaN or an infinity in either is an infinite difference, even against
-                 * another: such a pixel is broken, never equal. */
-                double e = isfinite(p) && isfinite(q) ? fabs((double)p - (double)q) : INFINITY;
-                d.max[c] = fmax(d.max[c], e);
-                d.sum += e;
-                d.sum_squares += e * e;
-                largest = fmax(largest, e);
-                if (isfinite(e))
-                    d.largest_finite = fmax(d.largest_finite, e);
+                d.max[c] = fmax(d.max[c], e[c]);
+                d.sum += e[c];
+                d.sum_squares += e[c] * e[c];
+                if (isfinite(e[c]))
+                    d.largest_finite = fmax(d.largest_finite, e[c]);
             }
             d.nonfinite += isinf(largest);
-            if (map->pixels != NULL)
-                map->pixels[3 * k] = (float)largest;
             if (largest > threshold) {
                 d.differing++;
                 d.x0 = x < d.x0 ? x : d.x0;
@@ -229,19 +233,24 @@ static Color heat_color(double e, double top)
     return color_add(color_scale(ramp[k], 1 - f), color_scale(ramp[k + 1], f));
 }
 
-/* Colours map, whose pixels hold their largest difference as red, into the heat map,
- * writes it to path, linear so that the ramp's colours are stored as chosen, and frees
- * it; false (reported) when it cannot be written. */
-static bool write_heat_map(Image *map, double top, const char *path)
+/* Writes the heat map of a against b to path, linear so that the ramp's colours are
+ * stored as chosen; false (reported) when it cannot. */
+static bool write_heat_map(const Image *a, const Image *b, double top, const char *path)
 {
-    for (int y = 0; y < map->height; y++)
-        for (int x = 0; x < map->width; x++)
-            image_set(map, x, y, heat_color(image_get(map, x, y).r, top));
+    Image map;
+    double e[3];
+    if (!image_init(&map, a->width, a->height)) {
+        fprintf(stderr, "imgdiff: not enough memory for the heat map\n");
+        return false;
+    }
+    for (int y = 0; y < a->height; y++)
+        for (int x = 0; x < a->width; x++)
+            image_set(&map, x, y, heat_color(pixel_diff(a, b, (long)y * a->width + x, e), top));
     Error err;
-    bool ok = image_write(map, path, PNG_ENCODING_LINEAR, &err);
+    bool ok = image_write(&map, path, PNG_ENCODING_LINEAR, &err);
     if (!ok)
         fprintf(stderr, "imgdiff: cannot write '%s': %s\n", path, err.text);
-    image_free(map);
+    image_free(&map);
     return ok;
 }
 
@@ -323,16 +332,6 @@ static bool check_headers(const DiffOptions *o, ImgFileKind kind[2])
     return false;
 }
 
-/* Encodes the linear image img (a PFM's, an EXR's) as raytra encodes its PNGs: each value
- * clamped to [0, 1], given the sRGB curve and rounded to 8 bits, so that it compares
- * with a PNG's stored values. A non-finite value stays as it is, to be reported. */
-static void encode_like_png(Image *img)
-{
-    for (long k = 0; k < 3L * img->width * img->height; k++)
-        if (isfinite(img->pixels[k]))
-            img->pixels[k] = (float)(image_encode_8bit(img->pixels[k], PNG_ENCODING_SRGB) / 255.0);
-}
-
 /* Compares the images img, of kinds kind, reports, writes the heat map if asked; returns
  * the exit status. */
 static int compare(Image img[2], const ImgFileKind kind[2], const DiffOptions *o)
@@ -342,27 +341,26 @@ static int compare(Image img[2], const ImgFileKind kind[2], const DiffOptions *o
         fprintf(stderr, "imgdiff: '%s' changed while it was read\n", o->paths[1]);
         return EXIT_TROUBLE;
     }
-    /* A PNG against linear values (a PFM's, an EXR's): the linear image is encoded as a
-     * PNG would be. */
-    int linear = kind[0] == IMGFILE_PNG; /* the index of the linear one, if one is */
+    /* A PNG against linear values (a PFM's, an EXR's): each linear value is encoded as
+     * raytra encodes its PNGs, clamped to [0, 1], given the sRGB curve and rounded to 8
+     * bits. A non-finite value stays as it is, to be reported. */
+    Image *linear = &img[kind[0] == IMGFILE_PNG]; /* the linear one, if one is */
     if ((kind[0] == IMGFILE_PNG) != (kind[1] == IMGFILE_PNG)) {
-        encode_like_png(&img[linear]);
+        for (long k = 0; k < 3L * linear->width * linear->height; k++)
+            if (isfinite(linear->pixels[k]))
+                linear->pixels[k] =
+                    (float)(image_encode_8bit(linear->pixels[k], PNG_ENCODING_SRGB) / 255.0);
         if (!o->quiet && !o->machine)
             printf("note: %s holds linear values: compared as raytra would write them to "
                    "a PNG (clamped to [0, 1], sRGB, 8 bits)\n",
-                   o->paths[linear]);
+                   o->paths[linear - img]);
     }
-    Image map = {0};
-    if (o->diff_path != NULL && !image_init(&map, a->width, a->height)) {
-        fprintf(stderr, "imgdiff: not enough memory for the heat map\n");
-        return EXIT_TROUBLE;
-    }
-    Diff d = diff_images(a, b, o->threshold, &map);
+    Diff d = diff_images(a, b, o->threshold);
     if (!o->quiet && !o->machine)
         print_figures(&d, a->width, a->height, 0, o);
     /* Equal images get an all-black map; the scale then only needs to be positive. */
     double top = o->scale > 0 ? o->scale : d.largest_finite > 0 ? d.largest_finite : 1.0 / 255;
-    if (o->diff_path != NULL && !write_heat_map(&map, top, o->diff_path))
+    if (o->diff_path != NULL && !write_heat_map(a, b, top, o->diff_path))
         return EXIT_TROUBLE;
     if (o->diff_path != NULL && !o->quiet && !o->machine)
         printf("heat map: black = 0, white = %.4g (%.1f/255), written to %s\n", top, top * 255,
