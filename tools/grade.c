@@ -122,7 +122,8 @@ static bool parse_amount(const char *text, bool units, double *value)
 {
     char *end;
     double v = strtod(text, &end);
-    const char *all = "KkMmGg", *unit = units && *end != '\0' ? strchr(all, *end) : NULL;
+    const char *all = "KkMmGg";
+    const char *unit = units && end != text && *end != '\0' ? strchr(all, *end) : NULL;
     double scale = unit != NULL ? pow(1024.0, (double)((unit - all) / 2 + 1)) : 1;
     end += unit != NULL;
     if (end == text || *end != '\0' || !isfinite(v) || v < 0)
