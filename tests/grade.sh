@@ -405,6 +405,7 @@ refuse "usage: grade [options] PART SUBMISSIONS" 1.1
 refuse "grade: no part '9.9' in" 9.9 small
 refuse "grade: no folder nowhere" 1.1 nowhere
 refuse "grade: --memory-limit takes a size such as 512M or 2G, or 0, got '2'" --memory-limit 2 1.1 small
+refuse "grade: --memory-limit takes a size such as 512M or 2G, or 0, got 'K'" --memory-limit K 1.1 small
 refuse "grade: --time-limit needs a value" 1.1 small --time-limit
 refuse "grade: unknown option '--frobnicate'" --frobnicate 1.1 small
 refuse "grade: imgdiff: --allow takes a fraction from 0 to 1, got '2'" --allow 2 --out o 1.1 small

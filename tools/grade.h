@@ -26,35 +26,24 @@ typedef enum {
 /* The summary's columns, into which the verdicts fall. */
 typedef enum { TALLY_PASS, TALLY_FAIL, TALLY_MISSING, TALLY_ERROR, TALLY_COUNT } Tally;
 
-/* Returns the verdict's name as the report and the CSV spell it: "WRONG SIZE". */
-static inline const char *verdict_name(Verdict v)
-{
-    static const char *const names[VERDICT_COUNT] = {
-        "PASS",  "FAIL",    "WRONG SIZE", "LINK",          "UNREADABLE",   "MISSING",
-        "ERROR", "CRASHED", "TIMEOUT",    "OUT OF MEMORY", "BUILD FAILED",
-    };
-    return names[v];
-}
+/* What the report and the CSV call a verdict ("WRONG SIZE"), the summary column it counts
+ * in (a wrong, linked or unreadable image is a failed one; a program that made none, an
+ * error), and what it means, for the report's legend. */
+typedef struct {
+    const char *name;
+    Tally tally;
+    const char *meaning;
+} VerdictInfo;
 
-/* Returns the summary column the verdict counts in: a wrong, linked or unreadable image
- * is a failed image; a program that did not produce one is an error. */
-static inline Tally verdict_tally(Verdict v)
-{
-    if (v == VERDICT_PASS)
-        return TALLY_PASS;
-    if (v <= VERDICT_UNREADABLE)
-        return TALLY_FAIL;
-    return v == VERDICT_MISSING ? TALLY_MISSING : TALLY_ERROR;
-}
+extern const VerdictInfo verdict_info[VERDICT_COUNT];
 
 /* imgdiff's figures for an image against its reference (imgdiff --machine). */
 typedef struct {
     double threshold, allow; /* the tolerances imgdiff used */
-    int width, height;
-    double max[3];     /* the largest difference in R, G and B, from 0 to 1 */
-    double mean, rmse; /* over every channel of every pixel */
-    double psnr;       /* in dB; infinite for equal images */
-    long differing;    /* pixels with a channel difference above the threshold */
+    double max[3];           /* the largest difference in R, G and B, from 0 to 1 */
+    double mean, rmse;       /* over every channel of every pixel */
+    double psnr;             /* in dB; infinite for equal images */
+    long differing;          /* pixels with a channel difference above the threshold */
     long pixels;
     bool has_box;
     int box[4];        /* x0, y0, x1, y1 around the differing pixels, y from the top */
@@ -118,6 +107,8 @@ typedef struct {
     double time_limit;       /* seconds for each run of a student's program */
     double build_time_limit; /* seconds for make */
     long long memory_limit;  /* bytes of address space; 0: none */
+    bool quiet;              /* no progress lines */
+    bool self;               /* submissions is one student's folder: a check before handing in */
     char started[32];        /* when grading began, for the report */
 } Grading;
 
@@ -125,5 +116,10 @@ void *grade_alloc(size_t size);
 char *grade_format(const char *fmt, ...) DIAG_PRINTF(1, 2);
 char *grade_copy(const char *text);
 void grade_size_text(long long bytes, char *text, size_t size);
+bool grade_is_folder(const char *path);
+bool grade_is_file(const char *path);
+bool grade_make_folder(const char *path, bool anew);
+void grade_print_first_line(const char *prefix, const char *path);
+void grade_verdict(SceneResult *res, Verdict v, const char *fmt, ...) DIAG_PRINTF(3, 4);
 
 #endif

@@ -2,8 +2,8 @@
 # reference images (docs/grading.md). Included by tools/Makefile after common/build.mk.
 
 GRADE         := $(BUILD)/grade
-GRADE_OBJECTS := $(addprefix $(BUILD)/,grade.o grade_run.o grade_submission.o grade_thumb.o \
-                   grade_report.o imgfile.o)
+GRADE_OBJECTS := $(addprefix $(BUILD)/,grade.o grade_part.o grade_submission.o grade_compare.o \
+                   grade_run.o grade_thumb.o grade_report.o grade_csv.o imgfile.o)
 # The test's model of a correct submission runs part 1.1's program, built without the
 # sanitizers: their shadow memory does not fit under the grader's memory limit.
 GRADE_PART    := $(TOP)/milestones/1.1-spheres-red
@@ -29,3 +29,11 @@ report-figure: $(GRADE) $(IMGDIFF)
 	@$(SUBMAKE) -C $(GRADE_PART) SANITIZE=0
 	@sh $(TOP)/tests/grade-report.sh $(GRADE) $(GRADE_PART)/raytra \
 	    --figure $(TOP)/docs/figures/grading-report.png
+
+# The report's style sheet, kept as CSS and compiled in as a C string, a line a line of the
+# file but the first, which says what the file is: the report stays one self-contained page.
+$(BUILD)/grade_style.h: grade_report.css grade.mk
+	@mkdir -p $(BUILD)
+	sed '1d; s/[\\"]/\\&/g; s/.*/"&\\n"/' $< >$@
+$(BUILD)/grade_report.o: $(BUILD)/grade_style.h
+$(BUILD)/grade_report.o: INCLUDES += -I$(BUILD)

@@ -7,125 +7,40 @@
 #include <stdlib.h>
 #include <string.h>
 #include <sys/stat.h>
+#include <unistd.h>
 
-#include "imgfile.h"
+#include "grade_csv.h"
+#include "grade_thumb.h"
 #include "outfile.h"
-
-/* The largest picture embedded: thumbnails are far smaller; a larger file is a mistake. */
-#define EMBED_MAX_BYTES (8L << 20)
 
 /* A thumbnail this narrow or narrower is shown enlarged with sharp pixels. */
 #define PIXELATED_WIDTH 200
 
-/* What each verdict means, for the report's legend; in the order of Verdict. */
-static const char *const meanings[VERDICT_COUNT] = {
-    "the image matches the reference within the tolerances",
-    "the image differs from the reference by more than the tolerances allow",
-    "the image has another width or height than the reference",
-    "the file is a symbolic link, or a hard link to the reference: not an image handed in",
-    "the file is not a PNG, PFM or OpenEXR image that imgdiff can read, or not a regular file",
-    "there is no image: none in the folder, or the program ended normally without writing it",
-    "the program ended with a failure exit status and wrote no image",
-    "the program was killed by a signal: a segmentation fault, an abort, a file too large",
-    "the program did not finish within the time limit; it was killed, with all it started",
-    "the program failed saying that it ran out of memory, or was killed as the system's "
-    "out-of-memory killer kills",
-    "make failed, ran too long or made no raytra: no scene could be rendered",
+/* Each verdict's name, column and meaning; in the order of Verdict. */
+const VerdictInfo verdict_info[VERDICT_COUNT] = {
+    {"PASS", TALLY_PASS, "the image matches the reference within the tolerances"},
+    {"FAIL", TALLY_FAIL, "the image differs from the reference by more than the tolerances allow"},
+    {"WRONG SIZE", TALLY_FAIL, "the image has another width or height than the reference"},
+    {"LINK", TALLY_FAIL,
+     "the file is a symbolic link, or a hard link to the reference: not an image handed in"},
+    {"UNREADABLE", TALLY_FAIL,
+     "the file is not a PNG, PFM or OpenEXR image that imgdiff can read, or not a regular file"},
+    {"MISSING", TALLY_MISSING,
+     "there is no image: none in the folder, or the program ended normally without writing it"},
+    {"ERROR", TALLY_ERROR, "the program ended with a failure exit status and wrote no image"},
+    {"CRASHED", TALLY_ERROR,
+     "the program was killed by a signal: a segmentation fault, an abort, a file too large"},
+    {"TIMEOUT", TALLY_ERROR,
+     "the program did not finish within the time limit; it was killed, with all it started"},
+    {"OUT OF MEMORY", TALLY_ERROR,
+     "the program failed saying that it ran out of memory, or was killed as the system's "
+     "out-of-memory killer kills"},
+    {"BUILD FAILED", TALLY_ERROR,
+     "make failed, ran too long or made no raytra: no scene could be rendered"},
 };
 
 /* The summary's class (and colour) for each tally. */
 static const char *const tally_class[TALLY_COUNT] = {"pass", "fail", "missing", "error"};
-
-/* Writes text as one CSV field followed by end (',' or '\n'): quoted, its quotes doubled
- * (RFC 4180), when it holds a comma, a quote or a line break, or starts or ends with a
- * space. A text field (not a figure) that a spreadsheet would take for a formula, starting
- * with =, +, -, @, a tab or a carriage return, gets a quote ' first, and quotes around. */
-static void csv_field(FILE *f, const char *text, bool is_text, char end)
-{
-    size_t len = strlen(text);
-    bool formula = is_text && len > 0 && strchr("=+-@\t\r", text[0]) != NULL;
-    bool quote = formula || strpbrk(text, ",\"\r\n") != NULL ||
-                 (len > 0 && (text[0] == ' ' || text[len - 1] == ' '));
-    if (quote) {
-        fputc('"', f);
-        if (formula)
-            fputc('\'', f);
-        for (const char *p = text; *p != '\0'; p++) {
-            if (*p == '"')
-                fputc('"', f);
-            fputc(*p, f);
-        }
-        fputc('"', f);
-    } else {
-        fputs(text, f);
-    }
-    fputc(end, f);
-}
-
-/* Writes the CSV: a header line, then one line a submission and scene. */
-static void write_csv(FILE *f, const Grading *g)
-{
-    static const char *const columns[] = {
-        "submission",         "scene",         "verdict", "max_diff_r", "max_diff_g",
-        "max_diff_b",         "mean_abs_diff", "rmse",    "psnr_db",    "differing_pixels",
-        "differing_fraction", "bbox",          "message", "seconds",
-    };
-    enum { COLUMNS = sizeof columns / sizeof columns[0] };
-    for (int c = 0; c < COLUMNS; c++)
-        csv_field(f, columns[c], true, c + 1 < COLUMNS ? ',' : '\n');
-    for (int i = 0; i < g->sub_count; i++)
-        for (int k = 0; k < g->render_count; k++) {
-            const Submission *s = &g->subs[i];
-            const SceneResult *res = &s->results[k];
-            const Figures *fig = &res->figures;
-            char v[COLUMNS][64] = {{0}};
-            if (res->compared) {
-                for (int c = 0; c < 3; c++)
-                    snprintf(v[3 + c], sizeof v[0], "%.6g", fig->max[c]);
-                snprintf(v[6], sizeof v[0], "%.6g", fig->mean);
-                snprintf(v[7], sizeof v[0], "%.6g", fig->rmse);
-                snprintf(v[8], sizeof v[0], isinf(fig->psnr) ? "inf" : "%.2f", fig->psnr);
-                snprintf(v[9], sizeof v[0], "%ld", fig->differing);
-                snprintf(v[10], sizeof v[0], "%.6g",
-                         fig->pixels > 0 ? (double)fig->differing / fig->pixels : 0.0);
-                if (fig->has_box)
-                    snprintf(v[11], sizeof v[0], "(%d,%d)-(%d,%d)", fig->box[0], fig->box[1],
-                             fig->box[2], fig->box[3]);
-            }
-            if (res->seconds >= 0)
-                snprintf(v[13], sizeof v[0], "%.3f", res->seconds);
-            csv_field(f, s->name, true, ',');
-            csv_field(f, g->renders[k].name, true, ',');
-            csv_field(f, verdict_name(res->verdict), true, ',');
-            for (int c = 3; c <= 11; c++)
-                csv_field(f, v[c], false, ',');
-            csv_field(f, res->message, true, ',');
-            csv_field(f, v[13], false, '\n');
-        }
-}
-
-/* Writes the file at path through a temporary renamed onto it, so that it appears only
- * complete; false (err) on any failure. */
-static bool write_whole(const char *path, void (*write)(FILE *, const Grading *), const Grading *g,
-                        Error *err)
-{
-    OutFile out;
-    if (!outfile_open(&out, path, err))
-        return false;
-    write(out.file, g);
-    if (ferror(out.file)) {
-        error_set(err, "write error");
-        outfile_abort(&out);
-        return false;
-    }
-    return outfile_commit(&out, err);
-}
-
-/* Writes grades.csv to path; false (err) when it cannot. */
-bool report_write_csv(const Grading *g, const char *path, Error *err)
-{
-    return write_whole(path, write_csv, g, err);
-}
 
 /* Writes text with the characters HTML gives a meaning made plain. */
 static void html_text(FILE *f, const char *text)
@@ -141,102 +56,12 @@ static void html_text(FILE *f, const char *text)
         }
 }
 
-/* Reads the whole file at path, if it is at most EMBED_MAX_BYTES; NULL otherwise. */
-static unsigned char *read_small_file(const char *path, size_t *size)
-{
-    struct stat st;
-    FILE *f = imgfile_fopen(path);
-    unsigned char *data = NULL;
-    if (f != NULL && fstat(fileno(f), &st) == 0 && st.st_size <= EMBED_MAX_BYTES) {
-        data = grade_alloc((size_t)st.st_size + 1);
-        *size = fread(data, 1, (size_t)st.st_size, f);
-        if (ferror(f) || *size != (size_t)st.st_size) {
-            free(data);
-            data = NULL;
-        }
-    }
-    if (f != NULL)
-        fclose(f);
-    return data;
-}
-
-/* Writes the bytes data[0..size) in base64. */
-static void write_base64(FILE *f, const unsigned char *data, size_t size)
-{
-    static const char digits[] = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
-    for (size_t i = 0; i < size; i += 3) {
-        unsigned long bits = (unsigned long)data[i] << 16;
-        if (i + 1 < size)
-            bits |= (unsigned long)data[i + 1] << 8;
-        if (i + 2 < size)
-            bits |= data[i + 2];
-        fputc(digits[(bits >> 18) & 63], f);
-        fputc(digits[(bits >> 12) & 63], f);
-        fputc(i + 1 < size ? digits[(bits >> 6) & 63] : '=', f);
-        fputc(i + 2 < size ? digits[bits & 63] : '=', f);
-    }
-}
-
-/* The page's style sheet; write_style adds a rule a reference picture. */
+/* The page's style sheet: grade_report.css, made a C string by the build (grade.mk), which
+ * must stay under the 4095 bytes ISO C promises a string; write_style adds a rule a
+ * reference picture. */
 static const char style[] =
-    ":root{--pass:#1a7f37;--pass-bg:#dafbe1;--fail:#cf222e;--fail-bg:#ffebe9;--missing:#57606a;"
-    "--missing-bg:#eaeef2;--error:#8250df;--error-bg:#f6edfe;--line:#d0d7de;--soft:#eaeef2;"
-    "--muted:#59636e}\n*{box-sizing:border-box}\n"
-    "body{margin:0;font:14px/1.45 system-ui,-apple-system,'Segoe UI',Roboto,Arial,sans-serif;"
-    "color:#1f2328;background:#f6f8fa}\n"
-    "header.page{background:#fff;border-bottom:1px solid var(--line)}\n"
-    "header.page>div,main,footer{max-width:1240px;margin:0 auto;padding:0 28px}\n"
-    "header.page>div{padding-top:20px;padding-bottom:14px}\nmain{padding-top:22px}\n"
-    "h1{margin:0 0 6px;font-size:22px;font-weight:600}\n.meta{color:var(--muted);margin:2px 0}\n"
-    "code{font:12.5px ui-monospace,Menlo,Consolas,monospace;background:#eff1f3;padding:1px 5px;"
-    "border-radius:4px}\nsection{background:#fff;border:1px solid var(--line);border-radius:8px;"
-    "padding:16px 20px;margin-bottom:20px}\n"
-    "h2{font-size:18px;margin:0 0 10px;display:flex;align-items:center;gap:10px;flex-wrap:wrap}\n"
-    "h2 .name{overflow-wrap:anywhere}\na{color:#0969da;text-decoration:none}\n"
-    ".back{margin-left:auto;font-size:12.5px;font-weight:400}\n"
-    "table.summary{border-collapse:collapse;width:100%}\ntable.summary th,table.summary td{"
-    "padding:7px 10px;border-bottom:1px solid var(--soft);text-align:left}\n"
-    "table.summary th{font-size:11.5px;text-transform:uppercase;color:var(--muted)}\n"
-    "table.summary td:first-child{overflow-wrap:anywhere;min-width:8em}\n"
-    ".n{text-align:right!important;font-variant-numeric:tabular-nums;width:64px}\n"
-    "td.zero{color:#b8bfc6}\n.dots{white-space:nowrap}\n.dot{display:inline-block;width:11px;"
-    "height:11px;border-radius:3px;margin-right:3px;vertical-align:middle}\n"
-    ".dot.pass{background:#2da44e}.dot.fail{background:var(--fail)}"
-    ".dot.missing{background:#afb8c1}.dot.error{background:var(--error)}\n"
-    ".badge{display:inline-block;font-size:11px;font-weight:700;padding:2px 9px;"
-    "border-radius:999px;white-space:nowrap}\n"
-    ".badge.pass{color:var(--pass);background:var(--pass-bg)}"
-    ".badge.fail{color:var(--fail);background:var(--fail-bg)}\n"
-    ".badge.missing{color:var(--missing);background:var(--missing-bg)}"
-    ".badge.error{color:var(--error);background:var(--error-bg)}\n"
-    ".kind{font-size:12px;color:var(--muted);border:1px solid var(--line);border-radius:999px;"
-    "padding:0 8px}\n.counts{color:var(--muted);margin:0 0 4px}\n"
-    "details.scene{border-top:1px solid var(--soft)}\ndetails.scene>summary{display:flex;"
-    "align-items:center;gap:10px;padding:9px 2px;cursor:pointer}\n"
-    "details.scene>summary::before{content:'\\25B8';color:var(--muted)}\n"
-    "details.scene[open]>summary::before{content:'\\25BE'}\n"
-    ".scene-name{font-weight:600;min-width:200px}\n.message{flex:1}\n"
-    ".message::first-letter{text-transform:uppercase}\n"
-    ".time,.file{color:var(--muted);font-size:12.5px}\n.scene-body{padding:0 0 14px 16px}\n"
-    ".pictures{display:grid;grid-template-columns:repeat(3,minmax(0,1fr)) 240px;gap:16px;"
-    "align-items:start}\nfigure{margin:0}\n.pic{display:block;width:100%;height:auto;"
-    "border:1px solid var(--line);border-radius:4px;background:#000 no-repeat;"
-    "background-size:100% 100%}\n.px{image-rendering:pixelated}\n"
-    ".pic.none{display:flex;align-items:center;justify-content:center;padding:8px;"
-    "color:var(--muted);background:repeating-linear-gradient(45deg,#f6f8fa 0 8px,#eef1f4 8px "
-    "16px)}\n"
-    ".pic.black{background:#000}\nfigcaption{font-size:12px;color:var(--muted);margin-top:4px}\n"
-    "table.figures{font-size:12.5px}\ntable.figures th{text-align:left;font-weight:500;"
-    "color:var(--muted);padding:2px 10px 2px 0;white-space:nowrap}\n"
-    "details.log pre{background:#f6f8fa;border:1px solid var(--line);border-radius:6px;"
-    "padding:8px 10px;font-size:12px;max-height:260px;overflow:auto;white-space:pre-wrap;"
-    "overflow-wrap:anywhere}\ndetails.log>summary{cursor:pointer;color:var(--muted);"
-    "font-size:12.5px;margin-top:8px}\n.broken{border-left:3px solid var(--error);"
-    "background:var(--error-bg);padding:8px 12px;border-radius:4px}\n"
-    "dl.legend{display:grid;grid-template-columns:max-content 1fr;gap:4px 12px;font-size:13px}\n"
-    "dl.legend dd{margin:0;color:var(--muted)}\n"
-    "footer{color:var(--muted);font-size:12px;padding-bottom:28px}\n"
-    "@media (max-width:900px){.pictures{grid-template-columns:repeat(2,minmax(0,1fr))}}\n";
+#include "grade_style.h"
+    ;
 
 /* The page's parts, filled by html_put: %s is a text made plain, %S raw HTML, %d a number. */
 static const char page_head[] =
@@ -290,41 +115,16 @@ static const char *plural(int n)
     return n == 1 ? "" : "s";
 }
 
-/* A PNG thumbnail read for embedding: its bytes and its size in pixels. */
-typedef struct {
-    unsigned char *data;
-    size_t size;
-    int width, height;
-} Picture;
-
-/* Reads the PNG at path (a thumbnail the grader made) into p; false when it cannot. */
-static bool picture_read(const char *path, Picture *p)
-{
-    ImgFileKind kind;
-    Error err;
-    *p = (Picture){0};
-    return path != NULL && imgfile_header(path, &kind, &p->width, &p->height, &err) &&
-           kind == IMGFILE_PNG && (p->data = read_small_file(path, &p->size)) != NULL;
-}
-
-/* Writes picture p as a data: URI, and frees its bytes. */
-static void write_picture(FILE *f, Picture *p)
-{
-    fputs("data:image/png;base64,", f);
-    write_base64(f, p->data, p->size);
-    free(p->data);
-}
-
 /* Writes the style sheet, with one rule a reference picture: each is embedded once and
  * shown, as a background, beside every submission's image. */
 static void write_style(FILE *f, const Grading *g)
 {
     fputs(style, f);
     for (int k = 0; k < g->render_count; k++) {
-        Picture p;
-        if (picture_read(g->renders[k].reference_show, &p)) {
+        Thumb p;
+        if (thumb_read(g->renders[k].reference_show, &p)) {
             fprintf(f, ".ref%d{aspect-ratio:%d/%d;background-image:url(", k, p.width, p.height);
-            write_picture(f, &p);
+            thumb_write_uri(f, &p);
             fputs(")}\n", f);
         }
     }
@@ -374,7 +174,7 @@ static void write_summary(FILE *f, const Grading *g)
         for (int k = 0; k < g->render_count; k++) {
             Verdict v = s->results[k].verdict;
             html_put(f, "<span class=\"dot %S\" title=\"%s: %S\"></span>",
-                     tally_class[verdict_tally(v)], g->renders[k].name, verdict_name(v));
+                     tally_class[verdict_info[v].tally], g->renders[k].name, verdict_info[v].name);
         }
         Tally tally;
         const char *verdict = overall_verdict(g, s, &tally);
@@ -384,8 +184,8 @@ static void write_summary(FILE *f, const Grading *g)
     html_put(f, legend_head);
     for (int v = 0; v < VERDICT_COUNT; v++)
         html_put(f, "<dt><span class=\"badge %S\">%S</span></dt><dd>%S; counted as %S</dd>\n",
-                 tally_class[verdict_tally((Verdict)v)], verdict_name((Verdict)v), meanings[v],
-                 tally_class[verdict_tally((Verdict)v)]);
+                 tally_class[verdict_info[v].tally], verdict_info[v].name, verdict_info[v].meaning,
+                 tally_class[verdict_info[v].tally]);
     fputs("</dl>\n</details>\n</section>\n", f);
 }
 
@@ -403,16 +203,16 @@ static void write_log(FILE *f, const char *title, const char *log, bool open)
 static void write_figure(FILE *f, const char *path, const char *same, double width, int k,
                          const char *alt, const char *caption, const char *none)
 {
-    Picture p;
+    Thumb p;
     fputs("<figure>", f);
     if (path == NULL && same != NULL) {
         html_put(f, "<div class=\"pic %S%d\" role=\"img\" aria-label=\"%S\"></div>", same, k, alt);
-    } else if (picture_read(path, &p)) {
+    } else if (thumb_read(path, &p)) {
         fprintf(f,
                 "<img class=\"pic%s\" width=\"%d\" height=\"%d\" style=\"width:%.1f%%\" "
                 "alt=\"%s\" src=\"",
                 p.width <= PIXELATED_WIDTH ? " px" : "", p.width, p.height, 100 * width, alt);
-        write_picture(f, &p);
+        thumb_write_uri(f, &p);
         fputs("\">", f);
     } else {
         /* The reference's rule gives the box its shape; .pic.none wins its background. */
@@ -471,7 +271,7 @@ static void write_scene(FILE *f, const Grading *g, const Submission *s, int k)
 {
     const Render *r = &g->renders[k];
     const SceneResult *res = &s->results[k];
-    Tally tally = verdict_tally(res->verdict);
+    Tally tally = verdict_info[res->verdict].tally;
     char seconds[400] = "";
     if (res->seconds >= 0)
         snprintf(seconds, sizeof seconds, "<span class=\"time\">%.2f s</span>", res->seconds);
@@ -480,7 +280,7 @@ static void write_scene(FILE *f, const Grading *g, const Submission *s, int k)
              "<span class=\"badge %S\">%S</span><span class=\"message\">%s</span>%S</summary>\n"
              "<div class=\"scene-body\">\n<p class=\"file\">Scene <code>%s",
              res->verdict == VERDICT_PASS ? "" : " open", r->name, tally_class[tally],
-             verdict_name(res->verdict), res->message, seconds, r->scene);
+             verdict_info[res->verdict].name, res->message, seconds, r->scene);
     for (char **a = r->args; *a != NULL; a++)
         html_put(f, " %s", *a);
     fputs("</code></p>\n", f);
@@ -528,8 +328,60 @@ static void write_html(FILE *f, const Grading *g)
     html_put(f, page_end, g->work);
 }
 
-/* Writes report.html to path; false (err) when it cannot. */
-bool report_write_html(const Grading *g, const char *path, Error *err)
+/* Writes g->out/name with write, through a temporary renamed onto it so that it appears
+ * only complete; returns its path, or NULL (reported) on any failure. */
+static char *write_whole(const Grading *g, const char *name, void (*write)(FILE *, const Grading *))
 {
-    return write_whole(path, write_html, g, err);
+    char *path = grade_format("%s/%s", g->out, name);
+    OutFile out;
+    Error err;
+    bool ok = outfile_open(&out, path, &err);
+    if (ok) {
+        write(out.file, g);
+        if (ferror(out.file)) {
+            error_set(&err, "write error");
+            outfile_abort(&out);
+            ok = false;
+        } else {
+            ok = outfile_commit(&out, &err);
+        }
+    }
+    if (!ok) {
+        fprintf(stderr, "grade: cannot write %s: %s\n", path, err.text);
+        free(path);
+        path = NULL;
+    }
+    return path;
+}
+
+/* Writes grades.csv and report.html into g->out; false (reported) when it cannot. */
+bool report_write(const Grading *g)
+{
+    char *csv = write_whole(g, "grades.csv", csv_write);
+    char *html = csv != NULL ? write_whole(g, "report.html", write_html) : NULL;
+    if (html != NULL && !g->quiet)
+        fprintf(stderr, "grade: wrote %s and %s\n", html, csv);
+    bool ok = html != NULL;
+    free(csv);
+    free(html);
+    return ok;
+}
+
+/* Prints, for a student checking their own work, each scene's verdict and reason, and the
+ * heat map to look at when it did not pass; returns the exit status: 0 when every scene
+ * passes, 1 otherwise. */
+int report_print_self(const Grading *g)
+{
+    const Submission *s = &g->subs[0];
+    for (int k = 0; k < g->render_count; k++) {
+        const SceneResult *res = &s->results[k];
+        char *heat = grade_format("%s/%s.heat.png", s->work, g->renders[k].name);
+        printf("%-12s %s: %s\n", verdict_info[res->verdict].name, g->renders[k].name, res->message);
+        if (res->verdict != VERDICT_PASS && access(heat, F_OK) == 0)
+            printf("%12s heat map: %s\n", "", heat);
+        free(heat);
+    }
+    printf("%d of %d scenes pass; the report: %s/report.html\n", s->tally[TALLY_PASS],
+           g->render_count, g->out);
+    return s->tally[TALLY_PASS] == g->render_count ? 0 : 1;
 }

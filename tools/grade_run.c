@@ -1,4 +1,4 @@
-/* grade_run.c: a child in its own process group, under time, memory and file-size limits. */
+/* grade_run.c: a child in its own process group, under limits; how it ended, what it printed. */
 #include "grade_run.h"
 
 #include <dirent.h>
@@ -13,18 +13,17 @@
 #include <time.h>
 #include <unistd.h>
 
+#include "grade.h"
+#include "imgfile.h"
 #include "progress.h"
 #include "stop.h"
 #ifdef __linux__
 #include <sys/prctl.h>
 #endif
 
-/* Asks to stop when the terminal goes away, as on SIGINT: a child left hanging would
- * otherwise run on with no grader to end it. */
-static void on_hangup(int sig)
-{
-    stop_request(sig);
-}
+/* The log tail keeps at most this much of the end of a program's output. */
+#define TAIL_BYTES 2048
+#define TAIL_LINES 20
 
 /* Makes SIGINT, SIGTERM and SIGHUP requests to stop, which the wait loop polls to end the
  * child's whole group; holds SIGCHLD back for the wait loop to wait for; and makes the
@@ -32,8 +31,10 @@ static void on_hangup(int sig)
 void run_init(void)
 {
     stop_install();
+    /* The terminal going away asks to stop too (stop_request is safe in a handler): a
+     * child left hanging would otherwise run on with no grader to end it. */
     struct sigaction sa = {0};
-    sa.sa_handler = on_hangup;
+    sa.sa_handler = stop_request;
     sigemptyset(&sa.sa_mask);
     sigaction(SIGHUP, &sa, NULL);
     /* With its output piped into head, the grader must not die before ending a child. */
@@ -271,4 +272,91 @@ RunResult run_program(char *const argv[], const RunSpec *spec)
 RunResult run_function(int (*function)(void *), void *arg, const RunSpec *spec)
 {
     return run_child(NULL, function, arg, spec);
+}
+
+/* Writes into text how a run ended: "exit status 2", "killed by signal 11 (Segmentation
+ * fault)", "still running after 60 s". */
+void run_describe(const RunResult *r, double limit, char *text, size_t size)
+{
+    switch (r->end) {
+    case RUN_EXITED: snprintf(text, size, "exit status %d", r->status); break;
+    case RUN_KILLED:
+        snprintf(text, size, "killed by signal %d (%s)", r->status, strsignal(r->status));
+        break;
+    case RUN_TIMED_OUT: snprintf(text, size, "still running after %g s", limit); break;
+    case RUN_NOT_RUN: snprintf(text, size, "not started: %s", strerror(r->status)); break;
+    case RUN_INTERRUPTED: snprintf(text, size, "interrupted"); break;
+    }
+}
+
+/* Returns the number of bytes at the start of s[0..n) that continue a UTF-8 character
+ * begun before it, so that a tail cut in the middle of one starts cleanly. */
+static size_t continuation_bytes(const char *s, size_t n)
+{
+    size_t i = 0;
+    while (i < n && ((unsigned char)s[i] & 0xC0) == 0x80)
+        i++;
+    return i;
+}
+
+/* Copies the output raw[0..n) into out as a terminal would show it: a carriage return
+ * starts its line again (a progress bar leaves its last state), escape sequences go,
+ * other control characters become '?'; returns the length written. */
+static size_t clean_output(const char *raw, size_t n, char *out)
+{
+    size_t len = 0, line_start = 0;
+    for (size_t i = 0; i < n; i++) {
+        unsigned char c = (unsigned char)raw[i];
+        if (c == '\r' && (i + 1 == n || raw[i + 1] != '\n')) {
+            len = line_start;
+        } else if (c == '\n') {
+            out[len++] = '\n';
+            line_start = len;
+        } else if (c == 0x1B && i + 1 < n && raw[i + 1] == '[') {
+            /* ESC [ parameters, then a final byte from @ to ~: colours, erasing. */
+            i += 2;
+            while (i < n && !((unsigned char)raw[i] >= '@' && (unsigned char)raw[i] <= '~'))
+                i++;
+        } else if (c != '\r') {
+            out[len++] = (c < 0x20 && c != '\t') || c == 0x7F ? '?' : (char)c;
+        }
+    }
+    while (len > 0 && (out[len - 1] == '\n' || out[len - 1] == ' ' || out[len - 1] == '\t'))
+        len--;
+    out[len] = '\0';
+    return len;
+}
+
+/* Returns the last lines of the file at path (a program's output), cleaned for showing,
+ * with "[...]" first when some were left out; NULL when it is empty or unreadable. */
+char *run_log_tail(const char *path)
+{
+    FILE *f = imgfile_fopen(path);
+    if (f == NULL)
+        return NULL;
+    long size = fseek(f, 0, SEEK_END) == 0 ? ftell(f) : -1;
+    long from = size > TAIL_BYTES ? size - TAIL_BYTES : 0;
+    char raw[TAIL_BYTES];
+    size_t n = size >= 0 && fseek(f, from, SEEK_SET) == 0 ? fread(raw, 1, sizeof raw, f) : 0;
+    fclose(f);
+    size_t skip = from > 0 ? continuation_bytes(raw, n) : 0;
+    char *text = grade_alloc(n + 1);
+    size_t len = clean_output(raw + skip, n - skip, text);
+    /* Keep the last TAIL_LINES lines, and only whole ones when the start was cut. */
+    size_t start = 0;
+    int lines = 0;
+    for (size_t i = len; i > 0; i--)
+        if (text[i - 1] == '\n' && ++lines == TAIL_LINES) {
+            start = i;
+            break;
+        }
+    if (from > 0 && start == 0 && len > 0) {
+        char *newline = strchr(text, '\n');
+        start = newline != NULL ? (size_t)(newline - text) + 1 : 0;
+    }
+    char *tail = len == 0
+                     ? NULL
+                     : grade_format("%s%s", from > 0 || start > 0 ? "[...]\n" : "", text + start);
+    free(text);
+    return tail;
 }

@@ -3,6 +3,7 @@
 #define RAYTRA_GRADE_RUN_H
 
 #include <stdbool.h>
+#include <stddef.h>
 
 /* Where and how long a child may run. */
 typedef struct {
@@ -44,5 +45,7 @@ typedef struct {
 void run_init(void);
 RunResult run_program(char *const argv[], const RunSpec *spec);
 RunResult run_function(int (*function)(void *), void *arg, const RunSpec *spec);
+void run_describe(const RunResult *r, double limit, char *text, size_t size);
+char *run_log_tail(const char *path);
 
 #endif

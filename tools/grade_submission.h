@@ -6,6 +6,7 @@
 
 #include "grade.h"
 
-bool submission_grade(const Grading *g, Submission *s);
+bool submission_list(Grading *g);
+bool submission_grade_all(Grading *g);
 
 #endif

@@ -1,13 +1,18 @@
-/* grade_thumb.c: shrinking images into PNG thumbnails, and writing PFMs as PNGs, in a child. */
+/* grade_thumb.c: shrinking images into PNG thumbnails, in a child, and embedding them in HTML. */
 #include "grade_thumb.h"
 
 #include <fcntl.h>
 #include <stdio.h>
+#include <stdlib.h>
+#include <sys/stat.h>
 
 #include "grade.h"
 #include "grade_run.h"
 #include "image.h"
 #include "imgfile.h"
+
+/* The largest picture embedded: thumbnails are far smaller; a larger file is a mistake. */
+#define EMBED_MAX_BYTES (8L << 20)
 
 /* What one thumbnail is made from and how. */
 typedef struct {
@@ -96,4 +101,58 @@ bool thumb_make(const char *from, const char *to, int max_side, ThumbKind kind, 
     RunSpec spec = {.log = log, .time_limit = 120, .memory_limit = RUN_OWN_MEMORY(memory_limit)};
     RunResult r = run_function(thumb_job, &job, &spec);
     return r.end == RUN_EXITED && r.status == 0;
+}
+
+/* Reads the whole file at path, if it is at most EMBED_MAX_BYTES; NULL otherwise. */
+static unsigned char *read_small_file(const char *path, size_t *size)
+{
+    struct stat st;
+    FILE *f = imgfile_fopen(path);
+    unsigned char *data = NULL;
+    if (f != NULL && fstat(fileno(f), &st) == 0 && st.st_size <= EMBED_MAX_BYTES) {
+        data = grade_alloc((size_t)st.st_size + 1);
+        *size = fread(data, 1, (size_t)st.st_size, f);
+        if (ferror(f) || *size != (size_t)st.st_size) {
+            free(data);
+            data = NULL;
+        }
+    }
+    if (f != NULL)
+        fclose(f);
+    return data;
+}
+
+/* Writes the bytes data[0..size) in base64. */
+static void write_base64(FILE *f, const unsigned char *data, size_t size)
+{
+    static const char digits[] = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
+    for (size_t i = 0; i < size; i += 3) {
+        unsigned long bits = (unsigned long)data[i] << 16;
+        if (i + 1 < size)
+            bits |= (unsigned long)data[i + 1] << 8;
+        if (i + 2 < size)
+            bits |= data[i + 2];
+        fputc(digits[(bits >> 18) & 63], f);
+        fputc(digits[(bits >> 12) & 63], f);
+        fputc(i + 1 < size ? digits[(bits >> 6) & 63] : '=', f);
+        fputc(i + 2 < size ? digits[bits & 63] : '=', f);
+    }
+}
+
+/* Reads the PNG at path (a thumbnail the grader made) into p; false when it cannot. */
+bool thumb_read(const char *path, Thumb *p)
+{
+    ImgFileKind kind;
+    Error err;
+    *p = (Thumb){0};
+    return path != NULL && imgfile_header(path, &kind, &p->width, &p->height, &err) &&
+           kind == IMGFILE_PNG && (p->data = read_small_file(path, &p->size)) != NULL;
+}
+
+/* Writes picture p as a data: URI, and frees its bytes. */
+void thumb_write_uri(FILE *f, Thumb *p)
+{
+    fputs("data:image/png;base64,", f);
+    write_base64(f, p->data, p->size);
+    free(p->data);
 }

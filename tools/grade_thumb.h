@@ -3,6 +3,8 @@
 #define RAYTRA_GRADE_THUMB_H
 
 #include <stdbool.h>
+#include <stddef.h>
+#include <stdio.h>
 
 /* The longest side of a thumbnail: three fit side by side on a laptop's screen. */
 #define THUMB_SIDE 320
@@ -16,7 +18,16 @@ typedef enum {
     THUMB_PEAKS, /* its brightest pixel: a heat map's single differing pixel must stay */
 } ThumbKind;
 
+/* A PNG thumbnail read for embedding: its bytes and its size in pixels. */
+typedef struct {
+    unsigned char *data;
+    size_t size;
+    int width, height;
+} Thumb;
+
 bool thumb_make(const char *from, const char *to, int max_side, ThumbKind kind, const char *log,
                 long long memory_limit);
+bool thumb_read(const char *path, Thumb *p);
+void thumb_write_uri(FILE *f, Thumb *p);
 
 #endif

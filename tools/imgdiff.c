@@ -1,10 +1,9 @@
-/* imgdiff.c: compares two images, PNG or PFM, and tells whether they match. */
+/* imgdiff.c: compares two images, PNG, PFM or EXR, and tells whether they match. */
 #include <getopt.h>
 #include <math.h>
 #include <stdbool.h>
 #include <stdio.h>
 #include <stdlib.h>
-#include <string.h>
 #include <sys/stat.h>
 
 #include "image.h"
@@ -16,14 +15,11 @@ enum { EXIT_MATCH = 0, EXIT_DIFFER = 1, EXIT_TROUBLE = 2 };
 
 /* What the command line asks for. */
 typedef struct {
-    const char *paths[2];
-    int path_count;
+    const char *paths[2], *diff_path; /* the images; --diff's heat map, or NULL */
     double threshold; /* a pixel differs when its largest channel difference exceeds this */
     double allow;     /* the fraction of the pixels that may differ */
     double scale;     /* the difference shown white in the heat map; 0: the largest found */
-    const char *diff_path;
-    bool quiet, help;
-    bool machine; /* figures as NAME VALUE lines, for tools/grade */
+    bool quiet, help, machine; /* machine: figures as NAME VALUE lines, for tools/grade */
 } DiffOptions;
 
 /* How two images of the same size differ. */
@@ -74,11 +70,7 @@ static void print_help(FILE *f)
             "                 too (default: the largest difference found)\n"
             "  -q, --quiet    print only the verdict\n"
             "  --machine      print the figures as NAME VALUE lines instead, for programs\n"
-            "                 (tools/grade reads them): threshold T, allow F, size W H,\n"
-            "                 max R G B, mean M, rmse E, psnr P (inf when equal),\n"
-            "                 differing N OF, box X0 Y0 X1 Y1 (when N > 0), heat_scale S\n"
-            "                 (with --diff), verdict PASS or FAIL; images of different\n"
-            "                 sizes give a line sizes WA HA WB HB instead\n"
+            "                 (tools/grade reads them; docs/grading.md lists them)\n"
             "  -h, --help     show this help and exit\n"
             "\n"
             "The report gives the largest difference in each channel (also in steps of\n"
@@ -92,45 +84,32 @@ static void print_help(FILE *f)
             IMGDIFF_THRESHOLD_TEXT, IMGDIFF_ALLOW_TEXT, IMGDIFF_ALLOW * 100);
 }
 
-/* Reads a number, a decimal or a fraction N/D (2/255); false when it is neither. */
-static bool parse_number(const char *text, double *value)
+/* Stores the value of option opt, for --threshold, --allow and --scale a number, a
+ * decimal or a fraction N/D (2/255); false (reported) when it is not a valid one. */
+static bool set_value(DiffOptions *o, const struct option *opt, const char *value)
 {
+    int c = opt->val;
     char *end;
-    double v = strtod(text, &end);
-    if (end == text)
-        return false;
-    if (*end == '/') {
+    double v = strtod(value, &end);
+    if (end != value && *end == '/') {
         const char *denominator = end + 1;
         double d = strtod(denominator, &end);
-        if (end == denominator || d == 0)
-            return false;
-        v /= d;
+        v = end != denominator ? v / d : NAN; /* N/0 is not finite either */
     }
-    if (*end != '\0' || !isfinite(v))
-        return false;
-    *value = v;
-    return true;
-}
-
-/* Stores the value of option --name; false (reported) when it is not a valid one. */
-static bool set_value(DiffOptions *o, const char *name, const char *value)
-{
-    double v = 0;
-    bool number = parse_number(value, &v);
-    if (strcmp(name, "diff") == 0)
+    bool number = end != value && *end == '\0' && isfinite(v);
+    if (c == 'd')
         o->diff_path = value;
-    else if (strcmp(name, "threshold") == 0 && number && v >= 0)
+    else if (c == 't' && number && v >= 0)
         o->threshold = v;
-    else if (strcmp(name, "allow") == 0 && number && v >= 0 && v <= 1)
+    else if (c == 'a' && number && v >= 0 && v <= 1)
         o->allow = v;
-    else if (strcmp(name, "scale") == 0 && number && v > 0)
+    else if (c == 's' && number && v > 0)
         o->scale = v;
     else {
-        const char *wanted = strcmp(name, "allow") == 0 ? "a fraction from 0 to 1"
-                             : strcmp(name, "scale") == 0
-                                 ? "a number above 0, or a fraction such as 8/255"
-                                 : "a number from 0 up, or a fraction such as 2/255";
-        fprintf(stderr, "imgdiff: --%s takes %s, got '%s'\n", name, wanted, value);
+        const char *wanted = c == 'a'   ? "a fraction from 0 to 1"
+                             : c == 's' ? "a number above 0, or a fraction such as 8/255"
+                                        : "a number from 0 up, or a fraction such as 2/255";
+        fprintf(stderr, "imgdiff: --%s takes %s, got '%s'\n", opt->name, wanted, value);
         return false;
     }
     return true;
@@ -163,18 +142,17 @@ static bool parse_args(int argc, char **argv, DiffOptions *o)
             fprintf(stderr, "imgdiff: unknown option '%s' (imgdiff --help lists them)\n",
                     argv[optind - 1]);
             return false;
-        } else if (!set_value(o, options[index].name, optarg)) {
+        } else if (!set_value(o, &options[index], optarg)) {
             return false;
         }
     }
-    for (; optind < argc; optind++) {
-        if (o->path_count == 2) {
-            fprintf(stderr, "imgdiff: unexpected argument '%s': give two images\n", argv[optind]);
-            return false;
-        }
-        o->paths[o->path_count++] = argv[optind];
+    if (argc - optind > 2) {
+        fprintf(stderr, "imgdiff: unexpected argument '%s': give two images\n", argv[optind + 2]);
+        return false;
     }
-    if (!o->help && o->path_count < 2) {
+    for (int k = 0; optind + k < argc; k++)
+        o->paths[k] = argv[optind + k];
+    if (!o->help && argc - optind < 2) {
         fprintf(stderr, "imgdiff: give two images to compare (imgdiff --help shows how)\n");
         return false;
     }
@@ -195,33 +173,25 @@ static bool check_diff_path(const DiffOptions *o)
                     path, o->paths[k]);
             return false;
         }
-    if (image_format_for_path(path) == IMAGE_FORMAT_UNKNOWN) {
-        fprintf(stderr, "imgdiff: cannot write '%s': unknown image format (use .png or .pfm)\n",
-                path);
-        return false;
-    }
-    if (!outfile_check(path, &err)) {
-        fprintf(stderr, "imgdiff: cannot write '%s': %s\n", path, err.text);
-        return false;
-    }
-    return true;
+    if (image_format_for_path(path) == IMAGE_FORMAT_UNKNOWN)
+        error_set(&err, "unknown image format (use .png or .pfm)");
+    else if (outfile_check(path, &err))
+        return true;
+    fprintf(stderr, "imgdiff: cannot write '%s': %s\n", path, err.text);
+    return false;
 }
 
-/* Returns the difference of two channel values; a NaN or an infinity in either counts as
- * an infinite difference, even against another: such a pixel is broken, never equal. */
-static double channel_diff(float a, float b)
-{
-    if (!isfinite(a) || !isfinite(b))
-        return INFINITY;
-    return fabs((double)a - (double)b);
-}
-
-/* Returns the largest difference between the channels of pixel k of a and of b. */
-static double pixel_diff(const Image *a, const Image *b, long k)
+/* Writes the differences of the channels of pixel k of a and b into e; returns the
+ * largest. A NaN or an infinity in either is an infinite difference, even against
+ * another: such a pixel is broken, never equal. */
+static double pixel_diff(const Image *a, const Image *b, long k, double e[3])
 {
     double largest = 0;
-    for (int c = 0; c < 3; c++)
-        largest = fmax(largest, channel_diff(a->pixels[3 * k + c], b->pixels[3 * k + c]));
+    for (int c = 0; c < 3; c++) {
+        float p = a->pixels[3 * k + c], q = b->pixels[3 * k + c];
+        e[c] = isfinite(p) && isfinite(q) ? fabs((double)p - (double)q) : INFINITY;
+        largest = fmax(largest, e[c]);
+    }
     return largest;
 }
 
@@ -231,16 +201,13 @@ static Diff diff_images(const Image *a, const Image *b, double threshold)
     Diff d = {.x0 = a->width, .y0 = a->height, .x1 = -1, .y1 = -1};
     for (int y = 0; y < a->height; y++)
         for (int x = 0; x < a->width; x++) {
-            long k = (long)y * a->width + x;
-            double largest = 0;
+            double e[3], largest = pixel_diff(a, b, (long)y * a->width + x, e);
             for (int c = 0; c < 3; c++) {
-                double e = channel_diff(a->pixels[3 * k + c], b->pixels[3 * k + c]);
-                d.max[c] = fmax(d.max[c], e);
-                d.sum += e;
-                d.sum_squares += e * e;
-                largest = fmax(largest, e);
-                if (isfinite(e))
-                    d.largest_finite = fmax(d.largest_finite, e);
+                d.max[c] = fmax(d.max[c], e[c]);
+                d.sum += e[c];
+                d.sum_squares += e[c] * e[c];
+                if (isfinite(e[c]))
+                    d.largest_finite = fmax(d.largest_finite, e[c]);
             }
             d.nonfinite += isinf(largest);
             if (largest > threshold) {
@@ -261,9 +228,7 @@ static Color heat_color(double e, double top)
     if (e == 0)
         return color(0, 0, 0);
     double t = fmin(e / top, 1.0) * (RAMP_STOPS - 1);
-    int k = (int)t;
-    if (k >= RAMP_STOPS - 1)
-        return ramp[RAMP_STOPS - 1];
+    int k = t < RAMP_STOPS - 2 ? (int)t : RAMP_STOPS - 2; /* the stops t lies between */
     double f = t - k;
     return color_add(color_scale(ramp[k], 1 - f), color_scale(ramp[k + 1], f));
 }
@@ -273,13 +238,14 @@ static Color heat_color(double e, double top)
 static bool write_heat_map(const Image *a, const Image *b, double top, const char *path)
 {
     Image map;
+    double e[3];
     if (!image_init(&map, a->width, a->height)) {
         fprintf(stderr, "imgdiff: not enough memory for the heat map\n");
         return false;
     }
     for (int y = 0; y < a->height; y++)
         for (int x = 0; x < a->width; x++)
-            image_set(&map, x, y, heat_color(pixel_diff(a, b, (long)y * a->width + x), top));
+            image_set(&map, x, y, heat_color(pixel_diff(a, b, (long)y * a->width + x, e), top));
     Error err;
     bool ok = image_write(&map, path, PNG_ENCODING_LINEAR, &err);
     if (!ok)
@@ -288,64 +254,44 @@ static bool write_heat_map(const Image *a, const Image *b, double top, const cha
     return ok;
 }
 
-/* Returns the root of the mean squared difference over every channel of every pixel. */
-static double diff_rmse(const Diff *d, int width, int height)
+/* Prints the measures of d for images of width x height pixels: in words, or with
+ * --machine with the tolerances as NAME VALUE lines with enough digits to be read back
+ * exactly; top is the heat map's scale, 0 when none was written. */
+static void print_figures(const Diff *d, int width, int height, double top, const DiffOptions *o)
 {
-    return sqrt(d->sum_squares / (3.0 * width * height));
-}
-
-/* Prints the measures of d for images of width x height pixels. */
-static void print_report(const Diff *d, int width, int height, double threshold)
-{
-    double samples = 3.0 * width * height;
-    double rmse = diff_rmse(d, width, height);
+    long pixels = (long)width * height;
+    double mean = d->sum / (3.0 * pixels), rmse = sqrt(d->sum_squares / (3.0 * pixels));
+    /* PSNR = 10 log10(peak^2 / MSE) with peak 1: equal images, no noise, give inf. */
+    double psnr = -20 * log10(rmse), t = o->threshold;
+    if (o->machine) {
+        printf("threshold %.9g\nallow %.9g\nsize %d %d\nmax %.9g %.9g %.9g\nmean %.9g\n"
+               "rmse %.9g\npsnr %.9g\ndiffering %ld %ld\n",
+               t, o->allow, width, height, d->max[0], d->max[1], d->max[2], mean, rmse, psnr,
+               d->differing, pixels);
+        if (d->differing > 0)
+            printf("box %d %d %d %d\n", d->x0, d->y0, d->x1, d->y1);
+        if (top > 0)
+            printf("heat_scale %.9g\n", top);
+        if (d->nonfinite > 0)
+            printf("nonfinite %ld\n", d->nonfinite);
+        return;
+    }
     printf("size: %d x %d pixels\n", width, height);
     printf("largest difference: R %.4g (%.1f/255), G %.4g (%.1f/255), B %.4g (%.1f/255)\n",
            d->max[0], d->max[0] * 255, d->max[1], d->max[1] * 255, d->max[2], d->max[2] * 255);
-    printf("mean absolute difference: %.4g (%.2f/255)\n", d->sum / samples, d->sum / samples * 255);
-    printf("RMSE: %.4g\n", rmse);
-    /* PSNR = 10 log10(peak^2 / MSE) with peak 1: equal images have no noise at all. */
-    if (rmse == 0)
-        printf("PSNR: inf dB\n");
-    else
-        printf("PSNR: %.2f dB\n", -20 * log10(rmse));
+    printf("mean absolute difference: %.4g (%.2f/255)\n", mean, mean * 255);
+    printf("RMSE: %.4g\nPSNR: %.2f dB\n", rmse, psnr);
     printf("differing pixels: %ld of %ld (%.4g%%) differ by more than %.4g (%.1f/255)\n",
-           d->differing, (long)width * height, 100.0 * d->differing / ((double)width * height),
-           threshold, threshold * 255);
+           d->differing, pixels, 100.0 * d->differing / pixels, t, t * 255);
     if (d->differing > 0)
         printf("differing region: (%d,%d)-(%d,%d), y from the top\n", d->x0, d->y0, d->x1, d->y1);
     if (d->nonfinite > 0)
         printf("non-finite pixels: %ld (NaN or infinite in either image)\n", d->nonfinite);
 }
 
-/* Prints the measures of d and the tolerances as NAME VALUE lines, with enough digits to
- * be read back exactly; top is the heat map's scale, 0 when none was written. */
-static void print_machine(const Diff *d, int width, int height, double top, const DiffOptions *o)
-{
-    double rmse = diff_rmse(d, width, height);
-    printf("threshold %.9g\nallow %.9g\n", o->threshold, o->allow);
-    printf("size %d %d\n", width, height);
-    printf("max %.9g %.9g %.9g\n", d->max[0], d->max[1], d->max[2]);
-    printf("mean %.9g\n", d->sum / (3.0 * width * height));
-    printf("rmse %.9g\n", rmse);
-    if (rmse == 0)
-        printf("psnr inf\n");
-    else
-        printf("psnr %.9g\n", -20 * log10(rmse));
-    printf("differing %ld %ld\n", d->differing, (long)width * height);
-    if (d->differing > 0)
-        printf("box %d %d %d %d\n", d->x0, d->y0, d->x1, d->y1);
-    if (top > 0)
-        printf("heat_scale %.9g\n", top);
-    if (d->nonfinite > 0)
-        printf("nonfinite %ld\n", d->nonfinite);
-}
-
 /* Prints the verdict line; returns the exit status it means. */
 static int print_verdict(const Diff *d, long pixels, const DiffOptions *o)
 {
-    double percent = 100.0 * d->differing / pixels;
-    bool equal = d->max[0] == 0 && d->max[1] == 0 && d->max[2] == 0;
     /* A NaN or infinite pixel is a bug in the renderer, whatever the tolerances. */
     bool pass = (double)d->differing <= o->allow * pixels && d->nonfinite == 0;
     if (o->machine)
@@ -353,7 +299,7 @@ static int print_verdict(const Diff *d, long pixels, const DiffOptions *o)
     else if (d->nonfinite > 0)
         printf("FAIL: %ld pixel%s not finite (NaN or infinite)\n", d->nonfinite,
                d->nonfinite == 1 ? " is" : "s are");
-    else if (equal)
+    else if (d->max[0] == 0 && d->max[1] == 0 && d->max[2] == 0)
         printf("PASS: the images are identical\n");
     else if (d->differing == 0)
         printf("PASS: no pixel differs by more than %.4g (%.1f/255)\n", o->threshold,
@@ -361,20 +307,19 @@ static int print_verdict(const Diff *d, long pixels, const DiffOptions *o)
     else
         printf("%s: %.4g%% of the pixels differ by more than %.4g (%.1f/255), %s the %.4g%% "
                "allowed\n",
-               pass ? "PASS" : "FAIL", percent, o->threshold, o->threshold * 255,
-               pass ? "within" : "more than", o->allow * 100);
+               pass ? "PASS" : "FAIL", 100.0 * d->differing / pixels, o->threshold,
+               o->threshold * 255, pass ? "within" : "more than", o->allow * 100);
     return pass ? EXIT_MATCH : EXIT_DIFFER;
 }
 
 /* Tells, from the headers alone, whether both images can be read and have the same size;
  * reports why not. Nothing is decoded before: an image's pixels may be a bomb. */
-static bool check_headers(const DiffOptions *o)
+static bool check_headers(const DiffOptions *o, ImgFileKind kind[2])
 {
-    ImgFileKind kind;
     int w[2], h[2];
     Error err;
     for (int k = 0; k < 2; k++)
-        if (!imgfile_header(o->paths[k], &kind, &w[k], &h[k], &err)) {
+        if (!imgfile_header(o->paths[k], &kind[k], &w[k], &h[k], &err)) {
             fprintf(stderr, "imgdiff: cannot read '%s': %s\n", o->paths[k], err.text);
             return false;
         }
@@ -387,52 +332,42 @@ static bool check_headers(const DiffOptions *o)
     return false;
 }
 
-/* Compares a and b, reports, writes the heat map if asked; returns the exit status. */
-static int compare(const Image *a, const Image *b, const DiffOptions *o)
+/* Compares the images img, of kinds kind, reports, writes the heat map if asked; returns
+ * the exit status. */
+static int compare(Image img[2], const ImgFileKind kind[2], const DiffOptions *o)
 {
+    const Image *a = &img[0], *b = &img[1];
     if (a->width != b->width || a->height != b->height) {
         fprintf(stderr, "imgdiff: '%s' changed while it was read\n", o->paths[1]);
         return EXIT_TROUBLE;
     }
+    /* A PNG against linear values (a PFM's, an EXR's): each linear value is encoded as
+     * raytra encodes its PNGs, clamped to [0, 1], given the sRGB curve and rounded to 8
+     * bits. A non-finite value stays as it is, to be reported. */
+    Image *linear = &img[kind[0] == IMGFILE_PNG]; /* the linear one, if one is */
+    if ((kind[0] == IMGFILE_PNG) != (kind[1] == IMGFILE_PNG)) {
+        for (long k = 0; k < 3L * linear->width * linear->height; k++)
+            if (isfinite(linear->pixels[k]))
+                linear->pixels[k] =
+                    (float)(image_encode_8bit(linear->pixels[k], PNG_ENCODING_SRGB) / 255.0);
+        if (!o->quiet && !o->machine)
+            printf("note: %s holds linear values: compared as raytra would write them to "
+                   "a PNG (clamped to [0, 1], sRGB, 8 bits)\n",
+                   o->paths[linear - img]);
+    }
     Diff d = diff_images(a, b, o->threshold);
     if (!o->quiet && !o->machine)
-        print_report(&d, a->width, a->height, o->threshold);
-    double top = 0;
-    if (o->diff_path != NULL) {
-        /* Equal images get an all-black map; the scale then only needs to be positive. */
-        top = o->scale > 0 ? o->scale : d.largest_finite > 0 ? d.largest_finite : 1.0 / 255;
-        if (!write_heat_map(a, b, top, o->diff_path))
-            return EXIT_TROUBLE;
-        if (!o->quiet && !o->machine)
-            printf("heat map: black = 0, white = %.4g (%.1f/255), written to %s\n", top, top * 255,
-                   o->diff_path);
-    }
+        print_figures(&d, a->width, a->height, 0, o);
+    /* Equal images get an all-black map; the scale then only needs to be positive. */
+    double top = o->scale > 0 ? o->scale : d.largest_finite > 0 ? d.largest_finite : 1.0 / 255;
+    if (o->diff_path != NULL && !write_heat_map(a, b, top, o->diff_path))
+        return EXIT_TROUBLE;
+    if (o->diff_path != NULL && !o->quiet && !o->machine)
+        printf("heat map: black = 0, white = %.4g (%.1f/255), written to %s\n", top, top * 255,
+               o->diff_path);
     if (o->machine)
-        print_machine(&d, a->width, a->height, top, o);
+        print_figures(&d, a->width, a->height, o->diff_path != NULL ? top : 0, o);
     return print_verdict(&d, (long)a->width * a->height, o);
-}
-
-/* Encodes the linear image img (a PFM's, an EXR's) as raytra encodes its PNGs: each value
- * clamped to [0, 1], given the sRGB curve and rounded to 8 bits, so that it compares
- * with a PNG's stored values. A non-finite value stays as it is, to be reported. */
-static void encode_like_png(Image *img)
-{
-    for (long k = 0; k < 3L * img->width * img->height; k++) {
-        double v = img->pixels[k];
-        if (isfinite(v))
-            img->pixels[k] =
-                (float)((int)(image_srgb_encode(fmin(fmax(v, 0), 1)) * 255 + 0.5) / 255.0);
-    }
-}
-
-/* Reads the image at path into img; false (reported) when it cannot. */
-static bool read_image(Image *img, const char *path)
-{
-    Error err;
-    if (image_read(img, path, &err))
-        return true;
-    fprintf(stderr, "imgdiff: cannot read '%s': %s\n", path, err.text);
-    return false;
 }
 
 /* Runs imgdiff: exit status 0 when the images match, 1 when not, 2 on trouble. */
@@ -445,25 +380,18 @@ int main(int argc, char **argv)
         print_help(stdout);
         return EXIT_MATCH;
     }
-    if ((o.diff_path != NULL && !check_diff_path(&o)) || !check_headers(&o))
+    ImgFileKind kind[2];
+    if ((o.diff_path != NULL && !check_diff_path(&o)) || !check_headers(&o, kind))
         return EXIT_TROUBLE;
-    Image a, b;
-    if (!read_image(&a, o.paths[0]))
-        return EXIT_TROUBLE;
-    int status = EXIT_TROUBLE;
-    if (read_image(&b, o.paths[1])) {
-        /* A PNG against linear values: the linear image is encoded as a PNG would be. */
-        bool linear[2] = {imgfile_is_linear(o.paths[0]), imgfile_is_linear(o.paths[1])};
-        if (linear[0] != linear[1]) {
-            encode_like_png(linear[0] ? &a : &b);
-            if (!o.quiet && !o.machine)
-                printf("note: %s holds linear values: compared as raytra would write them to "
-                       "a PNG (clamped to [0, 1], sRGB, 8 bits)\n",
-                       o.paths[linear[0] ? 0 : 1]);
-        }
-        status = compare(&a, &b, &o);
-        image_free(&b);
-    }
-    image_free(&a);
+    Image img[2] = {{0}};
+    Error err;
+    int read = 0;
+    while (read < 2 && image_read(&img[read], o.paths[read], &err))
+        read++;
+    if (read < 2)
+        fprintf(stderr, "imgdiff: cannot read '%s': %s\n", o.paths[read], err.text);
+    int status = read == 2 ? compare(img, kind, &o) : EXIT_TROUBLE;
+    for (int k = 0; k < read; k++)
+        image_free(&img[k]);
     return status;
 }

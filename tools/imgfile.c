@@ -17,7 +17,7 @@
 /* Opens path for reading only when it is a regular file, never blocking on a FIFO or a
  * device and never following a symbolic link: a student's file may be any of these.
  * Returns the descriptor, or -1 (err) when it is not a readable regular file. */
-int imgfile_open(const char *path, Error *err)
+static int imgfile_open(const char *path, Error *err)
 {
     struct stat st;
     if (lstat(path, &st) != 0) {
@@ -138,16 +138,4 @@ bool imgfile_header(const char *path, ImgFileKind *kind, int *width, int *height
     *width = (int)w;
     *height = (int)ht;
     return true;
-}
-
-/* Tells whether the image at path holds linear values (PFM, EXR), where a PNG's are as
- * stored (raytra writes them sRGB-encoded). */
-bool imgfile_is_linear(const char *path)
-{
-    ImgFileKind kind = IMGFILE_UNKNOWN;
-    int w, h;
-    Error err;
-    /* The kind is known even when the size is refused. */
-    imgfile_header(path, &kind, &w, &h, &err);
-    return kind == IMGFILE_PFM || kind == IMGFILE_EXR;
 }

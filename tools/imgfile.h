@@ -10,9 +10,7 @@
 /* The image formats imgdiff and the grader tell apart. */
 typedef enum { IMGFILE_UNKNOWN, IMGFILE_PNG, IMGFILE_PFM, IMGFILE_EXR } ImgFileKind;
 
-int imgfile_open(const char *path, Error *err);
 FILE *imgfile_fopen(const char *path);
 bool imgfile_header(const char *path, ImgFileKind *kind, int *width, int *height, Error *err);
-bool imgfile_is_linear(const char *path);
 
 #endif

@@ -1,0 +1,263 @@
+/* grade_part.c: what grading reads first: the repository, the part, its renders.txt. */
+#include "grade_part.h"
+
+#include <dirent.h>
+#include <errno.h>
+#include <limits.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <unistd.h>
+
+#include "array.h"
+#include "cli.h"
+#include "grade_thumb.h"
+#include "stop.h"
+
+/* Returns the top of the repository, two folders above the grader's program
+ * (tools/build/grade), or NULL (reported) when it is not there; *tools_build gets the
+ * program's folder. */
+char *part_find_top(const char *argv0, char **tools_build)
+{
+    char exe[PATH_MAX], real[PATH_MAX];
+    ssize_t n = readlink("/proc/self/exe", exe, sizeof exe - 1);
+    if (n > 0)
+        exe[n] = '\0';
+    else if (realpath(argv0, exe) == NULL)
+        exe[0] = '\0';
+    char *slash = strrchr(exe, '/');
+    char *top = NULL;
+    if (slash != NULL) {
+        *slash = '\0';
+        *tools_build = grade_copy(exe);
+        char *up = grade_format("%s/../..", exe);
+        if (realpath(up, real) != NULL)
+            top = grade_copy(real);
+        free(up);
+    }
+    char *milestones = top != NULL ? grade_format("%s/milestones", top) : NULL;
+    if (milestones == NULL || !grade_is_folder(milestones)) {
+        fprintf(stderr, "grade: cannot find the raytra repository: the grader must stay in "
+                        "tools/build/ of its checkout\n");
+        free(top);
+        top = NULL;
+    }
+    free(milestones);
+    return top;
+}
+
+/* Tells whether a folder's entry is not hidden, for scandir. */
+static int visible(const struct dirent *e)
+{
+    return e->d_name[0] != '.';
+}
+
+/* Returns the names of the folders in `folder`, hidden ones left out, in strcmp's order;
+ * sets *count. NULL (and errno) when the folder cannot be read. */
+char **part_list_folders(const char *folder, int *count)
+{
+    struct dirent **entries;
+    int n = scandir(folder, &entries, visible, alphasort);
+    if (n < 0)
+        return NULL;
+    char **names = grade_alloc(((size_t)n + 1) * sizeof *names);
+    *count = 0;
+    for (int k = 0; k < n; k++) {
+        char *path = grade_format("%s/%s", folder, entries[k]->d_name);
+        if (grade_is_folder(path))
+            names[(*count)++] = grade_copy(entries[k]->d_name);
+        free(path);
+        free(entries[k]);
+    }
+    free(entries);
+    return names;
+}
+
+/* Frees the count names of a listing. */
+void part_free_names(char **names, int count)
+{
+    for (int k = 0; k < count; k++)
+        free(names[k]);
+    free(names);
+}
+
+/* Returns the folder of part `part`: a path, a folder of milestones/, or the one folder of
+ * milestones/ whose name starts with "PART-"; NULL (reported) when there is none. */
+char *part_find(const char *top, const char *part)
+{
+    char real[PATH_MAX];
+    if (strchr(part, '/') != NULL) {
+        if (realpath(part, real) != NULL && grade_is_folder(real))
+            return grade_copy(real);
+        fprintf(stderr, "grade: no part folder '%s'\n", part);
+        return NULL;
+    }
+    char *milestones = grade_format("%s/milestones", top);
+    int count = 0, matches = 0;
+    char **names = part_list_folders(milestones, &count);
+    const char *match = NULL;
+    size_t len = strlen(part);
+    for (int k = 0; k < count; k++) {
+        /* An exact name is the part, whatever else starts with it. */
+        bool exact = strcmp(names[k], part) == 0;
+        if (exact || (strncmp(names[k], part, len) == 0 && names[k][len] == '-')) {
+            matches = exact ? 1 : matches + 1;
+            match = names[k];
+        }
+        if (exact)
+            break;
+    }
+    char *found = matches == 1 ? grade_format("%s/%s", milestones, match) : NULL;
+    if (found == NULL) {
+        fprintf(stderr,
+                "grade: %s part '%s' in %s; the parts are:", matches == 0 ? "no" : "more than one",
+                part, milestones);
+        for (int k = 0; k < count; k++)
+            fprintf(stderr, " %s", names[k]);
+        fputc('\n', stderr);
+    }
+    part_free_names(names, count);
+    free(milestones);
+    return found;
+}
+
+/* Returns raytra's option that `word` names (--name, --name=VALUE or -L), from the one
+ * table of common/cli.c; NULL when none does. */
+static const CliOption *option_of(const char *word)
+{
+    size_t len = strcspn(word + 2, "=");
+    for (const CliOption *o = cli_options; o->name != NULL; o++)
+        if (word[1] == '-' ? strlen(o->name) == len && strncmp(word + 2, o->name, len) == 0
+                           : o->letter != 0 && word[1] == o->letter && word[2] == '\0')
+            return o;
+    return NULL;
+}
+
+/* Fills r->args with the words of a renders.txt line (words[0..n)) that students' programs
+ * get: the positional words, and the value of an option the course gives as a positional
+ * argument (1.4's MODE); raytra's own options are left out, with a note. */
+static void keep_positional(Render *r, char **words, int n, int part, bool quiet)
+{
+    r->args = grade_alloc(((size_t)n + 1) * sizeof *r->args);
+    int kept = 0;
+    for (int k = 0; k < n; k++) {
+        if (words[k][0] != '-' || words[k][1] == '\0') {
+            r->args[kept++] = grade_copy(words[k]);
+            continue;
+        }
+        const CliOption *o = option_of(words[k]);
+        const char *eq = strchr(words[k], '=');
+        bool next = o != NULL && o->kind != OPTION_FLAG && eq == NULL && k + 1 < n;
+        const char *value = eq != NULL ? eq + 1 : next ? words[k + 1] : NULL;
+        if (o != NULL && o->argument != NULL && value != NULL && cli_option_accepted(o, part))
+            r->args[kept++] = grade_copy(value);
+        else if (!quiet)
+            fprintf(stderr,
+                    "grade: note: %s: raytra's option %s%s%s is not given to students' "
+                    "programs\n",
+                    r->image, words[k], next ? " " : "", next ? words[k + 1] : "");
+        k += next;
+    }
+}
+
+/* Adds the render of a renders.txt line (its words) to g; false (reported) when the line
+ * is not a valid one or names a file that is not there. */
+static bool add_render(Grading *g, const char *top, char **words, int n, const char *where)
+{
+    const char *image = words[0];
+    const char *dot = strrchr(image, '.');
+    if (image[0] == '!') {
+        /* An illustration: raytra's own picture (an option students do not have, a
+         * robustness case), which the references keep but no student is graded on. */
+        char *more =
+            grade_format("%s%s%.*s", g->illustrations != NULL ? g->illustrations : "",
+                         g->illustrations != NULL ? ", " : "",
+                         dot != NULL ? (int)(dot - image - 1) : (int)strlen(image + 1), image + 1);
+        free(g->illustrations);
+        g->illustrations = more;
+        return true;
+    }
+    if (n < 2 || strchr(image, '/') != NULL || dot == NULL ||
+        (strcmp(dot, ".png") != 0 && strcmp(dot, ".pfm") != 0 && strcmp(dot, ".exr") != 0)) {
+        fprintf(stderr,
+                "grade: %s: expected IMAGE SCENE [options], IMAGE a .png, .pfm or .exr name\n",
+                where);
+        return false;
+    }
+    Render *r = &g->renders[g->render_count++];
+    *r = (Render){.image = grade_copy(image), .scene = grade_copy(words[1])};
+    r->name = grade_format("%.*s", (int)(dot - image), image);
+    r->scene_path =
+        words[1][0] == '/' ? grade_copy(words[1]) : grade_format("%s/%s", top, words[1]);
+    r->reference = grade_format("%s/%s", g->references, image);
+    keep_positional(r, words + 2, n - 2, cli_part_number(g->part), g->quiet);
+    if (!grade_is_file(r->scene_path)) {
+        fprintf(stderr, "grade: %s: no scene file %s\n", where, r->scene_path);
+        return false;
+    }
+    if (!grade_is_file(r->reference)) {
+        fprintf(stderr, "grade: %s: no reference image %s (make references makes it)\n", where,
+                r->reference);
+        return false;
+    }
+    return true;
+}
+
+/* Reads references/renders.txt into g->renders; false (reported) when it cannot. */
+bool part_read_renders(Grading *g, const char *top)
+{
+    char *path = grade_format("%s/renders.txt", g->references);
+    FILE *f = fopen(path, "r");
+    if (f == NULL) {
+        fprintf(stderr, "grade: cannot read %s: %s\n", path, strerror(errno));
+        free(path);
+        return false;
+    }
+    char *line = NULL;
+    size_t size = 0;
+    int line_number = 0, capacity = 0;
+    bool ok = true;
+    while (ok && getline(&line, &size, f) >= 0) {
+        line_number++;
+        char *words[64], *save = NULL;
+        int n = 0;
+        for (char *w = strtok_r(line, " \t\r\n", &save); w != NULL && n < 64;
+             w = strtok_r(NULL, " \t\r\n", &save))
+            words[n++] = w;
+        if (n == 0 || words[0][0] == '#')
+            continue;
+        char *where = grade_format("%s:%d", path, line_number);
+        bool grown = array_grow(&g->renders, &capacity, g->render_count, sizeof *g->renders);
+        if (!grown)
+            fprintf(stderr, "grade: %s: out of memory\n", where);
+        ok = grown && add_render(g, top, words, n, where);
+        free(where);
+    }
+    free(line);
+    fclose(f);
+    if (ok && g->render_count == 0) {
+        fprintf(stderr, "grade: %s lists no images\n", path);
+        ok = false;
+    }
+    free(path);
+    return ok;
+}
+
+/* Makes the reference images' thumbnails; false (reported) when one cannot be read. */
+bool part_show_references(Grading *g)
+{
+    for (int k = 0; k < g->render_count; k++) {
+        Render *r = &g->renders[k];
+        r->reference_show = grade_format("%s/references/%s.png", g->work, r->name);
+        char *log = grade_format("%s/references/%s.log", g->work, r->name);
+        bool ok = thumb_make(r->reference, r->reference_show, THUMB_SIDE, THUMB_MEAN, log, 0);
+        if (!ok && !stop_requested()) {
+            fprintf(stderr, "grade: cannot read the reference image %s:\n", r->reference);
+            grade_print_first_line("    ", log);
+        }
+        free(log);
+        if (!ok)
+            return false;
+    }
+    return true;
+}
