@@ -162,7 +162,7 @@ copy_sources() { # FOLDER MODE
 mkdir -p "$tmp/tools" "$tmp/tests" "$tmp/scenes" || exit 2
 copy_sources common solution
 cp "$top/common"/*.mk "$top/common/Makefile" "$tmp/common/" &&
-    cp "$top/tools"/*.c "$top/tools"/*.h "$top/tools"/*.mk "$top/tools/Makefile" \
+    cp "$top/tools"/*.c "$top/tools"/*.h "$top/tools"/*.css "$top/tools"/*.mk "$top/tools/Makefile" \
         "$top/tools/deps.sh" "$top/tools/docsnip.sh" "$top/tools/starter-check.sh" "$tmp/tools/" &&
     cp "$top/tests/testing.h" "$top/tests/regress.sh" "$tmp/tests/" || exit 2
 
