@@ -39,6 +39,8 @@ row() {
     echo "| $shown | $1 | $2 | $3 | $a | $b | $c | ${speedup}× |"
 }
 
+# The load before the renders says how much else the machine was doing.
+load=$(cut -d' ' -f1 /proc/loadavg 2>/dev/null || echo unknown)
 {
     echo "| scene | spheres | planes | triangles | 1.3 brute force (s) | 1.4 mode 0 (s) | 1.4 mode 3, BVH (s) | BVH speed-up |"
     echo "|---|---:|---:|---:|---:|---:|---:|---:|"
@@ -52,7 +54,7 @@ row() {
     done
 } >"$tmp/table"
 echo >>"$tmp/table"
-echo "*Seconds of a whole run (reading the scene, building, rendering, writing), one thread, $(nproc) cores shared with other work, $(date -u +%Y-%m-%d); made by bench/render-times.sh.*" >>"$tmp/table"
+echo "*Seconds of a whole run (reading the scene, building, rendering, writing), one thread, on $(nproc) cores with a load average of $load before the run, $(date -u +%Y-%m-%d); made by bench/render-times.sh.*" >>"$tmp/table"
 
 if [ "${1:-}" = --update ]; then
     chapter=$2
