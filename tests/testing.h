@@ -4,6 +4,8 @@
 
 #include <check.h>
 #include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
 #include <string.h>
 
 /* Defines main: runs the suite that make_suite returns; exit status 0 when all pass. */
@@ -40,5 +42,23 @@
 /* Asserts that text contains expected, showing the whole text when it does not. */
 #define ck_assert_contains(text, expected)                                                         \
     ck_assert_msg(strstr((text), (expected)) != NULL, "expected '%s' in:\n%s", (expected), (text))
+
+#ifdef RAYTRA
+/* Runs the part's raytra quietly with the shell words arguments; returns what it printed
+ * on standard output (its first MiB), to free, and its wait status in *status. */
+static inline char *testing_run(const char *arguments, int *status)
+{
+    char command[8192];
+    snprintf(command, sizeof command, "'%s' -q %s 2>/dev/null", RAYTRA, arguments);
+    FILE *p = popen(command, "r");
+    ck_assert_ptr_nonnull(p);
+    char *text = calloc(1, 1 << 20);
+    ck_assert_ptr_nonnull(text);
+    size_t used = fread(text, 1, (1 << 20) - 1, p);
+    text[used] = '\0';
+    *status = pclose(p);
+    return text;
+}
+#endif
 
 #endif

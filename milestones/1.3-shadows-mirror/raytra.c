@@ -44,9 +44,7 @@ static void probe_pixel(const void *ctx, int i, int j, Probe *probe)
 static const Program program = {
     .cli = {.part = "1.3-shadows-mirror",
             .purpose = "Blinn-Phong shading with shadows, ambient light and mirror reflection"},
-    .features = FEATURE_SPHERES | FEATURE_PLANES | FEATURE_TRIANGLES | FEATURE_POINT_LIGHTS |
-                FEATURE_DIRECTIONAL_LIGHTS | FEATURE_AREA_LIGHTS | FEATURE_AMBIENT_LIGHT |
-                FEATURE_MIRRORS | FEATURE_SHADING,
+    .features = TRACER_FEATURES,
     .setup = setup,
     .pixel = trace_pixel,
     .probe = probe_pixel,

@@ -24,6 +24,13 @@ typedef struct {
 
 typedef struct Tracer Tracer;
 
+/* What of a scene the tracer renders, for the note on what a part ignores; part 1.5
+ * adds refraction. */
+#define TRACER_FEATURES                                                                            \
+    (FEATURE_SPHERES | FEATURE_PLANES | FEATURE_TRIANGLES | FEATURE_POINT_LIGHTS |                 \
+     FEATURE_DIRECTIONAL_LIGHTS | FEATURE_AREA_LIGHTS | FEATURE_AMBIENT_LIGHT | FEATURE_MIRRORS |  \
+     FEATURE_SHADING)
+
 /* The light a hit receives straight from the lights; depth counts the bounces before r. */
 typedef Color (*DirectFn)(const Tracer *tr, const Hit *hit, Ray r, int depth, Path *path);
 

@@ -81,9 +81,7 @@ static void cleanup(void *ctx)
 static const Program program = {
     .cli = {.part = "1.4-bvh",
             .purpose = "part 1.3's ray tracer, accelerated by bounding boxes and a BVH"},
-    .features = FEATURE_SPHERES | FEATURE_PLANES | FEATURE_TRIANGLES | FEATURE_POINT_LIGHTS |
-                FEATURE_DIRECTIONAL_LIGHTS | FEATURE_AREA_LIGHTS | FEATURE_AMBIENT_LIGHT |
-                FEATURE_MIRRORS | FEATURE_SHADING,
+    .features = TRACER_FEATURES,
     .setup = setup,
     .pixel = trace_pixel,
     .probe = probe_pixel,

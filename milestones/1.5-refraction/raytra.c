@@ -75,9 +75,7 @@ static const Program program = {
     .cli = {.part = "1.5-refraction",
             .purpose = "recursive ray tracing with glass: Fresnel reflection, refraction and "
                        "absorption"},
-    .features = FEATURE_SPHERES | FEATURE_PLANES | FEATURE_TRIANGLES | FEATURE_POINT_LIGHTS |
-                FEATURE_DIRECTIONAL_LIGHTS | FEATURE_AREA_LIGHTS | FEATURE_AMBIENT_LIGHT |
-                FEATURE_MIRRORS | FEATURE_REFRACTION | FEATURE_SHADING,
+    .features = TRACER_FEATURES | FEATURE_REFRACTION,
     .setup = setup,
     .pixel = refract_pixel,
     .probe = probe_pixel,

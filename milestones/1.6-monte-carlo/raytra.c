@@ -73,9 +73,7 @@ static const Program program = {
     .cli = {.part = "1.6-monte-carlo",
             .purpose = "Monte Carlo ray tracing: P x P jittered rays per pixel, S x S shadow "
                        "rays per area light"},
-    .features = FEATURE_SPHERES | FEATURE_PLANES | FEATURE_TRIANGLES | FEATURE_POINT_LIGHTS |
-                FEATURE_DIRECTIONAL_LIGHTS | FEATURE_AREA_LIGHTS | FEATURE_AMBIENT_LIGHT |
-                FEATURE_MIRRORS | FEATURE_REFRACTION | FEATURE_SHADING,
+    .features = TRACER_FEATURES | FEATURE_REFRACTION,
     .setup = setup,
     .pixel = sample_pixel,
     .sample = one_sample,

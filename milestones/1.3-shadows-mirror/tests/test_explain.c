@@ -11,16 +11,9 @@
  * printed on standard output, to free, and its exit status in *status. */
 static char *run(const char *options, const char *scene, int *status)
 {
-    char command[4096];
-    snprintf(command, sizeof command, "'%s' -q %s '%s/scenes/%s' 2>/dev/null", RAYTRA, options,
-             TOP_DIR, scene);
-    FILE *p = popen(command, "r");
-    ck_assert_ptr_nonnull(p);
-    char *text = calloc(1, 1 << 16);
-    size_t used = fread(text, 1, (1 << 16) - 1, p);
-    text[used] = '\0';
-    *status = pclose(p);
-    return text;
+    char arguments[4096];
+    snprintf(arguments, sizeof arguments, "%s '%s/scenes/%s'", options, TOP_DIR, scene);
+    return testing_run(arguments, status);
 }
 
 START_TEST(the_centre_pixel_by_hand)

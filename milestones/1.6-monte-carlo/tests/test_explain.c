@@ -8,26 +8,11 @@
 #include "image.h"
 #include "testing.h"
 
-/* Runs the part's raytra with arguments; returns what it printed on standard output, to
- * free, and its exit status in *status. */
-static char *run(const char *arguments, int *status)
-{
-    char command[4096];
-    snprintf(command, sizeof command, "'%s' -q %s 2>/dev/null", RAYTRA, arguments);
-    FILE *p = popen(command, "r");
-    ck_assert_ptr_nonnull(p);
-    char *text = calloc(1, 1 << 20);
-    size_t used = fread(text, 1, (1 << 20) - 1, p);
-    text[used] = '\0';
-    *status = pclose(p);
-    return text;
-}
-
 /* Returns the exit status of raytra with arguments, whose output is not needed. */
 static int status_of(const char *arguments)
 {
     int status;
-    free(run(arguments, &status));
+    free(testing_run(arguments, &status));
     return WEXITSTATUS(status);
 }
 
@@ -66,7 +51,7 @@ START_TEST(each_sample_of_a_pixel_on_an_edge_by_hand)
         char arguments[128];
         snprintf(arguments, sizeof arguments, "edge.scn --samples 2 --trace-pixel 1,1@%d", k);
         int status;
-        char *text = run(arguments, &status);
+        char *text = testing_run(arguments, &status);
         ck_assert_int_eq(status, 0);
         /* Only sample k is traced: one camera ray. */
         char header[96];
@@ -93,7 +78,7 @@ START_TEST(each_sample_of_a_pixel_on_an_edge_by_hand)
         free(text);
     }
     int status;
-    char *text = run("edge.scn --samples 2 --trace-pixel 1,1", &status);
+    char *text = testing_run("edge.scn --samples 2 --trace-pixel 1,1", &status);
     ck_assert_int_eq(status, 0);
     ck_assert_color_near(color_after(text, "\ncolour "), color(0.5, 0.5, 0.5), 0);
     free(text);
@@ -110,7 +95,7 @@ static Color mean_of_samples(const char *arguments, const char *pixel, int count
         snprintf(line, sizeof line, "%s --trace-pixel %s@%d", arguments, pixel, k);
         snprintf(label, sizeof label, "sample %d: colour ", k);
         int status;
-        char *text = run(line, &status);
+        char *text = testing_run(line, &status);
         ck_assert_int_eq(status, 0);
         sum = color_add(sum, color_after(text, label));
         free(text);
@@ -134,7 +119,7 @@ START_TEST(the_samples_traced_alone_make_the_pixel)
     char line[1300];
     snprintf(line, sizeof line, "%s --trace-pixel 13,21", arguments);
     int status;
-    char *text = run(line, &status);
+    char *text = testing_run(line, &status);
     ck_assert_int_eq(status, 0);
     Color pixel = color_after(text, "\ncolour ");
     free(text);
@@ -144,7 +129,7 @@ START_TEST(the_samples_traced_alone_make_the_pixel)
     ck_assert(pixel.g > 0.1 && pixel.g < lit.g - 0.05);
     for (int threads = 1; threads <= 2; threads++) {
         snprintf(line, sizeof line, "%s -j %d out.pfm", arguments, threads);
-        free(run(line, &status));
+        free(testing_run(line, &status));
         ck_assert_int_eq(status, 0);
         Image img;
         Error err;
@@ -162,11 +147,11 @@ START_TEST(a_sample_traced_twice_and_on_more_threads_is_the_same)
              "'%s/scenes/soft-shadow.scn' --scale 0.25 --samples 4 --trace-pixel 17,27@13",
              TOP_DIR);
     int status;
-    char *a = run(arguments, &status);
+    char *a = testing_run(arguments, &status);
     ck_assert_int_eq(status, 0);
     char again[1300];
     snprintf(again, sizeof again, "%s -j 2", arguments);
-    char *b = run(again, &status);
+    char *b = testing_run(again, &status);
     ck_assert_int_eq(status, 0);
     ck_assert_str_eq(a, b);
     ck_assert(strstr(a, "sample 13 of 0 to 15: in sub-square 1 from the left, 3 from the bottom") !=
