@@ -6,73 +6,166 @@
 #include <limits.h>
 #include <math.h>
 #include <stdarg.h>
-#include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 #include <sys/stat.h>
 #include <time.h>
 #include <unistd.h>
 
-#include "grade_part.h"
-#include "grade_report.h"
-#include "grade_run.h"
-#include "grade_submission.h"
 #include "imgdiff.h"
 #include "stop.h"
 
 enum { EXIT_REPORTED = 0, EXIT_TROUBLE = 2, EXIT_INTERRUPTED = 130 };
 
-/* Prints the usage, the options and their defaults. */
-static void print_help(FILE *f)
+/* What an option's value is, and so how it is read. */
+typedef enum { OPT_FLAG, OPT_TEXT, OPT_SECONDS, OPT_BYTES } OptKind;
+
+/* One option: its names, its value's placeholder in --help (NULL for a flag), its help ('\n'
+ * where a line breaks), the field of Grading it sets, and its default value, or NULL. */
+typedef struct {
+    const char *name;
+    char letter;
+    OptKind kind;
+    const char *value, *help;
+    size_t field;
+    const char *fallback;
+} GradeOption;
+
+/* grade's options, from which the parsing, the defaults and --help are all made. */
+static const GradeOption options[] = {
+    {"out", 0, OPT_TEXT, "DIR", "write report.html, grades.csv and the work files\n"
+     "(work/) into DIR (default: grading-PART)", offsetof(Grading, out), NULL},
+    {"time-limit", 0, OPT_SECONDS, "S", "seconds a student's program may take for one scene;\n"
+     "0: no limit", offsetof(Grading, time_limit), "60"},
+    {"build-time-limit", 0, OPT_SECONDS, "S", "seconds make may take; 0: no limit",
+     offsetof(Grading, build_time_limit), "300"},
+    {"memory-limit", 0, OPT_BYTES, "M", "address space a student's make or program may use:\n"
+     "bytes, or with K, M or G; 0: no limit", offsetof(Grading, memory_limit), "2G"},
+    {"threshold", 0, OPT_TEXT, "T", "imgdiff's: a pixel differs when one of its channels\n"
+     "differs by more than T", offsetof(Grading, threshold), IMGDIFF_THRESHOLD_TEXT},
+    {"allow", 0, OPT_TEXT, "F", "imgdiff's: an image passes when at most the fraction\n"
+     "F of its pixels differ", offsetof(Grading, allow), IMGDIFF_ALLOW_TEXT},
+    {"self", 0, OPT_FLAG, NULL, "FOLDER is one student's program (or images): grade\nit alone, "
+     "print each scene's verdict and heat map,\nand exit 1 unless every scene passes",
+     offsetof(Grading, self), NULL},
+    {"quiet", 'q', OPT_FLAG, NULL, "no progress lines", offsetof(Grading, quiet), NULL},
+    {"help", 'h', OPT_FLAG, NULL, "show this help and exit", offsetof(Grading, help), NULL},
+};
+enum { OPTION_COUNT = sizeof options / sizeof options[0] };
+
+/* Prints the usage and the options. */
+static void print_help(void)
 {
-    fprintf(f,
-            "Usage: grade [options] PART SUBMISSIONS\n"
-            "       grade --self [options] PART FOLDER\n"
-            "Grades every submission in the folder SUBMISSIONS against the reference images\n"
-            "of PART and writes a report (report.html) and a table (grades.csv).\n"
-            "\n"
-            "PART is a part of the course: its folder's name (1.1-spheres-red), the start\n"
-            "of it (1.1), or the path of its folder. Its references/renders.txt lists the\n"
-            "reference images and the scenes they were rendered from.\n"
-            "\n"
-            "SUBMISSIONS holds a folder a student, either\n"
-            "  - images named as the references (spheres-three.png; .pfm, .exr accepted too),\n"
-            "  - or sources with a Makefile: make, run in a copy, must build an executable\n"
-            "    raytra beside it, which is run as  raytra SCENE OUTPUT [arguments]  for\n"
-            "    every scene, in a scratch folder, under the limits below.\n"
-            "\n"
-            "Options:\n"
-            "  --out DIR               write report.html, grades.csv and the work files\n"
-            "                          (work/) into DIR (default: grading-PART)\n"
-            "  --time-limit S          seconds a student's program may take for one scene\n"
-            "                          (default 60; 0: no limit)\n"
-            "  --build-time-limit S    seconds make may take (default 300; 0: no limit)\n"
-            "  --memory-limit M        address space a student's make or program may use:\n"
-            "                          bytes, or with K, M or G (default 2G; 0: no limit)\n"
-            "  --threshold T           imgdiff's: a pixel differs when one of its channels\n"
-            "                          differs by more than T (default %s)\n"
-            "  --allow F               imgdiff's: an image passes when at most the fraction\n"
-            "                          F of its pixels differ (default %s)\n"
-            "  --self                  FOLDER is one student's program (or images): grade\n"
-            "                          it alone, print each scene's verdict and heat map,\n"
-            "                          and exit 1 unless every scene passes\n"
-            "  -q, --quiet             no progress lines\n"
-            "  -h, --help              show this help and exit\n"
-            "\n"
-            "Exit status: 0 when the report was written, whatever the verdicts; 2 when\n"
-            "grading could not be done; 130 when interrupted. See docs/grading.md.\n",
-            IMGDIFF_THRESHOLD_TEXT, IMGDIFF_ALLOW_TEXT);
+    printf("Usage: grade [options] PART SUBMISSIONS\n"
+           "       grade --self [options] PART FOLDER\n"
+           "Grades every submission in the folder SUBMISSIONS against the reference images\n"
+           "of PART (1.1-spheres-red, 1.1, or a part's folder) and writes a report\n"
+           "(report.html) and a table (grades.csv). SUBMISSIONS holds a folder a student:\n"
+           "images named as the references (spheres-three.png; .pfm, .exr too), or sources\n"
+           "with a Makefile whose make, run in a copy, builds raytra beside it, run as\n"
+           "  raytra SCENE OUTPUT [arguments]\n"
+           "for every scene, in a scratch folder, under the limits below.\n\nOptions:\n");
+    for (const GradeOption *o = options; o < options + OPTION_COUNT; o++) {
+        int n = o->letter != 0 ? printf("  -%c, --%s", o->letter, o->name)
+                               : printf("  --%s %s", o->name, o->value != NULL ? o->value : "");
+        printf("%*s", n < 26 ? 26 - n : 1, "");
+        for (const char *p = o->help; *p != '\0'; p++)
+            *p == '\n' ? printf("\n%26s", "") : putchar(*p);
+        printf(o->fallback != NULL ? " (default %s)\n" : "\n", o->fallback);
+    }
+    printf("\nExit status: 0 when the report was written, whatever the verdicts; 2 when\n"
+           "grading could not be done; 130 when interrupted. See docs/grading.md.\n");
 }
 
-/* Returns zeroed memory; ends the grader when there is none, as it cannot go on. */
+/* Sets option o's field of g from its value: seconds are a number from 0; a memory limit
+ * is bytes, or a number followed by K, M or G (2^10, 2^20, 2^30), 0 or at least 1 MiB
+ * (less is surely a slip). False (reported) when the value is not a valid one. */
+static bool set_option(Grading *g, const GradeOption *o, const char *value)
+{
+    static const char units[] = "KkMmGg";
+    void *field = (char *)g + o->field;
+    if (o->kind == OPT_FLAG || o->kind == OPT_TEXT) {
+        if (o->kind == OPT_FLAG)
+            *(bool *)field = true;
+        else
+            *(const char **)field = value;
+        return true;
+    }
+    char *end;
+    double v = strtod(value, &end);
+    const char *unit = o->kind == OPT_BYTES && end != value && *end != '\0' ? strchr(units, *end)
+                                                                             : NULL;
+    v = unit != NULL ? ldexp(v, 10 * (int)((unit - units) / 2 + 1)) : v;
+    end += unit != NULL;
+    bool ok = end != value && *end == '\0' && isfinite(v) && v >= 0 &&
+              (o->kind == OPT_SECONDS || (v <= 1e18 && (v == 0 || v >= 1 << 20)));
+    if (ok && o->kind == OPT_SECONDS)
+        *(double *)field = v;
+    else if (ok)
+        *(long long *)field = (long long)v;
+    else
+        fprintf(stderr, "grade: --%s takes %s, got '%s'\n", o->name,
+                o->kind == OPT_SECONDS ? "a number of seconds, or 0"
+                                       : "a size such as 512M or 2G, or 0",
+                value);
+    return ok;
+}
+
+/* Reads the command line into g and *part, with getopt_long (options may follow the
+ * words); false (reported) when it is not a valid one. */
+static bool parse_args(int argc, char **argv, Grading *g, const char **part)
+{
+    struct option longs[OPTION_COUNT + 1] = {{0}};
+    char shorts[OPTION_COUNT + 2] = ":";
+    for (int k = 0; k < OPTION_COUNT; k++) {
+        longs[k] = (struct option){options[k].name, options[k].value != NULL, NULL, 0};
+        if (options[k].letter != 0)
+            strncat(shorts, &options[k].letter, 1);
+    }
+    opterr = 0;
+    int c, k = 0;
+    while ((c = getopt_long(argc, argv, shorts, longs, &k)) != -1) {
+        if (c == ':' || c == '?') {
+            fprintf(stderr, c == ':' ? "grade: %s needs a value\n"
+                                     : "grade: unknown option '%s' (grade --help lists them)\n",
+                    argv[optind - 1]);
+            return false;
+        }
+        for (int s = 0; c != 0 && s < OPTION_COUNT; s++)
+            k = options[s].letter == c ? s : k; /* a short option's entry */
+        if (!set_option(g, &options[k], optarg))
+            return false;
+    }
+    if (g->help)
+        return true;
+    if (argc - optind > 2) {
+        fprintf(stderr, "grade: unexpected argument '%s': give a part and a folder\n",
+                argv[optind + 2]);
+        return false;
+    }
+    if (argc - optind < 2) {
+        fprintf(stderr, "usage: grade [options] PART SUBMISSIONS (grade --help for more)\n");
+        return false;
+    }
+    *part = argv[optind];
+    g->submissions = argv[optind + 1];
+    return true;
+}
+
+/* Returns zeroed memory that lasts until the exit: the grader frees nothing, as what it
+ * gathers serves the report; every block begins with the one made before it, so that all
+ * stay reachable. Ends the grader when there is no memory, as it cannot go on. */
 void *grade_alloc(size_t size)
 {
-    void *p = calloc(1, size > 0 ? size : 1);
-    if (p == NULL) {
+    static void *last;
+    void **block = calloc(1, sizeof(max_align_t) + size);
+    if (block == NULL) {
         fprintf(stderr, "grade: out of memory\n");
         exit(EXIT_TROUBLE);
     }
-    return p;
+    *block = last;
+    last = block;
+    return (char *)block + sizeof(max_align_t);
 }
 
 /* Returns a new string made as printf makes it. */
@@ -89,21 +182,12 @@ char *grade_format(const char *fmt, ...)
     return s;
 }
 
-/* Returns a new copy of text. */
-char *grade_copy(const char *text)
+/* Returns a memory limit in words: "2 GiB", "512 MiB", or "none" for 0. */
+char *grade_size_text(long long bytes)
 {
-    return grade_format("%s", text);
-}
-
-/* Writes a memory limit in words: "2 GiB", "512 MiB", or "none" for 0. */
-void grade_size_text(long long bytes, char *text, size_t size)
-{
-    if (bytes <= 0)
-        snprintf(text, size, "none");
-    else if (bytes % (1LL << 30) == 0)
-        snprintf(text, size, "%lld GiB", bytes >> 30);
-    else
-        snprintf(text, size, "%lld MiB", bytes >> 20);
+    return bytes <= 0                  ? "none"
+           : bytes % (1LL << 30) == 0 ? grade_format("%lld GiB", bytes >> 30)
+                                      : grade_format("%lld MiB", bytes >> 20);
 }
 
 /* Sets the verdict of res and its reason, made as printf makes it. */
@@ -116,112 +200,18 @@ void grade_verdict(SceneResult *res, Verdict v, const char *fmt, ...)
     res->verdict = v;
 }
 
-/* Reads a number, 0 or more, into *value; with units, K, M or G may follow it for 2^10,
- * 2^20 or 2^30. False when text is not one. */
-static bool parse_amount(const char *text, bool units, double *value)
-{
-    char *end;
-    double v = strtod(text, &end);
-    const char *all = "KkMmGg";
-    const char *unit = units && end != text && *end != '\0' ? strchr(all, *end) : NULL;
-    double scale = unit != NULL ? pow(1024.0, (double)((unit - all) / 2 + 1)) : 1;
-    end += unit != NULL;
-    if (end == text || *end != '\0' || !isfinite(v) || v < 0)
-        return false;
-    *value = v * scale;
-    return true;
-}
-
-/* Reads the command line into g and *part, with getopt_long (options may follow the
- * words); false (reported) when it is not a valid one. */
-static bool parse_args(int argc, char **argv, Grading *g, const char **part, bool *help)
-{
-    static const struct option options[] = {
-        {"out", required_argument, NULL, 'o'},
-        {"time-limit", required_argument, NULL, 't'},
-        {"build-time-limit", required_argument, NULL, 'b'},
-        {"memory-limit", required_argument, NULL, 'm'},
-        {"threshold", required_argument, NULL, 'T'},
-        {"allow", required_argument, NULL, 'a'},
-        {"self", no_argument, NULL, 's'},
-        {"quiet", no_argument, NULL, 'q'},
-        {"help", no_argument, NULL, 'h'},
-        {0},
-    };
-    opterr = 0;
-    int c;
-    bool ok = true;
-    double bytes;
-    /* The short option string names only -q and -h: the others are long alone. */
-    while (ok && (c = getopt_long(argc, argv, ":qh", options, NULL)) != -1) {
-        const char *arg = argv[optind - 1];
-        switch (c) {
-        case 'o': g->out = optarg; break;
-        case 'T': g->threshold = optarg; break;
-        case 'a': g->allow = optarg; break;
-        case 's': g->self = true; break;
-        case 'q': g->quiet = true; break;
-        case 'h': *help = true; break;
-        case 't':
-        case 'b':
-            if (!parse_amount(optarg, false, c == 't' ? &g->time_limit : &g->build_time_limit)) {
-                fprintf(stderr, "grade: %.*s takes a number of seconds, or 0, got '%s'\n",
-                        (int)strcspn(arg, "="), arg, optarg);
-                ok = false;
-            }
-            break;
-        case 'm':
-            /* 0, or at least 1 MiB: a smaller limit is surely a slip. */
-            ok = parse_amount(optarg, true, &bytes) && bytes <= 1e18 &&
-                 (bytes == 0 || bytes >= 1024.0 * 1024);
-            g->memory_limit = ok ? (long long)bytes : 0;
-            if (!ok)
-                fprintf(stderr,
-                        "grade: --memory-limit takes a size such as 512M or 2G, or 0, "
-                        "got '%s'\n",
-                        optarg);
-            break;
-        case ':': fprintf(stderr, "grade: %s needs a value\n", arg); return false;
-        default:
-            fprintf(stderr, "grade: unknown option '%s' (grade --help lists them)\n", arg);
-            return false;
-        }
-    }
-    if (!ok || *help)
-        return ok;
-    if (argc - optind > 2) {
-        fprintf(stderr, "grade: unexpected argument '%s': give a part and a folder\n",
-                argv[optind + 2]);
-        return false;
-    }
-    if (argc - optind < 2) {
-        fprintf(stderr, "usage: grade [options] PART SUBMISSIONS (grade --help for more)\n");
-        return false;
-    }
-    *part = argv[optind];
-    g->submissions = argv[optind + 1];
-    return true;
-}
-
-/* Tells whether path is a folder. */
-bool grade_is_folder(const char *path)
+/* Returns the kind of the file at path, links followed: S_IFDIR, S_IFREG...; 0 for none. */
+int grade_kind(const char *path)
 {
     struct stat st;
-    return stat(path, &st) == 0 && S_ISDIR(st.st_mode);
-}
-
-/* Tells whether path is a regular file. */
-bool grade_is_file(const char *path)
-{
-    struct stat st;
-    return stat(path, &st) == 0 && S_ISREG(st.st_mode);
+    return stat(path, &st) == 0 ? (int)(st.st_mode & S_IFMT) : 0;
 }
 
 /* Makes folder path, or with anew false takes the one there; false (reported) when it
  * cannot. Anew, a folder already there (a link a student's program left) is refused. */
 bool grade_make_folder(const char *path, bool anew)
 {
-    if (mkdir(path, 0777) == 0 || (!anew && errno == EEXIST && grade_is_folder(path)))
+    if (mkdir(path, 0777) == 0 || (!anew && errno == EEXIST && grade_kind(path) == S_IFDIR))
         return true;
     fprintf(stderr, "grade: cannot make the folder %s: %s\n", path, strerror(errno));
     return false;
@@ -235,62 +225,40 @@ static bool run_quietly(char **argv, const char *log)
     return r.end == RUN_EXITED && r.status == 0;
 }
 
-/* Makes OUT and an empty OUT/work (an absolute path), removing a work folder of an earlier run (one
- * holding the mark this writes) and refusing to remove any other; false (reported) on trouble. */
+/* Makes OUT and an empty OUT/work, an absolute path as students' programs run elsewhere,
+ * removing only a work folder that holds the mark an earlier run wrote; false (reported)
+ * on trouble. */
 static bool prepare_work(Grading *g)
 {
     char real[PATH_MAX];
     if (!grade_make_folder(g->out, false))
         return false;
-    /* Absolute: students' programs run in folders of their own. */
     if (realpath(g->out, real) == NULL) {
         fprintf(stderr, "grade: cannot find %s: %s\n", g->out, strerror(errno));
         return false;
     }
     g->work = grade_format("%s/work", real);
     char *mark = grade_format("%s/.made-by-grade", g->work);
-    bool ok = true;
-    if (grade_is_folder(g->work) && !grade_is_file(mark)) {
+    char *chmod[] = {"chmod", "-R", "u+rwX", "--", g->work, NULL};
+    char *rm[] = {"rm", "-rf", "--", g->work, NULL};
+    if (grade_kind(g->work) == S_IFDIR && grade_kind(mark) != S_IFREG) {
         fprintf(stderr, "grade: %s exists and was not made by grade: choose another --out\n",
                 g->work);
-        ok = false;
-    } else if (grade_is_folder(g->work)) {
-        /* A student's build may have left folders without write permission. */
-        char *chmod[] = {"chmod", "-R", "u+rwX", "--", g->work, NULL};
-        char *rm[] = {"rm", "-rf", "--", g->work, NULL};
-        run_quietly(chmod, NULL);
+        return false;
+    }
+    if (grade_kind(g->work) == S_IFDIR) {
+        run_quietly(chmod, NULL); /* a student's build may have left folders read-only */
         if (!run_quietly(rm, NULL)) {
             fprintf(stderr, "grade: cannot remove the old work folder %s\n", g->work);
-            ok = false;
+            return false;
         }
     }
-    FILE *f = NULL;
-    if (ok && (!grade_make_folder(g->work, false) || (f = fopen(mark, "w")) == NULL))
-        ok = false;
-    if (f != NULL) {
+    FILE *f = grade_make_folder(g->work, false) ? fopen(mark, "w") : NULL;
+    if (f != NULL)
         fprintf(f, "grade's work folder: each run of grade with this --out removes it and "
                    "makes it anew.\n");
-        ok = fclose(f) == 0;
-    }
-    char *refs = grade_format("%s/references", g->work);
-    ok = ok && grade_make_folder(refs, false);
-    free(refs);
-    free(mark);
-    return ok;
-}
-
-/* Prints the first line of the file at path to stderr after prefix, if there is one. */
-void grade_print_first_line(const char *prefix, const char *path)
-{
-    char line[512] = "";
-    FILE *f = fopen(path, "r");
-    if (f != NULL) {
-        if (fgets(line, sizeof line, f) == NULL)
-            line[0] = '\0';
-        fclose(f);
-    }
-    if (line[0] != '\0')
-        fprintf(stderr, "%s%s%s", prefix, line, strchr(line, '\n') != NULL ? "" : "\n");
+    return f != NULL && fclose(f) == 0 &&
+           grade_make_folder(grade_format("%s/references", g->work), false);
 }
 
 /* Asks imgdiff whether it takes the tolerances, before any work; false (reported) when it
@@ -300,26 +268,25 @@ static bool check_imgdiff(const Grading *g)
     char *log = grade_format("%s/imgdiff-check.txt", g->work);
     char *argv[] = {g->imgdiff, "--threshold", (char *)g->threshold, "--allow", (char *)g->allow,
                     "--help",   NULL};
-    bool ok = run_quietly(argv, log);
-    if (!ok) {
-        grade_print_first_line("grade: ", log);
-        fprintf(stderr, "grade: imgdiff (%s) refused the tolerances or could not run\n",
-                g->imgdiff);
-    }
-    free(log);
-    return ok;
+    if (run_quietly(argv, log))
+        return true;
+    char *said = run_log_tail(log);
+    if (said != NULL)
+        fprintf(stderr, "grade: %s\n", said);
+    fprintf(stderr, "grade: imgdiff (%s) refused the tolerances or could not run\n", g->imgdiff);
+    return false;
 }
 
 /* Does all the grading but reading the command line, for part `part`; returns the exit
- * status. */
+ * status: 0 when the report was written (with --self, 1 when a scene failed), 2 when it
+ * could not be. */
 static int grade(Grading *g, const char *part, const char *argv0)
 {
     char *tools_build = NULL;
     char *top = part_find_top(argv0, &tools_build);
     char *part_dir = top != NULL ? part_find(top, part) : NULL;
-    int status = EXIT_TROUBLE;
     if (part_dir == NULL)
-        goto done;
+        return EXIT_TROUBLE;
     g->part = strrchr(part_dir, '/') + 1;
     g->references = grade_format("%s/references", part_dir);
     g->imgdiff = grade_format("%s/imgdiff", tools_build);
@@ -329,51 +296,44 @@ static int grade(Grading *g, const char *part, const char *argv0)
     strftime(g->started, sizeof g->started, "%Y-%m-%d %H:%M", localtime(&now));
     if (access(g->imgdiff, X_OK) != 0) {
         fprintf(stderr, "grade: no imgdiff at %s (make -C tools builds it)\n", g->imgdiff);
-        goto done;
+        return EXIT_TROUBLE;
     }
-    if (!grade_is_folder(g->submissions)) {
+    if (grade_kind(g->submissions) != S_IFDIR) {
         fprintf(stderr, "grade: no folder %s\n", g->submissions);
-        goto done;
+        return EXIT_TROUBLE;
     }
     if (!part_read_renders(g, top) || !prepare_work(g) || !check_imgdiff(g) ||
         !part_show_references(g) || !submission_list(g))
-        goto done;
+        return EXIT_TROUBLE;
     if (!g->quiet)
         fprintf(stderr, "grade: part %s, %d scene%s, %d submission%s\n", g->part, g->render_count,
                 g->render_count == 1 ? "" : "s", g->sub_count, g->sub_count == 1 ? "" : "s");
     if (!g->quiet && g->illustrations != NULL)
         fprintf(stderr, "grade: not graded (illustrations): %s\n", g->illustrations);
-    if (submission_grade_all(g) && report_write(g))
-        status = g->self ? report_print_self(g) : EXIT_REPORTED;
-done:
-    if (stop_requested()) {
-        fprintf(stderr, "grade: interrupted: no report written\n");
-        status = EXIT_INTERRUPTED;
-    }
-    free(part_dir);
-    free(top);
-    free(tools_build);
-    return status;
+    if (!submission_grade_all(g) || !report_write(g))
+        return EXIT_TROUBLE;
+    return g->self ? report_print_self(g) : EXIT_REPORTED;
 }
 
 /* Runs the grader: exit status 0 when the report was written, 2 when it could not be,
  * 130 when interrupted. */
 int main(int argc, char **argv)
 {
-    /* Static: what grading gathers lives until the exit, which frees it. */
-    static Grading g = {.threshold = IMGDIFF_THRESHOLD_TEXT,
-                        .allow = IMGDIFF_ALLOW_TEXT,
-                        .time_limit = 60,
-                        .build_time_limit = 300,
-                        .memory_limit = 2LL << 30};
+    static Grading g;
     const char *part = NULL;
-    bool help = false;
-    if (!parse_args(argc, argv, &g, &part, &help))
+    for (const GradeOption *o = options; o < options + OPTION_COUNT; o++)
+        if (o->fallback != NULL)
+            set_option(&g, o, o->fallback);
+    if (!parse_args(argc, argv, &g, &part))
         return EXIT_TROUBLE;
-    if (help) {
-        print_help(stdout);
+    if (g.help) {
+        print_help();
         return EXIT_REPORTED;
     }
     run_init();
-    return grade(&g, part, argv[0]);
+    int status = grade(&g, part, argv[0]);
+    if (!stop_requested())
+        return status;
+    fprintf(stderr, "grade: interrupted: no report written\n");
+    return EXIT_INTERRUPTED;
 }

@@ -1,34 +1,25 @@
-/* grade.h: what tools/grade knows of a class: the part's renders, the submissions, the verdicts. */
+/* grade.h: the grader's one internal header: a class's renders, submissions and verdicts. */
 #ifndef RAYTRA_GRADE_H
 #define RAYTRA_GRADE_H
 
 #include <stdbool.h>
 #include <stddef.h>
+#include <stdio.h>
+#include <sys/stat.h>
 
 #include "diag.h"
 
-/* What became of one scene of one submission. */
+/* What became of one scene of one submission; verdict_info says what each means. */
 typedef enum {
-    VERDICT_PASS,          /* matches the reference within the tolerances */
-    VERDICT_FAIL,          /* differs from it */
-    VERDICT_WRONG_SIZE,    /* has another width or height */
-    VERDICT_LINK,          /* is a symbolic link, or a hard link to the reference */
-    VERDICT_UNREADABLE,    /* is not a regular file holding an image imgdiff can read */
-    VERDICT_MISSING,       /* there is no image */
-    VERDICT_ERROR,         /* the program exited with a failure status and wrote no image */
-    VERDICT_CRASHED,       /* the program was killed by a signal */
-    VERDICT_TIMEOUT,       /* the program did not finish within the time limit */
-    VERDICT_OUT_OF_MEMORY, /* the program said it ran out of memory, or the system killed it */
-    VERDICT_BUILD_FAILED,  /* make failed, so there was no program to run */
-    VERDICT_COUNT
+    VERDICT_PASS, VERDICT_FAIL, VERDICT_WRONG_SIZE, VERDICT_LINK, VERDICT_UNREADABLE,
+    VERDICT_MISSING, VERDICT_ERROR, VERDICT_CRASHED, VERDICT_TIMEOUT, VERDICT_OUT_OF_MEMORY,
+    VERDICT_BUILD_FAILED, VERDICT_COUNT
 } Verdict;
 
 /* The summary's columns, into which the verdicts fall. */
 typedef enum { TALLY_PASS, TALLY_FAIL, TALLY_MISSING, TALLY_ERROR, TALLY_COUNT } Tally;
 
-/* What the report and the CSV call a verdict ("WRONG SIZE"), the summary column it counts
- * in (a wrong, linked or unreadable image is a failed one; a program that made none, an
- * error), and what it means, for the report's legend. */
+/* A verdict's name in the report and the CSV ("WRONG SIZE"), its column, and its meaning. */
 typedef struct {
     const char *name;
     Tally tally;
@@ -41,13 +32,11 @@ extern const VerdictInfo verdict_info[VERDICT_COUNT];
 typedef struct {
     double threshold, allow; /* the tolerances imgdiff used */
     double max[3];           /* the largest difference in R, G and B, from 0 to 1 */
-    double mean, rmse;       /* over every channel of every pixel */
-    double psnr;             /* in dB; infinite for equal images */
-    long differing;          /* pixels with a channel difference above the threshold */
-    long pixels;
+    double mean, rmse, psnr; /* psnr in dB; infinite for equal images */
+    long differing, pixels;  /* differing: pixels with a channel difference above threshold */
     bool has_box;
     int box[4];        /* x0, y0, x1, y1 around the differing pixels, y from the top */
-    double heat_scale; /* the difference the heat map shows white; 0: no heat map */
+    double heat_scale; /* the difference the heat map shows white */
 } Figures;
 
 /* One line of renders.txt: a reference image and the scene it was rendered from. */
@@ -55,10 +44,10 @@ typedef struct {
     char *image;          /* the reference's file name: spheres-three.png */
     char *name;           /* the same without the extension: the scene's name in the report */
     char *scene;          /* the scene file as renders.txt gives it, from the repository's top */
-    char *scene_path;     /* the scene file's absolute path, given to students' programs */
+    char *scene_path;     /* its absolute path, given to students' programs */
     char **args;          /* the positional extra words for students' programs, NULL-ended */
     char *reference;      /* the reference image's path */
-    char *reference_show; /* its thumbnail (PNG) for the report */
+    char *reference_show; /* its thumbnail for the report */
 } Render;
 
 /* The grading of one scene of one submission. */
@@ -68,9 +57,8 @@ typedef struct {
     bool compared;     /* figures holds imgdiff's answer */
     bool identical;    /* equal to the reference: its thumbnail and a black map serve */
     Figures figures;
-    char *image_show;      /* the thumbnail of the submitted image, or NULL */
-    char *heat_show;       /* the thumbnail of the heat map, or NULL */
-    char *log_tail;        /* the last lines the program printed, or NULL */
+    char *image_show, *heat_show; /* the thumbnails of the image and its heat map, or NULL */
+    char *log_tail;               /* the last lines the program printed, or NULL */
     double relative_width; /* a wrong-sized image's width over the reference's; else 0 */
     double seconds;        /* how long the program ran; below 0 when none was run */
 } SceneResult;
@@ -86,7 +74,6 @@ typedef struct {
     char *build_log_tail;    /* the end of make's output, or NULL */
     SceneResult *results;    /* one a render */
     int tally[TALLY_COUNT];
-    int verdicts[VERDICT_COUNT];
 } Submission;
 
 /* Everything a grading run knows: what was asked, what was found, what came out. */
@@ -99,7 +86,7 @@ typedef struct {
     Submission *subs;
     int sub_count;
     const char *submissions; /* the submissions folder, as given */
-    char *out;               /* where report.html and grades.csv go */
+    const char *out;         /* where report.html and grades.csv go */
     char *work;              /* OUT/work: copies, builds, images, logs, heat maps */
     char *imgdiff;           /* the imgdiff program */
     const char *threshold;   /* imgdiff's --threshold, as text */
@@ -107,19 +94,74 @@ typedef struct {
     double time_limit;       /* seconds for each run of a student's program */
     double build_time_limit; /* seconds for make */
     long long memory_limit;  /* bytes of address space; 0: none */
-    bool quiet;              /* no progress lines */
-    bool self;               /* submissions is one student's folder: a check before handing in */
+    bool quiet, self, help;  /* self: submissions is one student's folder */
     char started[32];        /* when grading began, for the report */
 } Grading;
 
+/* Where and how long a child may run: dir NULL is the grader's; log NULL is /dev/null; a
+ * limit of 0 is none. */
+typedef struct {
+    const char *dir, *log;
+    double time_limit;      /* seconds of wall-clock time */
+    long long memory_limit; /* bytes of address space */
+} RunSpec;
+
+/* How a child ended: status is the exit status (RUN_EXITED), the signal (RUN_KILLED) or the
+ * errno (RUN_NOT_RUN: fork failed). */
+typedef enum { RUN_EXITED, RUN_KILLED, RUN_TIMED_OUT, RUN_NOT_RUN, RUN_INTERRUPTED } RunEnd;
+
+typedef struct {
+    RunEnd end;
+    int status;
+    double seconds;
+} RunResult;
+
+/* The longest side of a thumbnail: three fit side by side on a laptop's screen. */
+#define THUMB_SIDE 320
+
+/* The memory limit of the grader's own children that read students' files: none under
+ * AddressSanitizer, whose shadow memory no limit leaves room for. */
+#if defined(__SANITIZE_ADDRESS__)
+#define RUN_OWN_MEMORY(limit) ((void)(limit), 0LL)
+#else
+#define RUN_OWN_MEMORY(limit) (limit)
+#endif
+
+/* grade.c */
 void *grade_alloc(size_t size);
 char *grade_format(const char *fmt, ...) DIAG_PRINTF(1, 2);
-char *grade_copy(const char *text);
-void grade_size_text(long long bytes, char *text, size_t size);
-bool grade_is_folder(const char *path);
-bool grade_is_file(const char *path);
+char *grade_size_text(long long bytes);
+int grade_kind(const char *path);
 bool grade_make_folder(const char *path, bool anew);
-void grade_print_first_line(const char *prefix, const char *path);
 void grade_verdict(SceneResult *res, Verdict v, const char *fmt, ...) DIAG_PRINTF(3, 4);
+
+/* grade_part.c */
+char *part_find_top(const char *argv0, char **tools_build);
+char **part_list_folders(const char *folder, int *count);
+char *part_find(const char *top, const char *part);
+bool part_read_renders(Grading *g, const char *top);
+bool part_show_references(Grading *g);
+
+/* grade_submission.c */
+bool submission_list(Grading *g);
+bool submission_grade_all(Grading *g);
+
+/* grade_compare.c */
+bool compare_handed_in(const Render *r, SceneResult *res, const char *path);
+void compare_image(const Grading *g, const Submission *s, int k, const char *image);
+bool compare_thumb(const char *from, const char *to, bool peaks, const char *log,
+                   long long memory_limit);
+
+/* grade_run.c */
+void run_init(void);
+RunResult run_program(char *const argv[], const RunSpec *spec);
+RunResult run_function(int (*function)(void *), void *arg, const RunSpec *spec);
+char *run_describe(const RunResult *r, double limit);
+char *run_log_tail(const char *path);
+
+/* grade_report.c, grade_csv.c */
+bool report_write(const Grading *g);
+void csv_write(FILE *f, const Grading *g);
+int report_print_self(const Grading *g);
 
 #endif

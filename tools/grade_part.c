@@ -1,17 +1,15 @@
 /* grade_part.c: what grading reads first: the repository, the part, its renders.txt. */
-#include "grade_part.h"
+#include "grade.h"
 
 #include <dirent.h>
 #include <errno.h>
 #include <limits.h>
-#include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 #include <unistd.h>
 
 #include "array.h"
 #include "cli.h"
-#include "grade_thumb.h"
 #include "stop.h"
 
 /* Returns the top of the repository, two folders above the grader's program
@@ -26,24 +24,13 @@ char *part_find_top(const char *argv0, char **tools_build)
     else if (realpath(argv0, exe) == NULL)
         exe[0] = '\0';
     char *slash = strrchr(exe, '/');
-    char *top = NULL;
-    if (slash != NULL) {
-        *slash = '\0';
-        *tools_build = grade_copy(exe);
-        char *up = grade_format("%s/../..", exe);
-        if (realpath(up, real) != NULL)
-            top = grade_copy(real);
-        free(up);
-    }
-    char *milestones = top != NULL ? grade_format("%s/milestones", top) : NULL;
-    if (milestones == NULL || !grade_is_folder(milestones)) {
-        fprintf(stderr, "grade: cannot find the raytra repository: the grader must stay in "
-                        "tools/build/ of its checkout\n");
-        free(top);
-        top = NULL;
-    }
-    free(milestones);
-    return top;
+    *tools_build = grade_format("%.*s", slash != NULL ? (int)(slash - exe) : 0, exe);
+    char *milestones = grade_format("%s/../../milestones", *tools_build);
+    if (realpath(milestones, real) != NULL && grade_kind(real) == S_IFDIR)
+        return grade_format("%.*s", (int)(strrchr(real, '/') - real), real);
+    fprintf(stderr, "grade: cannot find the raytra repository: the grader must stay in "
+                    "tools/build/ of its checkout\n");
+    return NULL;
 }
 
 /* Tells whether a folder's entry is not hidden, for scandir. */
@@ -63,22 +50,12 @@ char **part_list_folders(const char *folder, int *count)
     char **names = grade_alloc(((size_t)n + 1) * sizeof *names);
     *count = 0;
     for (int k = 0; k < n; k++) {
-        char *path = grade_format("%s/%s", folder, entries[k]->d_name);
-        if (grade_is_folder(path))
-            names[(*count)++] = grade_copy(entries[k]->d_name);
-        free(path);
+        if (grade_kind(grade_format("%s/%s", folder, entries[k]->d_name)) == S_IFDIR)
+            names[(*count)++] = grade_format("%s", entries[k]->d_name);
         free(entries[k]);
     }
     free(entries);
     return names;
-}
-
-/* Frees the count names of a listing. */
-void part_free_names(char **names, int count)
-{
-    for (int k = 0; k < count; k++)
-        free(names[k]);
-    free(names);
 }
 
 /* Returns the folder of part `part`: a path, a folder of milestones/, or the one folder of
@@ -86,9 +63,9 @@ void part_free_names(char **names, int count)
 char *part_find(const char *top, const char *part)
 {
     char real[PATH_MAX];
+    if (strchr(part, '/') != NULL && realpath(part, real) != NULL && grade_kind(real) == S_IFDIR)
+        return grade_format("%s", real);
     if (strchr(part, '/') != NULL) {
-        if (realpath(part, real) != NULL && grade_is_folder(real))
-            return grade_copy(real);
         fprintf(stderr, "grade: no part folder '%s'\n", part);
         return NULL;
     }
@@ -107,18 +84,14 @@ char *part_find(const char *top, const char *part)
         if (exact)
             break;
     }
-    char *found = matches == 1 ? grade_format("%s/%s", milestones, match) : NULL;
-    if (found == NULL) {
-        fprintf(stderr,
-                "grade: %s part '%s' in %s; the parts are:", matches == 0 ? "no" : "more than one",
-                part, milestones);
-        for (int k = 0; k < count; k++)
-            fprintf(stderr, " %s", names[k]);
-        fputc('\n', stderr);
-    }
-    part_free_names(names, count);
-    free(milestones);
-    return found;
+    if (matches == 1)
+        return grade_format("%s/%s", milestones, match);
+    fprintf(stderr, "grade: %s part '%s' in %s; the parts are:",
+            matches == 0 ? "no" : "more than one", part, milestones);
+    for (int k = 0; k < count; k++)
+        fprintf(stderr, " %s", names[k]);
+    fputc('\n', stderr);
+    return NULL;
 }
 
 /* Returns raytra's option that `word` names (--name, --name=VALUE or -L), from the one
@@ -141,16 +114,14 @@ static void keep_positional(Render *r, char **words, int n, int part, bool quiet
     r->args = grade_alloc(((size_t)n + 1) * sizeof *r->args);
     int kept = 0;
     for (int k = 0; k < n; k++) {
-        if (words[k][0] != '-' || words[k][1] == '\0') {
-            r->args[kept++] = grade_copy(words[k]);
-            continue;
-        }
-        const CliOption *o = option_of(words[k]);
+        const CliOption *o = words[k][0] == '-' ? option_of(words[k]) : NULL;
         const char *eq = strchr(words[k], '=');
         bool next = o != NULL && o->kind != OPTION_FLAG && eq == NULL && k + 1 < n;
         const char *value = eq != NULL ? eq + 1 : next ? words[k + 1] : NULL;
-        if (o != NULL && o->argument != NULL && value != NULL && cli_option_accepted(o, part))
-            r->args[kept++] = grade_copy(value);
+        if (words[k][0] != '-' || words[k][1] == '\0')
+            r->args[kept++] = grade_format("%s", words[k]);
+        else if (o != NULL && o->argument != NULL && value != NULL && cli_option_accepted(o, part))
+            r->args[kept++] = grade_format("%s", value);
         else if (!quiet)
             fprintf(stderr,
                     "grade: note: %s: raytra's option %s%s%s is not given to students' "
@@ -160,21 +131,16 @@ static void keep_positional(Render *r, char **words, int n, int part, bool quiet
     }
 }
 
-/* Adds the render of a renders.txt line (its words) to g; false (reported) when the line
+/* Adds the render of a renders.txt line (its words) to g, or its name to the illustrations
+ * (marked '!': raytra's own pictures, graded on no student); false (reported) when the line
  * is not a valid one or names a file that is not there. */
 static bool add_render(Grading *g, const char *top, char **words, int n, const char *where)
 {
-    const char *image = words[0];
-    const char *dot = strrchr(image, '.');
+    const char *image = words[0], *dot = strrchr(image, '.');
+    int stem = dot != NULL ? (int)(dot - image) : (int)strlen(image);
     if (image[0] == '!') {
-        /* An illustration: raytra's own picture (an option students do not have, a
-         * robustness case), which the references keep but no student is graded on. */
-        char *more =
-            grade_format("%s%s%.*s", g->illustrations != NULL ? g->illustrations : "",
-                         g->illustrations != NULL ? ", " : "",
-                         dot != NULL ? (int)(dot - image - 1) : (int)strlen(image + 1), image + 1);
-        free(g->illustrations);
-        g->illustrations = more;
+        g->illustrations = grade_format("%s%s%.*s", g->illustrations ? g->illustrations : "",
+                                        g->illustrations ? ", " : "", stem - 1, image + 1);
         return true;
     }
     if (n < 2 || strchr(image, '/') != NULL || dot == NULL ||
@@ -185,38 +151,29 @@ static bool add_render(Grading *g, const char *top, char **words, int n, const c
         return false;
     }
     Render *r = &g->renders[g->render_count++];
-    *r = (Render){.image = grade_copy(image), .scene = grade_copy(words[1])};
-    r->name = grade_format("%.*s", (int)(dot - image), image);
-    r->scene_path =
-        words[1][0] == '/' ? grade_copy(words[1]) : grade_format("%s/%s", top, words[1]);
+    *r = (Render){.image = grade_format("%s", image), .scene = grade_format("%s", words[1])};
+    r->name = grade_format("%.*s", stem, image);
+    r->scene_path = words[1][0] == '/' ? r->scene : grade_format("%s/%s", top, words[1]);
     r->reference = grade_format("%s/%s", g->references, image);
     keep_positional(r, words + 2, n - 2, cli_part_number(g->part), g->quiet);
-    if (!grade_is_file(r->scene_path)) {
+    if (grade_kind(r->scene_path) != S_IFREG)
         fprintf(stderr, "grade: %s: no scene file %s\n", where, r->scene_path);
-        return false;
-    }
-    if (!grade_is_file(r->reference)) {
+    else if (grade_kind(r->reference) != S_IFREG)
         fprintf(stderr, "grade: %s: no reference image %s (make references makes it)\n", where,
                 r->reference);
-        return false;
-    }
-    return true;
+    return grade_kind(r->scene_path) == S_IFREG && grade_kind(r->reference) == S_IFREG;
 }
 
 /* Reads references/renders.txt into g->renders; false (reported) when it cannot. */
 bool part_read_renders(Grading *g, const char *top)
 {
-    char *path = grade_format("%s/renders.txt", g->references);
+    char *path = grade_format("%s/renders.txt", g->references), *line = NULL;
     FILE *f = fopen(path, "r");
-    if (f == NULL) {
-        fprintf(stderr, "grade: cannot read %s: %s\n", path, strerror(errno));
-        free(path);
-        return false;
-    }
-    char *line = NULL;
     size_t size = 0;
     int line_number = 0, capacity = 0;
-    bool ok = true;
+    bool ok = f != NULL;
+    if (f == NULL)
+        fprintf(stderr, "grade: cannot read %s: %s\n", path, strerror(errno));
     while (ok && getline(&line, &size, f) >= 0) {
         line_number++;
         char *words[64], *save = NULL;
@@ -227,19 +184,18 @@ bool part_read_renders(Grading *g, const char *top)
         if (n == 0 || words[0][0] == '#')
             continue;
         char *where = grade_format("%s:%d", path, line_number);
-        bool grown = array_grow(&g->renders, &capacity, g->render_count, sizeof *g->renders);
-        if (!grown)
+        ok = array_grow(&g->renders, &capacity, g->render_count, sizeof *g->renders);
+        if (!ok)
             fprintf(stderr, "grade: %s: out of memory\n", where);
-        ok = grown && add_render(g, top, words, n, where);
-        free(where);
+        ok = ok && add_render(g, top, words, n, where);
     }
-    free(line);
-    fclose(f);
     if (ok && g->render_count == 0) {
         fprintf(stderr, "grade: %s lists no images\n", path);
         ok = false;
     }
-    free(path);
+    free(line);
+    if (f != NULL)
+        fclose(f);
     return ok;
 }
 
@@ -250,14 +206,13 @@ bool part_show_references(Grading *g)
         Render *r = &g->renders[k];
         r->reference_show = grade_format("%s/references/%s.png", g->work, r->name);
         char *log = grade_format("%s/references/%s.log", g->work, r->name);
-        bool ok = thumb_make(r->reference, r->reference_show, THUMB_SIDE, THUMB_MEAN, log, 0);
-        if (!ok && !stop_requested()) {
-            fprintf(stderr, "grade: cannot read the reference image %s:\n", r->reference);
-            grade_print_first_line("    ", log);
-        }
-        free(log);
-        if (!ok)
-            return false;
+        if (compare_thumb(r->reference, r->reference_show, false, log, 0))
+            continue;
+        char *said = run_log_tail(log);
+        if (!stop_requested())
+            fprintf(stderr, "grade: cannot read the reference image %s: %s\n", r->reference,
+                    said != NULL ? said : "no reason given");
+        return false;
     }
     return true;
 }

@@ -1,20 +1,21 @@
-/* grade_report.c: writing grades.csv and report.html (images inside), each appearing only whole. */
-#include "grade_report.h"
+/* grade_report.c: report.html, one self-contained page, and grades.csv, each written whole. */
+#include "grade.h"
 
 #include <math.h>
 #include <stdarg.h>
-#include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 #include <sys/stat.h>
 #include <unistd.h>
 
-#include "grade_csv.h"
-#include "grade_thumb.h"
+#include "imgfile.h"
 #include "outfile.h"
 
 /* A thumbnail this narrow or narrower is shown enlarged with sharp pixels. */
 #define PIXELATED_WIDTH 200
+
+/* The largest picture embedded: thumbnails are far smaller; a larger file is a mistake. */
+#define EMBED_MAX_BYTES (8L << 20)
 
 /* Each verdict's name, column and meaning; in the order of Verdict. */
 const VerdictInfo verdict_info[VERDICT_COUNT] = {
@@ -42,32 +43,17 @@ const VerdictInfo verdict_info[VERDICT_COUNT] = {
 /* The summary's class (and colour) for each tally. */
 static const char *const tally_class[TALLY_COUNT] = {"pass", "fail", "missing", "error"};
 
-/* Writes text with the characters HTML gives a meaning made plain. */
-static void html_text(FILE *f, const char *text)
-{
-    for (const char *p = text; p != NULL && *p != '\0'; p++)
-        switch (*p) {
-        case '&': fputs("&amp;", f); break;
-        case '<': fputs("&lt;", f); break;
-        case '>': fputs("&gt;", f); break;
-        case '"': fputs("&quot;", f); break;
-        case '\'': fputs("&#39;", f); break;
-        default: fputc(*p, f);
-        }
-}
-
 /* The page's style sheet: grade_report.css, made a C string by the build (grade.mk), which
- * must stay under the 4095 bytes ISO C promises a string; write_style adds a rule a
- * reference picture. */
+ * must stay under the 4095 bytes ISO C promises a string. */
 static const char style[] =
 #include "grade_style.h"
     ;
 
-/* The page's parts, filled by html_put: %s is a text made plain, %S raw HTML, %d a number. */
+/* The page's parts, filled by html_put. */
 static const char page_head[] =
     "<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n"
     "<meta name=\"viewport\" content=\"width=device-width, initial-scale=1\">\n"
-    "<title>%s: grading report</title>\n<style>\n";
+    "<title>%s: grading report</title>\n<style>\n%S";
 static const char page_title[] =
     "</style>\n</head>\n<body>\n<header class=\"page\"><div>\n<h1>Grading report: part %s</h1>\n"
     "<p class=\"meta\">%d submission%S from <code>%s</code>, %d scene%S each, graded %s.</p>\n"
@@ -83,28 +69,38 @@ static const char summary_head[] =
 static const char legend_head[] =
     "</tbody>\n</table>\n<details><summary>What the verdicts mean, and how they are counted"
     "</summary>\n<dl class=\"legend\">\n";
+static const char scene_head[] =
+    "<details class=\"scene\"%S>\n<summary><span class=\"scene-name\">%s</span><span "
+    "class=\"badge %S\">%S</span><span class=\"message\">%s</span>%S</summary>\n<div "
+    "class=\"scene-body\">\n<p class=\"file\">Scene <code>%s";
+static const char submission_head[] =
+    "<section id=\"s%d\">\n<h2><span class=\"name\">%s</span><span class=\"kind\">%S</span><span "
+    "class=\"badge %S\">%S</span><a class=\"back\" href=\"#summary\">&uarr; summary</a></h2>\n";
 static const char page_end[] =
     "</main>\n<footer>Written by raytra's <code>tools/grade</code> (docs/grading.md). The "
     "builds, images, logs and heat maps are in <code>%s</code>.</footer>\n</body>\n</html>\n";
 
-/* Writes the template fmt with its conversions filled: %s a text made plain for HTML,
- * %S raw HTML, %d an int; a printf of three conversions, so that no name escapes. */
+/* Writes the template fmt with its conversions filled: %s a text with the characters HTML
+ * gives a meaning made plain, %S raw HTML, %d an int. */
 static void html_put(FILE *f, const char *fmt, ...)
 {
+    static const char specials[] = "&<>\"'", *const entities[] = {"&amp;", "&lt;", "&gt;",
+                                                                  "&quot;", "&#39;"};
     va_list ap;
     va_start(ap, fmt);
     for (const char *p = fmt; *p != '\0'; p++) {
-        if (*p != '%' || (p[1] != 's' && p[1] != 'S' && p[1] != 'd')) {
+        if (*p != '%' || strchr("sSd", p[1]) == NULL) {
             fputc(*p, f);
-            continue;
-        }
-        p++;
-        if (*p == 'd')
+        } else if (*++p == 'd') {
             fprintf(f, "%d", va_arg(ap, int));
-        else if (*p == 'S')
+        } else if (*p == 'S') {
             fputs(va_arg(ap, const char *), f);
-        else
-            html_text(f, va_arg(ap, const char *));
+        } else {
+            for (const char *t = va_arg(ap, const char *); t != NULL && *t != '\0'; t++) {
+                const char *special = strchr(specials, *t);
+                special != NULL ? fputs(entities[special - specials], f) : fputc(*t, f);
+            }
+        }
     }
     va_end(ap);
 }
@@ -115,43 +111,64 @@ static const char *plural(int n)
     return n == 1 ? "" : "s";
 }
 
-/* Writes the style sheet, with one rule a reference picture: each is embedded once and
- * shown, as a background, beside every submission's image. */
-static void write_style(FILE *f, const Grading *g)
+/* Returns the thumbnail at path, a PNG the grader made, as a data: URI (base64) for the
+ * caller to free, with its size in pixels; NULL when it cannot be read. */
+static char *picture_uri(const char *path, int *width, int *height)
 {
-    fputs(style, f);
-    for (int k = 0; k < g->render_count; k++) {
-        Thumb p;
-        if (thumb_read(g->renders[k].reference_show, &p)) {
-            fprintf(f, ".ref%d{aspect-ratio:%d/%d;background-image:url(", k, p.width, p.height);
-            thumb_write_uri(f, &p);
-            fputs(")}\n", f);
-        }
+    static const char digits[] = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
+    ImgFileKind kind;
+    Error err;
+    struct stat st;
+    if (path == NULL || !imgfile_header(path, &kind, width, height, &err) || kind != IMGFILE_PNG)
+        return NULL;
+    FILE *in = imgfile_fopen(path);
+    bool ok = in != NULL && fstat(fileno(in), &st) == 0 && st.st_size <= EMBED_MAX_BYTES;
+    size_t size = ok ? (size_t)st.st_size : 0;
+    unsigned char *d = calloc(1, size + 2); /* two bytes more, zeroed, for base64's last group */
+    char *uri = malloc(size / 3 * 4 + 32), *u = uri;
+    ok = ok && d != NULL && uri != NULL && fread(d, 1, size, in) == size;
+    u += ok ? sprintf(uri, "data:image/png;base64,") : 0;
+    for (size_t i = 0; ok && i < size; i += 3, u += 4) {
+        unsigned long bits = (unsigned long)d[i] << 16 | (unsigned long)d[i + 1] << 8 | d[i + 2];
+        u[0] = digits[(bits >> 18) & 63];
+        u[1] = digits[(bits >> 12) & 63];
+        u[2] = i + 1 < size ? digits[(bits >> 6) & 63] : '=';
+        u[3] = i + 2 < size ? digits[bits & 63] : '=';
+        u[4] = '\0';
     }
+    if (in != NULL)
+        fclose(in);
+    free(d);
+    if (!ok)
+        free(uri);
+    return ok ? uri : NULL;
 }
 
-/* Returns a submission's overall verdict: PASS when every scene passes, BUILD FAILED,
- * or FAIL; *tally gets its colour. */
-static const char *overall_verdict(const Grading *g, const Submission *s, Tally *tally)
+/* Returns a submission's overall verdict: PASS when every scene passes, BUILD FAILED, or
+ * FAIL. */
+static const VerdictInfo *overall(const Grading *g, const Submission *s)
 {
-    *tally = s->build_message[0] != '\0'               ? TALLY_ERROR
-             : s->tally[TALLY_PASS] == g->render_count ? TALLY_PASS
-                                                       : TALLY_FAIL;
-    return *tally == TALLY_ERROR ? "BUILD FAILED" : *tally == TALLY_PASS ? "PASS" : "FAIL";
+    return &verdict_info[s->build_message[0] != '\0'               ? VERDICT_BUILD_FAILED
+                         : s->tally[TALLY_PASS] == g->render_count ? VERDICT_PASS
+                                                                   : VERDICT_FAIL];
 }
 
-/* Writes the page's head and title block: what was graded, how, when. */
+/* Writes the page's head, with a style rule a reference picture, each embedded once and
+ * shown as a background beside every submission's image; and the title block. */
 static void write_heading(FILE *f, const Grading *g)
 {
-    char limit[32], time[32], build[32];
-    grade_size_text(g->memory_limit, limit, sizeof limit);
-    snprintf(time, sizeof time, "%g", g->time_limit);
-    snprintf(build, sizeof build, "%g", g->build_time_limit);
-    html_put(f, page_head, g->part);
-    write_style(f, g);
+    html_put(f, page_head, g->part, style);
+    for (int k = 0; k < g->render_count; k++) {
+        int w, h;
+        char *uri = picture_uri(g->renders[k].reference_show, &w, &h);
+        if (uri != NULL)
+            fprintf(f, ".ref%d{aspect-ratio:%d/%d;background-image:url(%s)}\n", k, w, h, uri);
+        free(uri);
+    }
     html_put(f, page_title, g->part, g->sub_count, plural(g->sub_count), g->submissions,
-             g->render_count, plural(g->render_count), g->started, g->threshold, g->allow, time,
-             build, limit);
+             g->render_count, plural(g->render_count), g->started, g->threshold, g->allow,
+             grade_format("%g", g->time_limit), grade_format("%g", g->build_time_limit),
+             grade_size_text(g->memory_limit));
     if (g->illustrations != NULL)
         html_put(f, "<p class=\"meta\">Not graded (illustrations): %s.</p>\n", g->illustrations);
 }
@@ -172,20 +189,17 @@ static void write_summary(FILE *f, const Grading *g)
         /* A square a scene, in its verdict's colour, named when pointed at. */
         fputs("<td class=\"dots\">", f);
         for (int k = 0; k < g->render_count; k++) {
-            Verdict v = s->results[k].verdict;
-            html_put(f, "<span class=\"dot %S\" title=\"%s: %S\"></span>",
-                     tally_class[verdict_info[v].tally], g->renders[k].name, verdict_info[v].name);
+            const VerdictInfo *v = &verdict_info[s->results[k].verdict];
+            html_put(f, "<span class=\"dot %S\" title=\"%s: %S\"></span>", tally_class[v->tally],
+                     g->renders[k].name, v->name);
         }
-        Tally tally;
-        const char *verdict = overall_verdict(g, s, &tally);
-        html_put(f, "</td><td><span class=\"badge %S\">%S</span></td></tr>\n", tally_class[tally],
-                 verdict);
+        html_put(f, "</td><td><span class=\"badge %S\">%S</span></td></tr>\n",
+                 tally_class[overall(g, s)->tally], overall(g, s)->name);
     }
     html_put(f, legend_head);
-    for (int v = 0; v < VERDICT_COUNT; v++)
+    for (const VerdictInfo *v = verdict_info; v < verdict_info + VERDICT_COUNT; v++)
         html_put(f, "<dt><span class=\"badge %S\">%S</span></dt><dd>%S; counted as %S</dd>\n",
-                 tally_class[verdict_info[v].tally], verdict_info[v].name, verdict_info[v].meaning,
-                 tally_class[verdict_info[v].tally]);
+                 tally_class[v->tally], v->name, v->meaning, tally_class[v->tally]);
     fputs("</dl>\n</details>\n</section>\n", f);
 }
 
@@ -197,90 +211,77 @@ static void write_log(FILE *f, const char *title, const char *log, bool open)
                  open ? " open" : "", title, log);
 }
 
-/* Writes a figure of scene k: the thumbnail at path (width its share of the column: an
- * image of another size is shown at its relative size), the reference's picture with
- * classes `same` when path is NULL, or a box of the reference's shape saying `none`. */
-static void write_figure(FILE *f, const char *path, const char *same, double width, int k,
+/* Writes a figure of scene k: the reference's picture with classes `same` when it stands
+ * for this one, else the thumbnail at path (width its share of the column: an image of
+ * another size is shown at its relative size), else a box of the reference's shape
+ * saying `none`. */
+static void write_figure(FILE *f, const char *same, const char *path, double width, int k,
                          const char *alt, const char *caption, const char *none)
 {
-    Thumb p;
+    int w, h;
+    char *uri = same == NULL ? picture_uri(path, &w, &h) : NULL;
     fputs("<figure>", f);
-    if (path == NULL && same != NULL) {
+    if (same != NULL)
         html_put(f, "<div class=\"pic %S%d\" role=\"img\" aria-label=\"%S\"></div>", same, k, alt);
-    } else if (thumb_read(path, &p)) {
+    else if (uri != NULL)
         fprintf(f,
                 "<img class=\"pic%s\" width=\"%d\" height=\"%d\" style=\"width:%.1f%%\" "
-                "alt=\"%s\" src=\"",
-                p.width <= PIXELATED_WIDTH ? " px" : "", p.width, p.height, 100 * width, alt);
-        thumb_write_uri(f, &p);
-        fputs("\">", f);
-    } else {
-        /* The reference's rule gives the box its shape; .pic.none wins its background. */
+                "alt=\"%s\" src=\"%s\">",
+                w <= PIXELATED_WIDTH ? " px" : "", w, h, 100 * width, alt, uri);
+    else /* the reference's rule gives the box its shape; .pic.none wins its background */
         fprintf(f, "<div class=\"pic none ref%d\">%s</div>", k, none);
-    }
     html_put(f, "<figcaption>%S</figcaption></figure>\n", caption);
-}
-
-/* Writes the table of imgdiff's figures. */
-static void write_figures(FILE *f, const Figures *fig)
-{
-    fprintf(f,
-            "<table class=\"figures\"><tr><th>Max diff R, G, B</th><td>%.3g, %.3g, %.3g /255</td>"
-            "</tr><tr><th>Mean abs diff</th><td>%.3g /255</td></tr><tr><th>RMSE</th><td>%.4g"
-            "</td></tr>",
-            fig->max[0] * 255, fig->max[1] * 255, fig->max[2] * 255, fig->mean * 255, fig->rmse);
-    if (isinf(fig->psnr))
-        fputs("<tr><th>PSNR</th><td>&infin; (equal)</td></tr>", f);
-    else
-        fprintf(f, "<tr><th>PSNR</th><td>%.2f dB</td></tr>", fig->psnr);
-    fprintf(f, "<tr><th>Differing pixels</th><td>%ld (%.3g%%)</td></tr>", fig->differing,
-            fig->pixels > 0 ? 100.0 * fig->differing / fig->pixels : 0.0);
-    if (fig->has_box)
-        fprintf(f, "<tr><th>Region</th><td>(%d,%d)&ndash;(%d,%d)</td></tr>", fig->box[0],
-                fig->box[1], fig->box[2], fig->box[3]);
-    fputs("</table>\n", f);
+    free(uri);
 }
 
 /* Writes the pictures of a scene side by side, the reference, the submitted image and the
- * heat map, with imgdiff's figures. */
+ * heat map (the reference's picture and a black one for an identical image), with imgdiff's
+ * figures. */
 static void write_pictures(FILE *f, const SceneResult *res, int k)
 {
-    char caption[128] = "Differences";
+    const Figures *fig = &res->figures;
+    char caption[128] = "Differences", psnr[32] = "&infin; (equal)", box[128] = "";
     if (res->identical)
         snprintf(caption, sizeof caption, "Differences: none, the images are identical");
     else if (res->heat_show != NULL)
         snprintf(caption, sizeof caption, "Differences: black where equal, white at %.3g/255",
-                 res->figures.heat_scale * 255);
+                 fig->heat_scale * 255);
     double width = res->relative_width > 0 && res->relative_width < 1 ? res->relative_width : 1;
-    const char *image = res->identical ? NULL : res->image_show;
-    const char *heat = res->identical ? NULL : res->heat_show;
     fputs("<div class=\"pictures\">\n", f);
-    write_figure(f, NULL, "ref", 1, k, "reference image", "Reference", NULL);
-    write_figure(f, image, res->identical ? "ref" : NULL, width, k, "submitted image", "Submission",
-                 "no image");
-    write_figure(f, heat, res->identical ? "black ref" : NULL, 1, k, "heat map of the differences",
-                 caption, "no comparison");
+    write_figure(f, "ref", NULL, 1, k, "reference image", "Reference", NULL);
+    write_figure(f, res->identical ? "ref" : NULL, res->image_show, width, k, "submitted image",
+                 "Submission", "no image");
+    write_figure(f, res->identical ? "black ref" : NULL, res->heat_show, 1, k,
+                 "heat map of the differences", caption, "no comparison");
+    if (!isinf(fig->psnr))
+        snprintf(psnr, sizeof psnr, "%.2f dB", fig->psnr);
+    if (fig->has_box)
+        snprintf(box, sizeof box, "<tr><th>Region</th><td>(%d,%d)&ndash;(%d,%d)</td></tr>",
+                 fig->box[0], fig->box[1], fig->box[2], fig->box[3]);
     if (res->compared)
-        write_figures(f, &res->figures);
+        fprintf(f,
+                "<table class=\"figures\"><tr><th>Max diff R, G, B</th><td>%.3g, %.3g, %.3g /255"
+                "</td></tr><tr><th>Mean abs diff</th><td>%.3g /255</td></tr><tr><th>RMSE</th><td>"
+                "%.4g</td></tr><tr><th>PSNR</th><td>%s</td></tr><tr><th>Differing pixels</th><td>"
+                "%ld (%.3g%%)</td></tr>%s</table>\n",
+                fig->max[0] * 255, fig->max[1] * 255, fig->max[2] * 255, fig->mean * 255,
+                fig->rmse, psnr, fig->differing,
+                fig->pixels > 0 ? 100.0 * fig->differing / fig->pixels : 0.0, box);
     fputs("</div>\n", f);
 }
 
-/* Writes one scene of one submission, a line that opens (open already unless it passed)
+/* Writes one scene of one submission: a line that opens (open already unless it passed)
  * on the scene file, the pictures when there is an image, and the program's output. */
 static void write_scene(FILE *f, const Grading *g, const Submission *s, int k)
 {
     const Render *r = &g->renders[k];
     const SceneResult *res = &s->results[k];
     Tally tally = verdict_info[res->verdict].tally;
-    char seconds[400] = "";
+    char seconds[64] = "";
     if (res->seconds >= 0)
         snprintf(seconds, sizeof seconds, "<span class=\"time\">%.2f s</span>", res->seconds);
-    html_put(f,
-             "<details class=\"scene\"%S>\n<summary><span class=\"scene-name\">%s</span>"
-             "<span class=\"badge %S\">%S</span><span class=\"message\">%s</span>%S</summary>\n"
-             "<div class=\"scene-body\">\n<p class=\"file\">Scene <code>%s",
-             res->verdict == VERDICT_PASS ? "" : " open", r->name, tally_class[tally],
-             verdict_info[res->verdict].name, res->message, seconds, r->scene);
+    html_put(f, scene_head, res->verdict == VERDICT_PASS ? "" : " open", r->name,
+             tally_class[tally], verdict_info[res->verdict].name, res->message, seconds, r->scene);
     for (char **a = r->args; *a != NULL; a++)
         html_put(f, " %s", *a);
     fputs("</code></p>\n", f);
@@ -290,41 +291,28 @@ static void write_scene(FILE *f, const Grading *g, const Submission *s, int k)
     fputs("</div>\n</details>\n", f);
 }
 
-/* Writes one submission's section: its verdict, its build, and each of its scenes. */
-static void write_submission(FILE *f, const Grading *g, int i)
-{
-    const Submission *s = &g->subs[i];
-    Tally tally;
-    const char *verdict = overall_verdict(g, s, &tally);
-    html_put(f,
-             "<section id=\"s%d\">\n<h2><span class=\"name\">%s</span><span class=\"kind\">%S"
-             "</span><span class=\"badge %S\">%S</span><a class=\"back\" href=\"#summary\">"
-             "&uarr; summary</a></h2>\n",
-             i + 1, s->name, s->program ? "program" : "images", tally_class[tally], verdict);
-    if (s->build_message[0] != '\0') {
-        html_put(f,
-                 "<div class=\"broken\"><strong>The build failed:</strong> %s. No scene "
-                 "could be rendered.",
-                 s->build_message);
-        write_log(f, "Build output (the last lines)", s->build_log_tail, true);
-        fputs("</div>\n</section>\n", f);
-        return;
-    }
-    html_put(f, "<p class=\"counts\">%d of %d scene%S pass.</p>\n", s->tally[TALLY_PASS],
-             g->render_count, plural(g->render_count));
-    write_log(f, "Build output (the last lines)", s->build_log_tail, false);
-    for (int k = 0; k < g->render_count; k++)
-        write_scene(f, g, s, k);
-    fputs("</section>\n", f);
-}
-
-/* Writes the whole page. */
+/* Writes the whole page: the heading, the summary, then a section a submission with its
+ * verdict, its build, and each of its scenes. */
 static void write_html(FILE *f, const Grading *g)
 {
     write_heading(f, g);
     write_summary(f, g);
-    for (int i = 0; i < g->sub_count; i++)
-        write_submission(f, g, i);
+    for (int i = 0; i < g->sub_count; i++) {
+        const Submission *s = &g->subs[i];
+        bool broken = s->build_message[0] != '\0';
+        html_put(f, submission_head, i + 1, s->name, s->program ? "program" : "images",
+                 tally_class[overall(g, s)->tally], overall(g, s)->name);
+        if (broken)
+            html_put(f, "<div class=\"broken\"><strong>The build failed:</strong> %s. No scene "
+                        "could be rendered.", s->build_message);
+        else
+            html_put(f, "<p class=\"counts\">%d of %d scene%S pass.</p>\n", s->tally[TALLY_PASS],
+                     g->render_count, plural(g->render_count));
+        write_log(f, "Build output (the last lines)", s->build_log_tail, broken);
+        for (int k = 0; k < g->render_count && !broken; k++)
+            write_scene(f, g, s, k);
+        fputs(broken ? "</div>\n</section>\n" : "</section>\n", f);
+    }
     html_put(f, page_end, g->work);
 }
 
@@ -346,12 +334,9 @@ static char *write_whole(const Grading *g, const char *name, void (*write)(FILE 
             ok = outfile_commit(&out, &err);
         }
     }
-    if (!ok) {
+    if (!ok)
         fprintf(stderr, "grade: cannot write %s: %s\n", path, err.text);
-        free(path);
-        path = NULL;
-    }
-    return path;
+    return ok ? path : NULL;
 }
 
 /* Writes grades.csv and report.html into g->out; false (reported) when it cannot. */
@@ -361,10 +346,7 @@ bool report_write(const Grading *g)
     char *html = csv != NULL ? write_whole(g, "report.html", write_html) : NULL;
     if (html != NULL && !g->quiet)
         fprintf(stderr, "grade: wrote %s and %s\n", html, csv);
-    bool ok = html != NULL;
-    free(csv);
-    free(html);
-    return ok;
+    return html != NULL;
 }
 
 /* Prints, for a student checking their own work, each scene's verdict and reason, and the
@@ -379,7 +361,6 @@ int report_print_self(const Grading *g)
         printf("%-12s %s: %s\n", verdict_info[res->verdict].name, g->renders[k].name, res->message);
         if (res->verdict != VERDICT_PASS && access(heat, F_OK) == 0)
             printf("%12s heat map: %s\n", "", heat);
-        free(heat);
     }
     printf("%d of %d scenes pass; the report: %s/report.html\n", s->tally[TALLY_PASS],
            g->render_count, g->out);

@@ -1,21 +1,17 @@
 /* grade_submission.c: the class's submissions: listed, then built and run or their images found. */
-#include "grade_submission.h"
+#include "grade.h"
 
 #include <ctype.h>
 #include <errno.h>
 #include <libgen.h>
 #include <limits.h>
 #include <signal.h>
-#include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 #include <strings.h>
 #include <sys/stat.h>
 #include <unistd.h>
 
-#include "grade_compare.h"
-#include "grade_part.h"
-#include "grade_run.h"
 #include "stop.h"
 
 /* Tells whether a program's last output says that it ran out of memory, in the words of
@@ -38,69 +34,46 @@ static bool says_out_of_memory(const char *output)
 static void grade_image(const Grading *g, Submission *s, int k)
 {
     const Render *r = &g->renders[k];
-    SceneResult *res = &s->results[k];
-    static const char *const endings[] = {"", ".png", ".pfm", ".exr"};
-    char *found = NULL;
+    static const char *const endings[] = {".png", ".pfm", ".exr"};
+    char *found = grade_format("%s/%s", s->path, r->image);
     struct stat st;
-    for (size_t e = 0; e < sizeof endings / sizeof endings[0] && found == NULL; e++) {
-        found = e == 0 ? grade_format("%s/%s", s->path, r->image)
-                       : grade_format("%s/%s%s", s->path, r->name, endings[e]);
-        if (lstat(found, &st) != 0) {
-            free(found);
-            found = NULL;
-        }
-    }
-    if (found == NULL)
-        grade_verdict(res, VERDICT_MISSING, "no %s.png, .pfm or .exr in the submission", r->name);
-    else if (compare_handed_in(r, res, found))
+    for (size_t e = 0; e < sizeof endings / sizeof *endings && lstat(found, &st) != 0; e++)
+        found = grade_format("%s/%s%s", s->path, r->name, endings[e]);
+    if (lstat(found, &st) != 0)
+        grade_verdict(&s->results[k], VERDICT_MISSING, "no %s.png, .pfm or .exr in the submission",
+                      r->name);
+    else if (compare_handed_in(r, &s->results[k], found))
         compare_image(g, s, k, found);
-    free(found);
 }
 
-/* Copies submission s into its work folder and runs make there under the limits; returns
- * the program it built, or NULL with the reason in s->build_message. */
+/* Copies submission s into its work folder (cp -P: a link stays a link, never followed out
+ * of it) and runs make there under the limits; returns the program it built, or NULL with
+ * the reason in s->build_message. */
 static char *build(const Grading *g, Submission *s)
 {
-    char *copy = grade_format("%s/build", s->work);
-    char *log = grade_format("%s/build.log", s->work);
-    char *from = grade_format("%s/.", s->path);
-    char *program = grade_format("%s/raytra", copy);
-    char how[200];
-    /* -P: a link in the submission stays a link, and is never followed out of it. */
-    char *cp[] = {"cp", "-R", "-P", "--", from, copy, NULL};
+    char *copy = grade_format("%s/build", s->work), *log = grade_format("%s/build.log", s->work);
+    char *program = grade_format("%s/raytra", copy), *message = s->build_message;
+    char *cp[] = {"cp", "-R", "-P", "--", grade_format("%s/.", s->path), copy, NULL};
+    char *make[] = {"make", NULL};
+    size_t size = sizeof s->build_message;
     RunSpec spec = {.log = log, .time_limit = 600};
     RunResult r = run_program(cp, &spec);
-    run_describe(&r, spec.time_limit, how, sizeof how);
-    char *message = s->build_message;
-    size_t size = sizeof s->build_message;
     if (r.end != RUN_EXITED || r.status != 0) {
-        snprintf(message, size, "the submission could not be copied to build it (cp: %s)", how);
+        snprintf(message, size, "the submission could not be copied to build it (cp: %s)",
+                 run_describe(&r, spec.time_limit));
     } else {
-        char *make[] = {"make", NULL};
-        spec = (RunSpec){.dir = copy,
-                         .log = log,
-                         .time_limit = g->build_time_limit,
-                         .memory_limit = g->memory_limit};
+        spec = (RunSpec){copy, log, g->build_time_limit, g->memory_limit};
         r = run_program(make, &spec);
-        run_describe(&r, spec.time_limit, how, sizeof how);
         if (r.end == RUN_TIMED_OUT)
             snprintf(message, size, "make did not finish within %g s", g->build_time_limit);
         else if (r.end != RUN_EXITED || r.status != 0)
-            snprintf(message, size, "make failed (%s)", how);
-        else if (!grade_is_file(program) || access(program, X_OK) != 0)
-            snprintf(message, size,
-                     "make succeeded but made no executable raytra beside the "
-                     "Makefile");
+            snprintf(message, size, "make failed (%s)", run_describe(&r, spec.time_limit));
+        else if (grade_kind(program) != S_IFREG || access(program, X_OK) != 0)
+            snprintf(message, size, "make succeeded but made no executable raytra beside the "
+                                    "Makefile");
     }
     s->build_log_tail = run_log_tail(log);
-    if (message[0] != '\0' || r.end == RUN_INTERRUPTED) {
-        free(program);
-        program = NULL;
-    }
-    free(from);
-    free(log);
-    free(copy);
-    return program;
+    return message[0] != '\0' || r.end == RUN_INTERRUPTED ? NULL : program;
 }
 
 /* Grades render k of a submission that is a program: runs it on the scene under the
@@ -120,45 +93,36 @@ static void run_scene(const Grading *g, Submission *s, int k, const char *progra
     argv[1] = r->scene_path;
     argv[2] = image;
     memcpy(argv + 3, r->args, ((size_t)n + 1) * sizeof *argv);
-    RunSpec spec = {
-        .dir = scratch, .log = log, .time_limit = g->time_limit, .memory_limit = g->memory_limit};
+    RunSpec spec = {scratch, log, g->time_limit, g->memory_limit};
     RunResult run = run_program(argv, &spec);
     res->seconds = run.seconds;
     res->log_tail = run_log_tail(log);
-    char how[200];
-    run_describe(&run, g->time_limit, how, sizeof how);
+    char *how = run_describe(&run, g->time_limit);
     struct stat st;
-    bool wrote = lstat(image, &st) == 0;
-    bool failed = run.end == RUN_KILLED || (run.end == RUN_EXITED && run.status != 0);
-    char limit[32];
-    grade_size_text(g->memory_limit, limit, sizeof limit);
+    bool wrote = lstat(image, &st) == 0, exited = run.end == RUN_EXITED;
+    bool failed = run.end == RUN_KILLED || (exited && run.status != 0);
     /* The kernel's out-of-memory killer sends SIGKILL; the grader's own kills are timeouts. */
     if (failed &&
         (says_out_of_memory(res->log_tail) || (run.end == RUN_KILLED && run.status == SIGKILL)))
         grade_verdict(res, VERDICT_OUT_OF_MEMORY, "ran out of memory (%s; memory limit %s)", how,
-                      limit);
+                      grade_size_text(g->memory_limit));
     else if (run.end == RUN_TIMED_OUT)
         grade_verdict(res, VERDICT_TIMEOUT, "did not finish within %g s", g->time_limit);
     else if (run.end == RUN_KILLED)
         grade_verdict(res, VERDICT_CRASHED, "%s", how);
     else if (run.end == RUN_NOT_RUN)
         grade_verdict(res, VERDICT_ERROR, "the grader could not start the program (%s)", how);
-    else if (run.end == RUN_EXITED && !wrote && run.status != 0)
+    else if (exited && !wrote && failed)
         grade_verdict(res, VERDICT_ERROR, "ended with %s and wrote no image", how);
-    else if (run.end == RUN_EXITED && !wrote)
+    else if (exited && !wrote)
         grade_verdict(res, VERDICT_MISSING, "ended normally but wrote no %s", r->image);
-    else if (run.end == RUN_EXITED && compare_handed_in(r, res, image))
+    else if (exited && compare_handed_in(r, res, image))
         compare_image(g, s, k, image);
     /* An image written before a failure exit is graded; the failure is told. */
-    if (run.end == RUN_EXITED && wrote && run.status != 0 &&
-        res->verdict != VERDICT_OUT_OF_MEMORY) {
+    if (exited && wrote && failed && res->verdict != VERDICT_OUT_OF_MEMORY) {
         size_t len = strlen(res->message);
         snprintf(res->message + len, sizeof res->message - len, "; the program ended with %s", how);
     }
-    free(argv);
-    free(scratch);
-    free(log);
-    free(image);
 }
 
 /* Grades every render of submission s into s->results and counts the verdicts; false
@@ -168,20 +132,12 @@ static bool grade_one(const Grading *g, Submission *s)
     s->results = grade_alloc((size_t)g->render_count * sizeof *s->results);
     for (int k = 0; k < g->render_count; k++)
         s->results[k].seconds = -1;
-    if (!grade_make_folder(s->work, true))
-        return false;
-    char *program = NULL;
-    if (s->program && s->link == NULL) {
-        char *images = grade_format("%s/images", s->work);
-        char *scratch = grade_format("%s/run", s->work);
-        bool ok = grade_make_folder(images, true) && grade_make_folder(scratch, true);
-        free(images);
-        free(scratch);
-        if (!ok)
-            return false;
-        program = build(g, s);
-    }
-    for (int k = 0; k < g->render_count && !stop_requested(); k++) {
+    bool ok = grade_make_folder(s->work, true) &&
+              (!s->program || s->link != NULL ||
+               (grade_make_folder(grade_format("%s/images", s->work), true) &&
+                grade_make_folder(grade_format("%s/run", s->work), true)));
+    char *program = ok && s->program && s->link == NULL ? build(g, s) : NULL;
+    for (int k = 0; ok && k < g->render_count && !stop_requested(); k++) {
         /* A folder that is a link (to a classmate's) is not a submission of its own. */
         if (s->link != NULL)
             grade_verdict(&s->results[k], VERDICT_LINK,
@@ -193,20 +149,9 @@ static bool grade_one(const Grading *g, Submission *s)
         else
             grade_verdict(&s->results[k], VERDICT_BUILD_FAILED, "%s", s->build_message);
     }
-    free(program);
-    for (int k = 0; k < g->render_count; k++) {
-        s->verdicts[s->results[k].verdict]++;
+    for (int k = 0; k < g->render_count; k++)
         s->tally[verdict_info[s->results[k].verdict].tally]++;
-    }
-    return !stop_requested();
-}
-
-/* Prints text to stderr with control characters made '?', so that a folder's name cannot
- * play tricks on the terminal. */
-static void print_plain(const char *text)
-{
-    for (const char *p = text; *p != '\0'; p++)
-        fputc((unsigned char)*p < 0x20 || *p == 0x7F ? '?' : *p, stderr);
+    return ok && !stop_requested();
 }
 
 /* Prints how the scenes of s went: "5 scenes: 4 pass, 1 timeout". */
@@ -218,13 +163,17 @@ static void print_tally(const Grading *g, const Submission *s)
     }
     fprintf(stderr, "%d scene%s:", g->render_count, g->render_count == 1 ? "" : "s");
     const char *sep = " ";
-    for (int v = 0; v < VERDICT_COUNT; v++)
-        if (s->verdicts[v] > 0) {
-            fprintf(stderr, "%s%d ", sep, s->verdicts[v]);
-            for (const char *p = verdict_info[v].name; *p != '\0'; p++)
-                fputc(tolower((unsigned char)*p), stderr);
-            sep = ", ";
-        }
+    for (int v = 0; v < VERDICT_COUNT; v++) {
+        int count = 0;
+        for (int k = 0; k < g->render_count; k++)
+            count += s->results[k].verdict == (Verdict)v;
+        if (count == 0)
+            continue;
+        fprintf(stderr, "%s%d ", sep, count);
+        for (const char *p = verdict_info[v].name; *p != '\0'; p++)
+            fputc(tolower((unsigned char)*p), stderr);
+        sep = ", ";
+    }
     fputc('\n', stderr);
 }
 
@@ -235,46 +184,33 @@ bool submission_grade_all(Grading *g)
     for (int k = 0; k < g->sub_count; k++) {
         Submission *s = &g->subs[k];
         if (!g->quiet) {
+            /* Control characters made '?': a folder's name cannot play tricks on the terminal. */
             fprintf(stderr, "grading ");
-            print_plain(s->name);
+            for (const char *p = s->name; *p != '\0'; p++)
+                fputc((unsigned char)*p < 0x20 || *p == 0x7F ? '?' : *p, stderr);
             fprintf(stderr, " (%s): %s", s->program ? "program" : "images",
                     s->program ? "building... " : "");
         }
-        if (!grade_one(g, s)) {
-            if (!g->quiet)
-                fputc('\n', stderr);
-            return false;
-        }
-        if (!g->quiet)
+        bool ok = grade_one(g, s);
+        if (!g->quiet && ok)
             print_tally(g, s);
+        else if (!g->quiet)
+            fputc('\n', stderr);
+        if (!ok)
+            return false;
     }
     return true;
 }
 
-/* Returns name with every byte but letters, digits, '.', '_' and '-' made '_', cut to 40
- * bytes: a work folder's name that a student's Makefile or script cannot trip on. */
-static char *safe_name(const char *name)
-{
-    char *safe = grade_format("%.40s", name);
-    for (char *p = safe; *p != '\0'; p++)
-        if (!isalnum((unsigned char)*p) && *p != '.' && *p != '_' && *p != '-')
-            *p = '_';
-    return safe;
-}
-
 /* Adds the submission in the folder path, named name, with its work folder, to g; takes
- * path and work. */
+ * path and work. It is a program when it holds a Makefile, as make looks for one. */
 static void add_submission(Grading *g, const char *name, char *path, char *work)
 {
     static const char *const makefiles[] = {"GNUmakefile", "makefile", "Makefile"};
     Submission *s = &g->subs[g->sub_count++];
-    *s = (Submission){.name = grade_copy(name), .path = path, .work = work};
-    /* It is a program when it holds a Makefile, as make looks for one. */
-    for (size_t k = 0; k < sizeof makefiles / sizeof makefiles[0] && !s->program; k++) {
-        char *makefile = grade_format("%s/%s", path, makefiles[k]);
-        s->program = grade_is_file(makefile);
-        free(makefile);
-    }
+    *s = (Submission){.name = grade_format("%s", name), .path = path, .work = work};
+    for (size_t k = 0; k < sizeof makefiles / sizeof makefiles[0]; k++)
+        s->program |= grade_kind(grade_format("%s/%s", path, makefiles[k])) == S_IFREG;
     /* A folder of the class that is a link (to a classmate's) is not graded as one. */
     char target[PATH_MAX];
     ssize_t n = g->self ? -1 : readlink(path, target, sizeof target - 1);
@@ -283,15 +219,15 @@ static void add_submission(Grading *g, const char *name, char *path, char *work)
 }
 
 /* Lists the submissions: the folders in g->submissions but hidden ones and the output
- * folder, in the order of their names, or with --self the one folder; false (reported)
- * when there are none. */
+ * folder, in the order of their names, each with a work folder named safely for scripts
+ * (03-alice); or with --self the one folder. False (reported) when there are none. */
 bool submission_list(Grading *g)
 {
     if (g->self) {
-        /* One student's folder: it is the one submission, named as the folder. */
-        char *copy = grade_copy(g->submissions);
+        char *path = grade_format("%s", g->submissions);
         g->subs = grade_alloc(sizeof *g->subs);
-        add_submission(g, basename(copy), copy, grade_format("%s/1-self", g->work));
+        add_submission(g, basename(grade_format("%s", path)), path,
+                       grade_format("%s/1-self", g->work));
         return true;
     }
     int count = 0;
@@ -300,27 +236,23 @@ bool submission_list(Grading *g)
         fprintf(stderr, "grade: cannot read the folder %s: %s\n", g->submissions, strerror(errno));
         return false;
     }
-    char out_real[PATH_MAX], real[PATH_MAX];
+    char out_real[PATH_MAX] = "", real[PATH_MAX];
     if (realpath(g->out, out_real) == NULL)
         out_real[0] = '\0';
     g->subs = grade_alloc((size_t)count * sizeof *g->subs);
     int digits = count < 100 ? 2 : count < 1000 ? 3 : 6;
     for (int k = 0; k < count; k++) {
         char *path = grade_format("%s/%s", g->submissions, names[k]);
-        if (realpath(path, real) != NULL && strcmp(real, out_real) == 0) {
-            free(path);
+        if (realpath(path, real) != NULL && strcmp(real, out_real) == 0)
             continue;
-        }
-        char *safe = safe_name(names[k]);
-        add_submission(g, names[k], path,
-                       grade_format("%s/%0*d-%s", g->work, digits, g->sub_count + 1, safe));
-        free(safe);
+        char *work = grade_format("%s/%0*d-%.40s", g->work, digits, g->sub_count + 1, names[k]);
+        for (char *p = strrchr(work, '/') + 1; *p != '\0'; p++)
+            if (!isalnum((unsigned char)*p) && *p != '.' && *p != '_' && *p != '-')
+                *p = '_';
+        add_submission(g, names[k], path, work);
     }
-    part_free_names(names, count);
-    if (g->sub_count == 0) {
+    if (g->sub_count == 0)
         fprintf(stderr, "grade: no submissions in %s: it should hold a folder a student\n",
                 g->submissions);
-        return false;
-    }
-    return true;
+    return g->sub_count > 0;
 }
