@@ -65,14 +65,18 @@ static void wait_for_signal(double seconds)
 static void close_other_files(void)
 {
     DIR *d = opendir("/proc/self/fd");
+    if (d == NULL) {
+        for (int fd = 3; fd < 1024; fd++)
+            close(fd);
+        return;
+    }
     struct dirent *e;
-    for (int fd = 3; d == NULL && fd < 1024; fd++)
-        close(fd);
-    while (d != NULL && (e = readdir(d)) != NULL)
-        if (atoi(e->d_name) > 2 && atoi(e->d_name) != dirfd(d))
-            close(atoi(e->d_name));
-    if (d != NULL)
-        closedir(d);
+    while ((e = readdir(d)) != NULL) {
+        int fd = atoi(e->d_name);
+        if (fd > 2 && fd != dirfd(d))
+            close(fd);
+    }
+    closedir(d);
 }
 
 /* Sets a resource limit, soft and hard, so that the child cannot raise it again; a lower
