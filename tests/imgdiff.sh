@@ -262,8 +262,8 @@ says "its header gives a size of 65536 x 1 pixels, beyond"
 # The command line.
 run 0 --help
 says "Usage: imgdiff [options] A B"
-says "(default 2/255:"
-says "(default 0.001, that is 0.1%)"
+says "(default 2/255)"
+says "(default 0.001)"
 run 2 a.pfm
 has "imgdiff: give two images to compare (imgdiff --help shows how)"
 run 2 a.pfm same.pfm one.pfm

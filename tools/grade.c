@@ -2,7 +2,6 @@
 #include "grade.h"
 
 #include <errno.h>
-#include <getopt.h>
 #include <limits.h>
 #include <math.h>
 #include <stdarg.h>
@@ -14,42 +13,40 @@
 
 #include "imgdiff.h"
 #include "stop.h"
+#include "toolopt.h"
 
 enum { EXIT_REPORTED = 0, EXIT_TROUBLE = 2, EXIT_INTERRUPTED = 130 };
 
 /* What an option's value is, and so how it is read. */
 typedef enum { OPT_FLAG, OPT_TEXT, OPT_SECONDS, OPT_BYTES } OptKind;
 
-/* One option: its names, its value's placeholder in --help (NULL for a flag), its help ('\n'
- * where a line breaks), the field of Grading it sets, and its default value, or NULL. */
+/* One option: the common description (toolopt.h), how its value is read, the field of
+ * Grading it sets. */
 typedef struct {
-    const char *name;
-    char letter;
+    ToolOption o;
     OptKind kind;
-    const char *value, *help;
     size_t field;
-    const char *fallback;
 } GradeOption;
 
 /* grade's options, from which the parsing, the defaults and --help are all made. */
 static const GradeOption options[] = {
-    {"out", 0, OPT_TEXT, "DIR", "write report.html, grades.csv and the work files\n"
-     "(work/) into DIR (default: grading-PART)", offsetof(Grading, out), NULL},
-    {"time-limit", 0, OPT_SECONDS, "S", "seconds a student's program may take for one scene;\n"
-     "0: no limit", offsetof(Grading, time_limit), "60"},
-    {"build-time-limit", 0, OPT_SECONDS, "S", "seconds make may take; 0: no limit",
-     offsetof(Grading, build_time_limit), "300"},
-    {"memory-limit", 0, OPT_BYTES, "M", "address space a student's make or program may use:\n"
-     "bytes, or with K, M or G; 0: no limit", offsetof(Grading, memory_limit), "2G"},
-    {"threshold", 0, OPT_TEXT, "T", "imgdiff's: a pixel differs when one of its channels\n"
-     "differs by more than T", offsetof(Grading, threshold), IMGDIFF_THRESHOLD_TEXT},
-    {"allow", 0, OPT_TEXT, "F", "imgdiff's: an image passes when at most the fraction\n"
-     "F of its pixels differ", offsetof(Grading, allow), IMGDIFF_ALLOW_TEXT},
-    {"self", 0, OPT_FLAG, NULL, "FOLDER is one student's program (or images): grade\nit alone, "
-     "print each scene's verdict and heat map,\nand exit 1 unless every scene passes",
-     offsetof(Grading, self), NULL},
-    {"quiet", 'q', OPT_FLAG, NULL, "no progress lines", offsetof(Grading, quiet), NULL},
-    {"help", 'h', OPT_FLAG, NULL, "show this help and exit", offsetof(Grading, help), NULL},
+    {{"out", 0, "DIR", "write report.html, grades.csv and the work files\n"
+      "(work/) into DIR (default: grading-PART)", NULL}, OPT_TEXT, offsetof(Grading, out)},
+    {{"time-limit", 0, "S", "seconds a student's program may take for one scene;\n"
+      "0: no limit", "60"}, OPT_SECONDS, offsetof(Grading, time_limit)},
+    {{"build-time-limit", 0, "S", "seconds make may take; 0: no limit", "300"}, OPT_SECONDS,
+     offsetof(Grading, build_time_limit)},
+    {{"memory-limit", 0, "M", "address space a student's make or program may use:\n"
+      "bytes, or with K, M or G; 0: no limit", "2G"}, OPT_BYTES, offsetof(Grading, memory_limit)},
+    {{"threshold", 0, "T", "imgdiff's: a pixel differs when one of its channels\n"
+      "differs by more than T", IMGDIFF_THRESHOLD_TEXT}, OPT_TEXT, offsetof(Grading, threshold)},
+    {{"allow", 0, "F", "imgdiff's: an image passes when at most the fraction\n"
+      "F of its pixels differ", IMGDIFF_ALLOW_TEXT}, OPT_TEXT, offsetof(Grading, allow)},
+    {{"self", 0, NULL, "FOLDER is one student's program (or images): grade\nit alone, "
+      "print each scene's verdict and heat map,\nand exit 1 unless every scene passes", NULL},
+     OPT_FLAG, offsetof(Grading, self)},
+    {{"quiet", 'q', NULL, "no progress lines", NULL}, OPT_FLAG, offsetof(Grading, quiet)},
+    {{"help", 'h', NULL, "show this help and exit", NULL}, OPT_FLAG, offsetof(Grading, help)},
 };
 enum { OPTION_COUNT = sizeof options / sizeof options[0] };
 
@@ -65,25 +62,20 @@ static void print_help(void)
            "with a Makefile whose make, run in a copy, builds raytra beside it, run as\n"
            "  raytra SCENE OUTPUT [arguments]\n"
            "for every scene, in a scratch folder, under the limits below.\n\nOptions:\n");
-    for (const GradeOption *o = options; o < options + OPTION_COUNT; o++) {
-        int n = o->letter != 0 ? printf("  -%c, --%s", o->letter, o->name)
-                               : printf("  --%s %s", o->name, o->value != NULL ? o->value : "");
-        printf("%*s", n < 26 ? 26 - n : 1, "");
-        for (const char *p = o->help; *p != '\0'; p++)
-            *p == '\n' ? printf("\n%26s", "") : putchar(*p);
-        printf(o->fallback != NULL ? " (default %s)\n" : "\n", o->fallback);
-    }
+    toolopt_print(stdout, options, sizeof options[0], OPTION_COUNT);
     printf("\nExit status: 0 when the report was written, whatever the verdicts; 2 when\n"
            "grading could not be done; 130 when interrupted. See docs/grading.md.\n");
 }
 
-/* Sets option o's field of g from its value: seconds are a number from 0; a memory limit
- * is bytes, or a number followed by K, M or G (2^10, 2^20, 2^30), 0 or at least 1 MiB
- * (less is surely a slip). False (reported) when the value is not a valid one. */
-static bool set_option(Grading *g, const GradeOption *o, const char *value)
+/* Sets the field of the Grading `state` that option k sets from its value: seconds are a
+ * number from 0; a memory limit is bytes, or a number followed by K, M or G (2^10, 2^20,
+ * 2^30), 0 or at least 1 MiB (less is surely a slip). False (reported) when the value is
+ * not a valid one. */
+static bool set_option(void *state, int k, const char *value)
 {
     static const char units[] = "KkMmGg";
-    void *field = (char *)g + o->field;
+    const GradeOption *o = &options[k];
+    void *field = (char *)state + o->field;
     if (o->kind == OPT_FLAG || o->kind == OPT_TEXT) {
         if (o->kind == OPT_FLAG)
             *(bool *)field = true;
@@ -104,7 +96,7 @@ static bool set_option(Grading *g, const GradeOption *o, const char *value)
     else if (ok)
         *(long long *)field = (long long)v;
     else
-        fprintf(stderr, "grade: --%s takes %s, got '%s'\n", o->name,
+        fprintf(stderr, "grade: --%s takes %s, got '%s'\n", o->o.name,
                 o->kind == OPT_SECONDS ? "a number of seconds, or 0"
                                        : "a size such as 512M or 2G, or 0",
                 value);
@@ -115,27 +107,9 @@ static bool set_option(Grading *g, const GradeOption *o, const char *value)
  * words); false (reported) when it is not a valid one. */
 static bool parse_args(int argc, char **argv, Grading *g, const char **part)
 {
-    struct option longs[OPTION_COUNT + 1] = {{0}};
-    char shorts[OPTION_COUNT + 2] = ":";
-    for (int k = 0; k < OPTION_COUNT; k++) {
-        longs[k] = (struct option){options[k].name, options[k].value != NULL, NULL, 0};
-        if (options[k].letter != 0)
-            strncat(shorts, &options[k].letter, 1);
-    }
-    opterr = 0;
-    int c, k = 0;
-    while ((c = getopt_long(argc, argv, shorts, longs, &k)) != -1) {
-        if (c == ':' || c == '?') {
-            fprintf(stderr, c == ':' ? "grade: %s needs a value\n"
-                                     : "grade: unknown option '%s' (grade --help lists them)\n",
-                    argv[optind - 1]);
-            return false;
-        }
-        for (int s = 0; c != 0 && s < OPTION_COUNT; s++)
-            k = options[s].letter == c ? s : k; /* a short option's entry */
-        if (!set_option(g, &options[k], optarg))
-            return false;
-    }
+    if (!toolopt_parse("grade", options, sizeof options[0], OPTION_COUNT, argc, argv,
+                       set_option, g))
+        return false;
     if (g->help)
         return true;
     if (argc - optind > 2) {
@@ -321,9 +295,9 @@ int main(int argc, char **argv)
 {
     static Grading g;
     const char *part = NULL;
-    for (const GradeOption *o = options; o < options + OPTION_COUNT; o++)
-        if (o->fallback != NULL)
-            set_option(&g, o, o->fallback);
+    for (int k = 0; k < OPTION_COUNT; k++)
+        if (options[k].o.fallback != NULL)
+            set_option(&g, k, options[k].o.fallback);
     if (!parse_args(argc, argv, &g, &part))
         return EXIT_TROUBLE;
     if (g.help) {

@@ -1,15 +1,16 @@
 /* imgdiff.c: compares two images, PNG, PFM or EXR, and tells whether they match. */
-#include <getopt.h>
 #include <math.h>
 #include <stdbool.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <sys/stat.h>
+#include <unistd.h>
 
 #include "image.h"
 #include "imgdiff.h"
 #include "imgfile.h"
 #include "outfile.h"
+#include "toolopt.h"
 
 enum { EXIT_MATCH = 0, EXIT_DIFFER = 1, EXIT_TROUBLE = 2 };
 
@@ -42,53 +43,67 @@ static const Color ramp[] = {
 };
 #define RAMP_STOPS ((int)(sizeof ramp / sizeof ramp[0]))
 
+/* imgdiff's options, from which the parsing and --help are made; in the order of their
+ * cases in set_option. */
+enum { OPT_THRESHOLD, OPT_ALLOW, OPT_DIFF, OPT_SCALE, OPT_QUIET, OPT_MACHINE, OPT_HELP };
+static const ToolOption options[] = {
+    {"threshold", 0, "T", "a pixel differs when one of its channels differs by more\n"
+     "than T, a number or a fraction such as 8/255; 2/255\nis more than 2 steps of 8 bits",
+     IMGDIFF_THRESHOLD_TEXT},
+    {"allow", 0, "F", "the images match when at most the fraction F of the\npixels differ",
+     IMGDIFF_ALLOW_TEXT},
+    {"diff", 0, "FILE", "write a heat map of the differences to FILE (.png or\n.pfm): black "
+     "where a pixel is exactly equal; any\ndifference, even one within the threshold, is at "
+     "least\ndark blue, then the colours run through purple, red\nand yellow to white", NULL},
+    {"scale", 0, "S", "the difference that is white in the heat map, larger\nones too "
+     "(default: the largest difference found)", NULL},
+    {"quiet", 'q', NULL, "print only the verdict", NULL},
+    {"machine", 0, NULL, "print the figures as NAME VALUE lines instead, for\nprograms "
+     "(tools/grade reads them; docs/grading.md lists\nthem)", NULL},
+    {"help", 'h', NULL, "show this help and exit", NULL},
+};
+enum { OPTION_COUNT = sizeof options / sizeof options[0] };
+
 /* Prints the usage, the options and their defaults. */
-static void print_help(FILE *f)
+static void print_help(void)
 {
-    fprintf(f,
-            "Usage: imgdiff [options] A B\n"
-            "Compares two images of the same size, each a PNG (8 or 16 bits, any colour\n"
-            "type), a PFM or an EXR, and tells whether they match.\n"
-            "\n"
-            "Values are compared on a scale of 0 to 1 as the files hold them: a PNG's\n"
-            "as stored (raytra writes them sRGB-encoded unless given --linear), a PFM's\n"
-            "or an EXR's linear. A PNG compared with a linear image meets it as raytra\n"
-            "would write it to a PNG: clamped to [0, 1], sRGB-encoded, rounded to 8 bits.\n"
-            "Transparent PNG pixels are taken as drawn over black.\n"
-            "\n"
-            "Options:\n"
-            "  --threshold T  a pixel differs when one of its channels differs by more\n"
-            "                 than T, a number or a fraction such as 2/255 (default %s:\n"
-            "                 more than 2 steps of 8 bits)\n"
-            "  --allow F      the images match when at most the fraction F of the pixels\n"
-            "                 differ (default %s, that is %g%%)\n"
-            "  --diff FILE    write a heat map of the differences to FILE (.png or .pfm):\n"
-            "                 black where a pixel is exactly equal; any difference, even\n"
-            "                 one within the threshold, is at least dark blue, then the\n"
-            "                 colours run through purple, red and yellow to white\n"
-            "  --scale S      the difference that is white in the heat map, larger ones\n"
-            "                 too (default: the largest difference found)\n"
-            "  -q, --quiet    print only the verdict\n"
-            "  --machine      print the figures as NAME VALUE lines instead, for programs\n"
-            "                 (tools/grade reads them; docs/grading.md lists them)\n"
-            "  -h, --help     show this help and exit\n"
-            "\n"
-            "The report gives the largest difference in each channel (also in steps of\n"
-            "8 bits, x/255), the mean absolute difference, the RMSE, the PSNR (peak 1),\n"
-            "the pixels that differ and the box around them (x0,y0)-(x1,y1), y from\n"
-            "the top, and the verdict, PASS or FAIL.\n"
-            "\n"
-            "Exit status: 0 when the images match, 1 when they do not, 2 on trouble (a\n"
-            "missing or unreadable file, different sizes, a bad option). The defaults\n"
-            "are those of raytra's image-regression tests (tools/imgdiff.h).\n",
-            IMGDIFF_THRESHOLD_TEXT, IMGDIFF_ALLOW_TEXT, IMGDIFF_ALLOW * 100);
+    printf("Usage: imgdiff [options] A B\n"
+           "Compares two images of the same size, each a PNG (8 or 16 bits, any colour\n"
+           "type), a PFM or an EXR, and tells whether they match.\n"
+           "\n"
+           "Values are compared on a scale of 0 to 1 as the files hold them: a PNG's\n"
+           "as stored (raytra writes them sRGB-encoded unless given --linear), a PFM's\n"
+           "or an EXR's linear. A PNG compared with a linear image meets it as raytra\n"
+           "would write it to a PNG: clamped to [0, 1], sRGB-encoded, rounded to 8 bits.\n"
+           "Transparent PNG pixels are taken as drawn over black.\n"
+           "\n"
+           "Options:\n");
+    toolopt_print(stdout, options, sizeof options[0], OPTION_COUNT);
+    printf("\n"
+           "The report gives the largest difference in each channel (also in steps of\n"
+           "8 bits, x/255), the mean absolute difference, the RMSE, the PSNR (peak 1),\n"
+           "the pixels that differ and the box around them (x0,y0)-(x1,y1), y from\n"
+           "the top, and the verdict, PASS or FAIL.\n"
+           "\n"
+           "Exit status: 0 when the images match, 1 when they do not, 2 on trouble (a\n"
+           "missing or unreadable file, different sizes, a bad option). The defaults\n"
+           "are those of raytra's image-regression tests (tools/imgdiff.h).\n");
 }
 
-/* Stores the value of option opt, for --threshold, --allow and --scale a number, a
- * decimal or a fraction N/D (2/255); false (reported) when it is not a valid one. */
-static bool set_value(DiffOptions *o, const struct option *opt, const char *value)
+/* Stores the value of option k in the DiffOptions `state`: for --threshold, --allow and
+ * --scale a number, a decimal or a fraction N/D (2/255); false (reported) when it is not
+ * a valid one. */
+static bool set_option(void *state, int k, const char *value)
 {
-    int c = opt->val;
+    DiffOptions *o = state;
+    if (k == OPT_QUIET || k == OPT_MACHINE || k == OPT_HELP) {
+        *(k == OPT_QUIET ? &o->quiet : k == OPT_HELP ? &o->help : &o->machine) = true;
+        return true;
+    }
+    if (k == OPT_DIFF) {
+        o->diff_path = value;
+        return true;
+    }
     char *end;
     double v = strtod(value, &end);
     if (end != value && *end == '/') {
@@ -97,55 +112,30 @@ static bool set_value(DiffOptions *o, const struct option *opt, const char *valu
         v = end != denominator ? v / d : NAN; /* N/0 is not finite either */
     }
     bool number = end != value && *end == '\0' && isfinite(v);
-    if (c == 'd')
-        o->diff_path = value;
-    else if (c == 't' && number && v >= 0)
+    if (k == OPT_THRESHOLD && number && v >= 0)
         o->threshold = v;
-    else if (c == 'a' && number && v >= 0 && v <= 1)
+    else if (k == OPT_ALLOW && number && v >= 0 && v <= 1)
         o->allow = v;
-    else if (c == 's' && number && v > 0)
+    else if (k == OPT_SCALE && number && v > 0)
         o->scale = v;
     else {
-        const char *wanted = c == 'a'   ? "a fraction from 0 to 1"
-                             : c == 's' ? "a number above 0, or a fraction such as 8/255"
-                                        : "a number from 0 up, or a fraction such as 2/255";
-        fprintf(stderr, "imgdiff: --%s takes %s, got '%s'\n", opt->name, wanted, value);
+        const char *wanted = k == OPT_ALLOW   ? "a fraction from 0 to 1"
+                             : k == OPT_SCALE ? "a number above 0, or a fraction such as 8/255"
+                                              : "a number from 0 up, or a fraction such as 2/255";
+        fprintf(stderr, "imgdiff: --%s takes %s, got '%s'\n", options[k].name, wanted, value);
         return false;
     }
     return true;
 }
 
-/* Reads the command line into o, with getopt_long (options may follow the images); false
- * (reported) when it is not a valid one. */
+/* Reads the command line into o (options may follow the images); false (reported) when it
+ * is not a valid one. */
 static bool parse_args(int argc, char **argv, DiffOptions *o)
 {
-    static const struct option options[] = {
-        {"threshold", required_argument, NULL, 't'},
-        {"allow", required_argument, NULL, 'a'},
-        {"scale", required_argument, NULL, 's'},
-        {"diff", required_argument, NULL, 'd'},
-        {"machine", no_argument, NULL, 'm'},
-        {"quiet", no_argument, NULL, 'q'},
-        {"help", no_argument, NULL, 'h'},
-        {0},
-    };
     *o = (DiffOptions){.threshold = IMGDIFF_THRESHOLD, .allow = IMGDIFF_ALLOW};
-    opterr = 0;
-    int c, index = 0;
-    while ((c = getopt_long(argc, argv, ":qh", options, &index)) != -1) {
-        if (c == 'q' || c == 'h' || c == 'm') {
-            *(c == 'q' ? &o->quiet : c == 'h' ? &o->help : &o->machine) = true;
-        } else if (c == ':') {
-            fprintf(stderr, "imgdiff: %s needs a value\n", argv[optind - 1]);
-            return false;
-        } else if (c == '?') {
-            fprintf(stderr, "imgdiff: unknown option '%s' (imgdiff --help lists them)\n",
-                    argv[optind - 1]);
-            return false;
-        } else if (!set_value(o, &options[index], optarg)) {
-            return false;
-        }
-    }
+    if (!toolopt_parse("imgdiff", options, sizeof options[0], OPTION_COUNT, argc, argv,
+                       set_option, o))
+        return false;
     if (argc - optind > 2) {
         fprintf(stderr, "imgdiff: unexpected argument '%s': give two images\n", argv[optind + 2]);
         return false;
@@ -377,7 +367,7 @@ int main(int argc, char **argv)
     if (!parse_args(argc, argv, &o))
         return EXIT_TROUBLE;
     if (o.help) {
-        print_help(stdout);
+        print_help();
         return EXIT_MATCH;
     }
     ImgFileKind kind[2];
