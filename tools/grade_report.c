@@ -89,7 +89,7 @@ static void html_put(FILE *f, const char *fmt, ...)
     va_list ap;
     va_start(ap, fmt);
     for (const char *p = fmt; *p != '\0'; p++) {
-        if (*p != '%' || strchr("sSd", p[1]) == NULL) {
+        if (*p != '%' || p[1] == '\0' || strchr("sSd", p[1]) == NULL) {
             fputc(*p, f);
         } else if (*++p == 'd') {
             fprintf(f, "%d", va_arg(ap, int));
@@ -98,7 +98,10 @@ static void html_put(FILE *f, const char *fmt, ...)
         } else {
             for (const char *t = va_arg(ap, const char *); t != NULL && *t != '\0'; t++) {
                 const char *special = strchr(specials, *t);
-                special != NULL ? fputs(entities[special - specials], f) : fputc(*t, f);
+                if (special != NULL)
+                    fputs(entities[special - specials], f);
+                else
+                    fputc(*t, f);
             }
         }
     }
