@@ -43,8 +43,8 @@ static const Color ramp[] = {
 };
 #define RAMP_STOPS ((int)(sizeof ramp / sizeof ramp[0]))
 
-/* imgdiff's options, from which the parsing and --help are made; in the order of their
- * cases in set_option. */
+/* imgdiff's options, from which the parsing and --help are made; the enum names each
+ * one's place in the table. */
 enum { OPT_THRESHOLD, OPT_ALLOW, OPT_DIFF, OPT_SCALE, OPT_QUIET, OPT_MACHINE, OPT_HELP };
 static const ToolOption options[] = {
     {"threshold", 0, "T", "a pixel differs when one of its channels differs by more\n"
