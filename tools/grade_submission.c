@@ -132,11 +132,12 @@ static bool grade_one(const Grading *g, Submission *s)
     s->results = grade_alloc((size_t)g->render_count * sizeof *s->results);
     for (int k = 0; k < g->render_count; k++)
         s->results[k].seconds = -1;
+    /* A program is built and run, in folders of its own; a folder of images is read. */
+    bool runs = s->program && s->link == NULL;
     bool ok = grade_make_folder(s->work, true) &&
-              (!s->program || s->link != NULL ||
-               (grade_make_folder(grade_format("%s/images", s->work), true) &&
-                grade_make_folder(grade_format("%s/run", s->work), true)));
-    char *program = ok && s->program && s->link == NULL ? build(g, s) : NULL;
+              (!runs || (grade_make_folder(grade_format("%s/images", s->work), true) &&
+                         grade_make_folder(grade_format("%s/run", s->work), true)));
+    char *program = ok && runs ? build(g, s) : NULL;
     for (int k = 0; ok && k < g->render_count && !stop_requested(); k++) {
         /* A folder that is a link (to a classmate's) is not a submission of its own. */
         if (s->link != NULL)
