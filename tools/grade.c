@@ -407,6 +407,10 @@ static int grade(Grading *g, const char *part)
         g->out = grade_format("grading-%s", g->part);
     time_t now = time(NULL);
     strftime(g->started, sizeof g->started, "%Y-%m-%d %H:%M", localtime(&now));
+    if (access(g->imgdiff, X_OK) != 0) {
+        fprintf(stderr, "grade: no imgdiff at %s (make -C tools builds it)\n", g->imgdiff);
+        return EXIT_TROUBLE;
+    }
     if (grade_kind(g->submissions) != S_IFDIR) {
         fprintf(stderr, "grade: no folder %s\n", g->submissions);
         return EXIT_TROUBLE;
