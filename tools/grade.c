@@ -360,9 +360,9 @@ static bool show_references(Grading *g)
         Render *r = &g->renders[k];
         char *log = grade_format("%s/references/%s.log", g->work, r->name);
         r->reference_show = grade_format("%s/references/%s.png", g->work, r->name);
-        char *argv[] = {g->imgdiff,          "-q",          "--threshold", (char *)g->threshold,
-                        "--allow",           (char *)g->allow, "--thumb",   r->reference_show,
-                        "--",                r->reference,  r->reference,  NULL};
+        char *argv[] = {g->imgdiff, "-q", "--threshold", (char *)g->threshold, "--allow",
+                        (char *)g->allow, "--thumb", r->reference_show, "--", r->reference,
+                        r->reference, NULL};
         if (run_quietly(argv, log))
             continue;
         char *said = run_log_tail(log);

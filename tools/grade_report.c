@@ -195,18 +195,18 @@ static void write_pictures(FILE *f, const SceneResult *res, int k)
 {
     const Figures *fig = &res->figures;
     double width = res->relative_width > 0 && res->relative_width < 1 ? res->relative_width : 1;
+    char *caption = "Differences";
+    if (res->identical)
+        caption = "Differences: none, the images are identical";
+    else if (res->compared)
+        caption = grade_format("Differences: black where equal, white at %.3g/255",
+                               fig->heat_scale * 255);
     fputs("<div class=\"pictures\">\n", f);
     write_figure(f, "ref", NULL, 1, k, "reference image", "Reference", NULL);
     write_figure(f, res->identical ? "ref" : NULL, res->image_show, width, k, "submitted image",
                  "Submission", "no image");
     write_figure(f, res->identical ? "black ref" : NULL, res->heat_show, 1, k,
-                 "heat map of the differences",
-                 res->identical ? "Differences: none, the images are identical"
-                 : res->compared
-                     ? grade_format("Differences: black where equal, white at %.3g/255",
-                                    fig->heat_scale * 255)
-                     : "Differences",
-                 "no comparison");
+                 "heat map of the differences", caption, "no comparison");
     if (res->compared)
         fprintf(f,
                 "<table class=\"figures\"><tr><th>Max diff R, G, B</th><td>%.3g, %.3g, %.3g /255"
