@@ -132,9 +132,7 @@ static bool handed_in(const Render *r, SceneResult *res, const char *path)
                     target);
     } else if (!S_ISREG(st.st_mode)) {
         set_verdict(res, VERDICT_UNREADABLE, "%s is not a regular file (%s)", name,
-                    S_ISFIFO(st.st_mode)  ? "a FIFO"
-                    : S_ISDIR(st.st_mode) ? "a folder"
-                                          : "a special file");
+                    imgfile_kind_text(st.st_mode));
     } else if (stat(r->reference, &ref) == 0 && ref.st_dev == st.st_dev &&
                ref.st_ino == st.st_ino) {
         set_verdict(res, VERDICT_LINK, "%s is a hard link to the reference image", name);
