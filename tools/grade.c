@@ -209,10 +209,10 @@ static char *find_part(const char *top, const char *part)
  * table of common/cli.c; NULL when none does. */
 static const CliOption *option_of(const char *word)
 {
-    size_t len = strcspn(word + 2, "=");
+    if (word[1] == '-')
+        return cli_option_named(grade_format("%.*s", (int)strcspn(word + 2, "="), word + 2));
     for (const CliOption *o = cli_options; o->name != NULL; o++)
-        if (word[1] == '-' ? strlen(o->name) == len && strncmp(word + 2, o->name, len) == 0
-                           : o->letter != 0 && word[1] == o->letter && word[2] == '\0')
+        if (o->letter != 0 && word[1] == o->letter && word[2] == '\0')
             return o;
     return NULL;
 }
