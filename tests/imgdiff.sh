@@ -227,6 +227,26 @@ for spelling in ./a.pfm "$tmp/a.pfm" d/../a.pfm soft.pfm hard.pfm; do
 done
 run 0 --threshold 0 --allow 0 a.pfm keep.pfm
 
+# Thumbnails, for tools/grade's report: an image no larger than 320 pixels a side is its
+# own thumbnail, and so is its heat map; a larger one is shrunk by a whole factor, each
+# pixel its block's mean, or for the heat map its brightest, so that one pixel stays.
+run 1 --thumb thumb.pfm --diff-thumb heat-thumb.pfm a.pfm two.pfm
+run 0 --threshold 0 --allow 0 thumb.pfm two.pfm
+run 0 --threshold 0 --allow 0 heat-thumb.pfm expected.pfm
+pfm wide-black.pfm 321 1 0,0,0
+pfm wide-dot.pfm 321 1 0,0,0 0,0=1,1,1
+run 1 --thumb thumb2.pfm --diff-thumb heat-thumb2.pfm wide-black.pfm wide-dot.pfm
+pfm expected-thumb.pfm 161 1 0,0,0 0,0=0.5,0.5,0.5
+run 0 --threshold 0 --allow 0 thumb2.pfm expected-thumb.pfm
+pfm expected-peak.pfm 161 1 0,0,0 0,0=1,1,1
+run 0 --threshold 0 --allow 0 heat-thumb2.pfm expected-peak.pfm
+# An image of another size is still shown (but not a bomb, below); a thumbnail may not
+# overwrite an input either.
+run 2 --thumb thumb3.pfm a.pfm tall.pfm
+run 0 --threshold 0 --allow 0 thumb3.pfm tall.pfm
+run 2 --thumb hard.pfm a.pfm two.pfm
+says "would overwrite a.pfm, an image being compared"
+
 # Non-finite pixels are never equal, not even to the same NaN or infinity.
 pfm nan.pfm 4 3 $grey 1,1=nan,0.5,1
 pfm inf.pfm 4 3 $grey 3,2=0.25,inf,1
@@ -255,6 +275,8 @@ run 2 a.pfm bomb.png
 has "imgdiff: sizes differ: a.pfm is 4 x 3, bomb.png is 8192 x 8192"
 run 2 --machine a.pfm bomb.png
 has "sizes 4 3 8192 8192"
+run 2 --thumb thumb4.pfm a.pfm bomb.png
+[ ! -e thumb4.pfm ] || fail "a thumbnail of an image whose header says 8192 x 8192"
 png_header '\000\001\000\000\000\000\000\001' >wide.png
 run 2 wide.png wide.png
 says "its header gives a size of 65536 x 1 pixels, beyond"

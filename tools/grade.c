@@ -1,16 +1,18 @@
 /* grade.c: grades a class's submissions for one part of the course against its reference images. */
 #include "grade.h"
 
+#include <dirent.h>
 #include <errno.h>
 #include <limits.h>
 #include <math.h>
 #include <stdarg.h>
 #include <stdlib.h>
 #include <string.h>
-#include <sys/stat.h>
 #include <time.h>
 #include <unistd.h>
 
+#include "array.h"
+#include "cli.h"
 #include "imgdiff.h"
 #include "stop.h"
 #include "toolopt.h"
@@ -103,29 +105,6 @@ static bool set_option(void *state, int k, const char *value)
     return ok;
 }
 
-/* Reads the command line into g and *part, with getopt_long (options may follow the
- * words); false (reported) when it is not a valid one. */
-static bool parse_args(int argc, char **argv, Grading *g, const char **part)
-{
-    if (!toolopt_parse("grade", options, sizeof options[0], OPTION_COUNT, argc, argv,
-                       set_option, g))
-        return false;
-    if (g->help)
-        return true;
-    if (argc - optind > 2) {
-        fprintf(stderr, "grade: unexpected argument '%s': give a part and a folder\n",
-                argv[optind + 2]);
-        return false;
-    }
-    if (argc - optind < 2) {
-        fprintf(stderr, "usage: grade [options] PART SUBMISSIONS (grade --help for more)\n");
-        return false;
-    }
-    *part = argv[optind];
-    g->submissions = argv[optind + 1];
-    return true;
-}
-
 /* Returns zeroed memory that lasts until the exit: the grader frees nothing, as what it
  * gathers serves the report; every block begins with the one made before it, so that all
  * stay reachable. Ends the grader when there is no memory, as it cannot go on. */
@@ -164,16 +143,6 @@ char *grade_size_text(long long bytes)
                                       : grade_format("%lld MiB", bytes >> 20);
 }
 
-/* Sets the verdict of res and its reason, made as printf makes it. */
-void grade_verdict(SceneResult *res, Verdict v, const char *fmt, ...)
-{
-    va_list ap;
-    va_start(ap, fmt);
-    vsnprintf(res->message, sizeof res->message, fmt, ap);
-    va_end(ap);
-    res->verdict = v;
-}
-
 /* Returns the kind of the file at path, links followed: S_IFDIR, S_IFREG...; 0 for none. */
 int grade_kind(const char *path)
 {
@@ -191,12 +160,162 @@ bool grade_make_folder(const char *path, bool anew)
     return false;
 }
 
+/* Tells whether a folder's entry is not hidden, for scandir. */
+static int visible(const struct dirent *e)
+{
+    return e->d_name[0] != '.';
+}
+
+/* Returns the names of the folders in `folder`, hidden ones left out, in strcmp's order;
+ * sets *count. NULL (and errno) when the folder cannot be read. */
+char **grade_list_folders(const char *folder, int *count)
+{
+    struct dirent **entries;
+    int n = scandir(folder, &entries, visible, alphasort);
+    if (n < 0)
+        return NULL;
+    char **names = grade_alloc(((size_t)n + 1) * sizeof *names);
+    *count = 0;
+    for (int k = 0; k < n; k++) {
+        if (grade_kind(grade_format("%s/%s", folder, entries[k]->d_name)) == S_IFDIR)
+            names[(*count)++] = grade_format("%s", entries[k]->d_name);
+        free(entries[k]);
+    }
+    free(entries);
+    return names;
+}
+
+/* Returns the folder of part `part`, NULL (reported) when there is none: a path, or the
+ * folder of milestones/ named so or whose name starts with "PART-" (the first, in the
+ * order of their names, so that an exact name wins). */
+static char *find_part(const char *top, const char *part)
+{
+    char real[PATH_MAX], *milestones = grade_format("%s/milestones", top), *all = "";
+    if (strchr(part, '/') != NULL && realpath(part, real) != NULL && grade_kind(real) == S_IFDIR)
+        return grade_format("%s", real);
+    int count = 0;
+    char **names = grade_list_folders(milestones, &count);
+    size_t len = strlen(part);
+    for (int k = 0; k < count; k++) {
+        if (strncmp(names[k], part, len) == 0 && (names[k][len] == '\0' || names[k][len] == '-'))
+            return grade_format("%s/%s", milestones, names[k]);
+        all = grade_format("%s %s", all, names[k]);
+    }
+    fprintf(stderr, "grade: no part '%s' in %s; the parts are:%s\n", part, milestones, all);
+    return NULL;
+}
+
+/* Returns raytra's option that `word` names (--name, --name=VALUE or -L), from the one
+ * table of common/cli.c; NULL when none does. */
+static const CliOption *option_of(const char *word)
+{
+    if (word[1] == '-')
+        return cli_option_named(grade_format("%.*s", (int)strcspn(word + 2, "="), word + 2));
+    for (const CliOption *o = cli_options; o->name != NULL; o++)
+        if (o->letter != 0 && word[1] == o->letter && word[2] == '\0')
+            return o;
+    return NULL;
+}
+
+/* Fills r->args with the words of a renders.txt line (words[0..n)) that students' programs
+ * get: the positional words, and the value of an option the course gives as a positional
+ * argument (1.4's MODE); raytra's own options are left out, with a note. */
+static void keep_positional(Render *r, char **words, int n, int part, bool quiet)
+{
+    r->args = grade_alloc(((size_t)n + 1) * sizeof *r->args);
+    int kept = 0;
+    for (int k = 0; k < n; k++) {
+        const CliOption *o = words[k][0] == '-' ? option_of(words[k]) : NULL;
+        const char *eq = strchr(words[k], '=');
+        bool next = o != NULL && o->kind != OPTION_FLAG && eq == NULL && k + 1 < n;
+        const char *value = eq != NULL ? eq + 1 : next ? words[k + 1] : NULL;
+        if (words[k][0] != '-' || words[k][1] == '\0')
+            r->args[kept++] = grade_format("%s", words[k]);
+        else if (o != NULL && o->argument != NULL && value != NULL && cli_option_accepted(o, part))
+            r->args[kept++] = grade_format("%s", value);
+        else if (!quiet)
+            fprintf(stderr,
+                    "grade: note: %s: raytra's option %s%s%s is not given to students' "
+                    "programs\n",
+                    r->image, words[k], next ? " " : "", next ? words[k + 1] : "");
+        k += next;
+    }
+}
+
+/* Adds the render of a renders.txt line (its words) to g, or its name to the illustrations
+ * (marked '!': raytra's own pictures, graded on no student); false (reported) when the line
+ * is not a valid one or names a file that is not there. */
+static bool add_render(Grading *g, const char *top, char **words, int n, const char *where)
+{
+    const char *image = words[0], *dot = strrchr(image, '.');
+    int stem = dot != NULL ? (int)(dot - image) : (int)strlen(image);
+    if (image[0] == '!') {
+        g->illustrations = grade_format("%s%s%.*s", g->illustrations ? g->illustrations : "",
+                                        g->illustrations ? ", " : "", stem - 1, image + 1);
+        return true;
+    }
+    if (n < 2 || strchr(image, '/') != NULL || dot == NULL ||
+        (strcmp(dot, ".png") != 0 && strcmp(dot, ".pfm") != 0 && strcmp(dot, ".exr") != 0)) {
+        fprintf(stderr,
+                "grade: %s: expected IMAGE SCENE [options], IMAGE a .png, .pfm or .exr name\n",
+                where);
+        return false;
+    }
+    Render *r = &g->renders[g->render_count++];
+    *r = (Render){.image = grade_format("%s", image), .scene = grade_format("%s", words[1])};
+    r->name = grade_format("%.*s", stem, image);
+    r->scene_path = words[1][0] == '/' ? r->scene : grade_format("%s/%s", top, words[1]);
+    r->reference = grade_format("%s/%s", g->references, image);
+    keep_positional(r, words + 2, n - 2, cli_part_number(g->part), g->quiet);
+    if (grade_kind(r->scene_path) != S_IFREG)
+        fprintf(stderr, "grade: %s: no scene file %s\n", where, r->scene_path);
+    else if (grade_kind(r->reference) != S_IFREG)
+        fprintf(stderr, "grade: %s: no reference image %s (make references makes it)\n", where,
+                r->reference);
+    return grade_kind(r->scene_path) == S_IFREG && grade_kind(r->reference) == S_IFREG;
+}
+
+/* Reads references/renders.txt into g->renders; false (reported) when it cannot. */
+static bool read_renders(Grading *g, const char *top)
+{
+    char *path = grade_format("%s/renders.txt", g->references), *line = NULL;
+    FILE *f = fopen(path, "r");
+    size_t size = 0;
+    int line_number = 0, capacity = 0;
+    bool ok = f != NULL;
+    if (f == NULL)
+        fprintf(stderr, "grade: cannot read %s: %s\n", path, strerror(errno));
+    while (ok && getline(&line, &size, f) >= 0) {
+        line_number++;
+        char *words[64], *save = NULL;
+        int n = 0;
+        for (char *w = strtok_r(line, " \t\r\n", &save); w != NULL && n < 64;
+             w = strtok_r(NULL, " \t\r\n", &save))
+            words[n++] = w;
+        if (n == 0 || words[0][0] == '#')
+            continue;
+        char *where = grade_format("%s:%d", path, line_number);
+        ok = array_grow(&g->renders, &capacity, g->render_count, sizeof *g->renders);
+        if (!ok)
+            fprintf(stderr, "grade: %s: out of memory\n", where);
+        ok = ok && add_render(g, top, words, n, where);
+    }
+    if (ok && g->render_count == 0) {
+        fprintf(stderr, "grade: %s lists no images\n", path);
+        ok = false;
+    }
+    free(line);
+    if (f != NULL)
+        fclose(f);
+    return ok;
+}
+
 /* Runs a command of the grader's own (no limits but time); true when it succeeds. */
 static bool run_quietly(char **argv, const char *log)
 {
     RunSpec spec = {.log = log, .time_limit = 600};
     RunResult r = run_program(argv, &spec);
-    return r.end == RUN_EXITED && r.status == 0;
+    return run_succeeded(&r);
 }
 
 /* Makes OUT and an empty OUT/work, an absolute path as students' programs run elsewhere,
@@ -213,19 +332,16 @@ static bool prepare_work(Grading *g)
     }
     g->work = grade_format("%s/work", real);
     char *mark = grade_format("%s/.made-by-grade", g->work);
-    char *chmod[] = {"chmod", "-R", "u+rwX", "--", g->work, NULL};
-    char *rm[] = {"rm", "-rf", "--", g->work, NULL};
+    /* chmod first: a student's build may have left folders read-only. */
+    char *rm[] = {"sh", "-c", "chmod -R u+rwX -- \"$1\"; rm -rf -- \"$1\"", "sh", g->work, NULL};
     if (grade_kind(g->work) == S_IFDIR && grade_kind(mark) != S_IFREG) {
         fprintf(stderr, "grade: %s exists and was not made by grade: choose another --out\n",
                 g->work);
         return false;
     }
-    if (grade_kind(g->work) == S_IFDIR) {
-        run_quietly(chmod, NULL); /* a student's build may have left folders read-only */
-        if (!run_quietly(rm, NULL)) {
-            fprintf(stderr, "grade: cannot remove the old work folder %s\n", g->work);
-            return false;
-        }
+    if (grade_kind(g->work) == S_IFDIR && !run_quietly(rm, NULL)) {
+        fprintf(stderr, "grade: cannot remove the old work folder %s\n", g->work);
+        return false;
     }
     FILE *f = grade_make_folder(g->work, false) ? fopen(mark, "w") : NULL;
     if (f != NULL)
@@ -235,30 +351,53 @@ static bool prepare_work(Grading *g)
            grade_make_folder(grade_format("%s/references", g->work), false);
 }
 
-/* Asks imgdiff whether it takes the tolerances, before any work; false (reported) when it
- * does not, or when imgdiff cannot run. */
-static bool check_imgdiff(const Grading *g)
+/* Has imgdiff compare each reference image with itself, with the tolerances, before any
+ * work: so it takes them, reads the image, and makes its thumbnail for the report. False
+ * (reported, in imgdiff's words) when it cannot. */
+static bool show_references(Grading *g)
 {
-    char *log = grade_format("%s/imgdiff-check.txt", g->work);
-    char *argv[] = {g->imgdiff, "--threshold", (char *)g->threshold, "--allow", (char *)g->allow,
-                    "--help",   NULL};
-    if (run_quietly(argv, log))
-        return true;
-    char *said = run_log_tail(log);
-    if (said != NULL)
-        fprintf(stderr, "grade: %s\n", said);
-    fprintf(stderr, "grade: imgdiff (%s) refused the tolerances or could not run\n", g->imgdiff);
-    return false;
+    for (int k = 0; k < g->render_count; k++) {
+        Render *r = &g->renders[k];
+        char *log = grade_format("%s/references/%s.log", g->work, r->name);
+        r->reference_show = grade_format("%s/references/%s.png", g->work, r->name);
+        char *argv[] = {g->imgdiff, "-q", "--threshold", (char *)g->threshold, "--allow",
+                        (char *)g->allow, "--thumb", r->reference_show, "--", r->reference,
+                        r->reference, NULL};
+        if (run_quietly(argv, log))
+            continue;
+        char *said = run_log_tail(log);
+        if (!stop_requested())
+            fprintf(stderr, "grade: %s\n", said != NULL ? said : "imgdiff could not run");
+        return false;
+    }
+    return true;
+}
+
+/* Returns the top of the repository, two folders above the grader's program
+ * (tools/build/grade), or NULL (reported) when it is not there; *tools_build gets the
+ * program's folder. */
+static char *find_top(char **tools_build)
+{
+    char exe[PATH_MAX] = "", real[PATH_MAX];
+    if (realpath("/proc/self/exe", exe) != NULL)
+        *strrchr(exe, '/') = '\0';
+    *tools_build = grade_format("%s", exe);
+    if (realpath(grade_format("%s/../../milestones", exe), real) != NULL &&
+        grade_kind(real) == S_IFDIR)
+        return grade_format("%.*s", (int)(strrchr(real, '/') - real), real);
+    fprintf(stderr, "grade: cannot find the raytra repository: the grader must stay in "
+                    "tools/build/ of its checkout\n");
+    return NULL;
 }
 
 /* Does all the grading but reading the command line, for part `part`; returns the exit
  * status: 0 when the report was written (with --self, 1 when a scene failed), 2 when it
  * could not be. */
-static int grade(Grading *g, const char *part, const char *argv0)
+static int grade(Grading *g, const char *part)
 {
     char *tools_build = NULL;
-    char *top = part_find_top(argv0, &tools_build);
-    char *part_dir = top != NULL ? part_find(top, part) : NULL;
+    char *top = find_top(&tools_build);
+    char *part_dir = top != NULL ? find_part(top, part) : NULL;
     if (part_dir == NULL)
         return EXIT_TROUBLE;
     g->part = strrchr(part_dir, '/') + 1;
@@ -276,8 +415,7 @@ static int grade(Grading *g, const char *part, const char *argv0)
         fprintf(stderr, "grade: no folder %s\n", g->submissions);
         return EXIT_TROUBLE;
     }
-    if (!part_read_renders(g, top) || !prepare_work(g) || !check_imgdiff(g) ||
-        !part_show_references(g) || !submission_list(g))
+    if (!read_renders(g, top) || !prepare_work(g) || !show_references(g) || !submission_list(g))
         return EXIT_TROUBLE;
     if (!g->quiet)
         fprintf(stderr, "grade: part %s, %d scene%s, %d submission%s\n", g->part, g->render_count,
@@ -290,22 +428,27 @@ static int grade(Grading *g, const char *part, const char *argv0)
 }
 
 /* Runs the grader: exit status 0 when the report was written, 2 when it could not be,
- * 130 when interrupted. */
+ * 130 when interrupted. Options may follow the words (getopt_long). */
 int main(int argc, char **argv)
 {
     static Grading g;
-    const char *part = NULL;
     for (int k = 0; k < OPTION_COUNT; k++)
         if (options[k].o.fallback != NULL)
             set_option(&g, k, options[k].o.fallback);
-    if (!parse_args(argc, argv, &g, &part))
+    if (!toolopt_parse("grade", options, sizeof options[0], OPTION_COUNT, argc, argv,
+                       set_option, &g))
         return EXIT_TROUBLE;
     if (g.help) {
         print_help();
         return EXIT_REPORTED;
     }
+    if (argc - optind != 2) {
+        fprintf(stderr, "usage: grade [options] PART SUBMISSIONS (grade --help for more)\n");
+        return EXIT_TROUBLE;
+    }
+    g.submissions = argv[optind + 1];
     run_init();
-    int status = grade(&g, part, argv[0]);
+    int status = grade(&g, argv[optind]);
     if (!stop_requested())
         return status;
     fprintf(stderr, "grade: interrupted: no report written\n");

@@ -9,7 +9,7 @@
 
 #include "diag.h"
 
-/* What became of one scene of one submission; verdict_info says what each means. */
+/* What became of one scene of one submission; docs/grading.md says what each means. */
 typedef enum {
     VERDICT_PASS, VERDICT_FAIL, VERDICT_WRONG_SIZE, VERDICT_LINK, VERDICT_UNREADABLE,
     VERDICT_MISSING, VERDICT_ERROR, VERDICT_CRASHED, VERDICT_TIMEOUT, VERDICT_OUT_OF_MEMORY,
@@ -19,11 +19,10 @@ typedef enum {
 /* The summary's columns, into which the verdicts fall. */
 typedef enum { TALLY_PASS, TALLY_FAIL, TALLY_MISSING, TALLY_ERROR, TALLY_COUNT } Tally;
 
-/* A verdict's name in the report and the CSV ("WRONG SIZE"), its column, and its meaning. */
+/* A verdict's name in the report and the CSV ("WRONG SIZE"), and its column. */
 typedef struct {
     const char *name;
     Tally tally;
-    const char *meaning;
 } VerdictInfo;
 
 extern const VerdictInfo verdict_info[VERDICT_COUNT];
@@ -57,10 +56,10 @@ typedef struct {
     bool compared;     /* figures holds imgdiff's answer */
     bool identical;    /* equal to the reference: its thumbnail and a black map serve */
     Figures figures;
-    char *image_show, *heat_show; /* the thumbnails of the image and its heat map, or NULL */
+    char *image_show, *heat_show; /* where imgdiff put the thumbnails, or NULL */
     char *log_tail;               /* the last lines the program printed, or NULL */
     double relative_width; /* a wrong-sized image's width over the reference's; else 0 */
-    double seconds;        /* how long the program ran; below 0 when none was run */
+    double seconds;        /* how long the program ran; 0 when none was run */
 } SceneResult;
 
 /* One student's submission: a folder of images, or of sources whose make builds raytra. */
@@ -70,7 +69,7 @@ typedef struct {
     char *work;              /* its work folder, named safely: OUT/work/03-alice */
     bool program;            /* it has a Makefile: built and run rather than read */
     char *link;              /* the folder is a symbolic link to this: not graded; or NULL */
-    char build_message[512]; /* why the build failed; empty when it did not */
+    char *build_message;     /* why the build failed; NULL when it did not */
     char *build_log_tail;    /* the end of make's output, or NULL */
     SceneResult *results;    /* one a render */
     int tally[TALLY_COUNT];
@@ -116,11 +115,8 @@ typedef struct {
     double seconds;
 } RunResult;
 
-/* The longest side of a thumbnail: three fit side by side on a laptop's screen. */
-#define THUMB_SIDE 320
-
-/* The memory limit of the grader's own children that read students' files: none under
- * AddressSanitizer, whose shadow memory no limit leaves room for. */
+/* The memory limit of imgdiff, which reads students' files: none under AddressSanitizer,
+ * whose shadow memory no limit leaves room for. */
 #if defined(__SANITIZE_ADDRESS__)
 #define RUN_OWN_MEMORY(limit) ((void)(limit), 0LL)
 #else
@@ -133,35 +129,21 @@ char *grade_format(const char *fmt, ...) DIAG_PRINTF(1, 2);
 char *grade_size_text(long long bytes);
 int grade_kind(const char *path);
 bool grade_make_folder(const char *path, bool anew);
-void grade_verdict(SceneResult *res, Verdict v, const char *fmt, ...) DIAG_PRINTF(3, 4);
-
-/* grade_part.c */
-char *part_find_top(const char *argv0, char **tools_build);
-char **part_list_folders(const char *folder, int *count);
-char *part_find(const char *top, const char *part);
-bool part_read_renders(Grading *g, const char *top);
-bool part_show_references(Grading *g);
+char **grade_list_folders(const char *folder, int *count);
 
 /* grade_submission.c */
 bool submission_list(Grading *g);
 bool submission_grade_all(Grading *g);
 
-/* grade_compare.c */
-bool compare_handed_in(const Render *r, SceneResult *res, const char *path);
-void compare_image(const Grading *g, const Submission *s, int k, const char *image);
-bool compare_thumb(const char *from, const char *to, bool peaks, const char *log,
-                   long long memory_limit);
-
 /* grade_run.c */
 void run_init(void);
 RunResult run_program(char *const argv[], const RunSpec *spec);
-RunResult run_function(int (*function)(void *), void *arg, const RunSpec *spec);
-char *run_describe(const RunResult *r, double limit);
+bool run_succeeded(const RunResult *r);
+char *run_describe(const RunResult *r);
 char *run_log_tail(const char *path);
 
-/* grade_report.c, grade_csv.c */
+/* grade_report.c */
 bool report_write(const Grading *g);
-void csv_write(FILE *f, const Grading *g);
 int report_print_self(const Grading *g);
 
 #endif

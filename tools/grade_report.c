@@ -1,11 +1,9 @@
-/* grade_report.c: report.html, one self-contained page, and grades.csv, each written whole. */
+/* grade_report.c: report.html, one self-contained page, and grades.csv, each written whole; --self's lines. */
 #include "grade.h"
 
 #include <math.h>
-#include <stdarg.h>
 #include <stdlib.h>
 #include <string.h>
-#include <sys/stat.h>
 #include <unistd.h>
 
 #include "imgfile.h"
@@ -17,27 +15,12 @@
 /* The largest picture embedded: thumbnails are far smaller; a larger file is a mistake. */
 #define EMBED_MAX_BYTES (8L << 20)
 
-/* Each verdict's name, column and meaning; in the order of Verdict. */
+/* Each verdict's name and column; in the order of Verdict. */
 const VerdictInfo verdict_info[VERDICT_COUNT] = {
-    {"PASS", TALLY_PASS, "the image matches the reference within the tolerances"},
-    {"FAIL", TALLY_FAIL, "the image differs from the reference by more than the tolerances allow"},
-    {"WRONG SIZE", TALLY_FAIL, "the image has another width or height than the reference"},
-    {"LINK", TALLY_FAIL,
-     "the file is a symbolic link, or a hard link to the reference: not an image handed in"},
-    {"UNREADABLE", TALLY_FAIL,
-     "the file is not a PNG, PFM or OpenEXR image that imgdiff can read, or not a regular file"},
-    {"MISSING", TALLY_MISSING,
-     "there is no image: none in the folder, or the program ended normally without writing it"},
-    {"ERROR", TALLY_ERROR, "the program ended with a failure exit status and wrote no image"},
-    {"CRASHED", TALLY_ERROR,
-     "the program was killed by a signal: a segmentation fault, an abort, a file too large"},
-    {"TIMEOUT", TALLY_ERROR,
-     "the program did not finish within the time limit; it was killed, with all it started"},
-    {"OUT OF MEMORY", TALLY_ERROR,
-     "the program failed saying that it ran out of memory, or was killed as the system's "
-     "out-of-memory killer kills"},
-    {"BUILD FAILED", TALLY_ERROR,
-     "make failed, ran too long or made no raytra: no scene could be rendered"},
+    {"PASS", TALLY_PASS},         {"FAIL", TALLY_FAIL},       {"WRONG SIZE", TALLY_FAIL},
+    {"LINK", TALLY_FAIL},         {"UNREADABLE", TALLY_FAIL}, {"MISSING", TALLY_MISSING},
+    {"ERROR", TALLY_ERROR},       {"CRASHED", TALLY_ERROR},   {"TIMEOUT", TALLY_ERROR},
+    {"OUT OF MEMORY", TALLY_ERROR}, {"BUILD FAILED", TALLY_ERROR},
 };
 
 /* The summary's class (and colour) for each tally. */
@@ -49,63 +32,21 @@ static const char style[] =
 #include "grade_style.h"
     ;
 
-/* The page's parts, filled by html_put. */
-static const char page_head[] =
-    "<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n"
-    "<meta name=\"viewport\" content=\"width=device-width, initial-scale=1\">\n"
-    "<title>%s: grading report</title>\n<style>\n%S";
-static const char page_title[] =
-    "</style>\n</head>\n<body>\n<header class=\"page\"><div>\n<h1>Grading report: part %s</h1>\n"
-    "<p class=\"meta\">%d submission%S from <code>%s</code>, %d scene%S each, graded %s.</p>\n"
-    "<p class=\"meta\">A pixel differs when one of its channels differs by more than %s; an "
-    "image passes when at most the fraction %s of its pixels differ. A program gets %s s a "
-    "scene and %s s to build; memory limit: %s.</p>\n";
-static const char summary_head[] =
-    "</div></header>\n<main>\n<section id=\"summary\">\n<h2>Summary</h2>\n<p class=\"counts\">"
-    "%d of %d submission%S pass every scene.</p>\n<table class=\"summary\">\n<thead><tr>"
-    "<th>Submission</th><th>Kind</th><th class=\"n\">Pass</th><th class=\"n\">Fail</th>"
-    "<th class=\"n\">Missing</th><th class=\"n\">Error</th><th>Scenes</th><th>Verdict</th>"
-    "</tr></thead>\n<tbody>\n";
-static const char legend_head[] =
-    "</tbody>\n</table>\n<details><summary>What the verdicts mean, and how they are counted"
-    "</summary>\n<dl class=\"legend\">\n";
-static const char scene_head[] =
-    "<details class=\"scene\"%S>\n<summary><span class=\"scene-name\">%s</span><span "
-    "class=\"badge %S\">%S</span><span class=\"message\">%s</span>%S</summary>\n<div "
-    "class=\"scene-body\">\n<p class=\"file\">Scene <code>%s";
-static const char submission_head[] =
-    "<section id=\"s%d\">\n<h2><span class=\"name\">%s</span><span class=\"kind\">%S</span><span "
-    "class=\"badge %S\">%S</span><a class=\"back\" href=\"#summary\">&uarr; summary</a></h2>\n";
-static const char page_end[] =
-    "</main>\n<footer>Written by raytra's <code>tools/grade</code> (docs/grading.md). The "
-    "builds, images, logs and heat maps are in <code>%s</code>.</footer>\n</body>\n</html>\n";
-
-/* Writes the template fmt with its conversions filled: %s a text with the characters HTML
- * gives a meaning made plain, %S raw HTML, %d an int. */
-static void html_put(FILE *f, const char *fmt, ...)
+/* Returns text with the characters HTML gives a meaning written as entities: everything a
+ * student named or printed goes through here. */
+static char *html(const char *text)
 {
     static const char specials[] = "&<>\"'", *const entities[] = {"&amp;", "&lt;", "&gt;",
                                                                   "&quot;", "&#39;"};
-    va_list ap;
-    va_start(ap, fmt);
-    for (const char *p = fmt; *p != '\0'; p++) {
-        if (*p != '%' || p[1] == '\0' || strchr("sSd", p[1]) == NULL) {
-            fputc(*p, f);
-        } else if (*++p == 'd') {
-            fprintf(f, "%d", va_arg(ap, int));
-        } else if (*p == 'S') {
-            fputs(va_arg(ap, const char *), f);
-        } else {
-            for (const char *t = va_arg(ap, const char *); t != NULL && *t != '\0'; t++) {
-                const char *special = strchr(specials, *t);
-                if (special != NULL)
-                    fputs(entities[special - specials], f);
-                else
-                    fputc(*t, f);
-            }
-        }
+    char *out = grade_alloc(6 * strlen(text) + 1), *o = out;
+    for (const char *t = text; *t != '\0'; t++) {
+        const char *special = strchr(specials, *t);
+        if (special != NULL)
+            o = stpcpy(o, entities[special - specials]);
+        else
+            *o++ = *t;
     }
-    va_end(ap);
+    return out;
 }
 
 /* Returns "s" for a count other than 1, the plural's ending. */
@@ -114,8 +55,14 @@ static const char *plural(int n)
     return n == 1 ? "" : "s";
 }
 
-/* Returns the thumbnail at path, a PNG the grader made, as a data: URI (base64) for the
- * caller to free, with its size in pixels; NULL when it cannot be read. */
+/* Returns a verdict's badge: its name in its column's colour. */
+static char *badge(const VerdictInfo *v)
+{
+    return grade_format("<span class=\"badge %s\">%s</span>", tally_class[v->tally], v->name);
+}
+
+/* Returns the thumbnail at path, a PNG imgdiff made, as a data: URI (base64) for the caller
+ * to free, with its size in pixels; NULL when there is none or it cannot be read. */
 static char *picture_uri(const char *path, int *width, int *height)
 {
     static const char digits[] = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
@@ -151,16 +98,20 @@ static char *picture_uri(const char *path, int *width, int *height)
  * FAIL. */
 static const VerdictInfo *overall(const Grading *g, const Submission *s)
 {
-    return &verdict_info[s->build_message[0] != '\0'               ? VERDICT_BUILD_FAILED
+    return &verdict_info[s->build_message != NULL                   ? VERDICT_BUILD_FAILED
                          : s->tally[TALLY_PASS] == g->render_count ? VERDICT_PASS
                                                                    : VERDICT_FAIL];
 }
 
 /* Writes the page's head, with a style rule a reference picture, each embedded once and
- * shown as a background beside every submission's image; and the title block. */
+ * shown as a background beside every submission's image; the title block; and the
+ * summary: a row a submission, linking to its details. */
 static void write_heading(FILE *f, const Grading *g)
 {
-    html_put(f, page_head, g->part, style);
+    int passed = 0;
+    fprintf(f, "<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n"
+               "<meta name=\"viewport\" content=\"width=device-width, initial-scale=1\">\n"
+               "<title>%s: grading report</title>\n<style>\n%s", html(g->part), style);
     for (int k = 0; k < g->render_count; k++) {
         int w, h;
         char *uri = picture_uri(g->renders[k].reference_show, &w, &h);
@@ -168,50 +119,50 @@ static void write_heading(FILE *f, const Grading *g)
             fprintf(f, ".ref%d{aspect-ratio:%d/%d;background-image:url(%s)}\n", k, w, h, uri);
         free(uri);
     }
-    html_put(f, page_title, g->part, g->sub_count, plural(g->sub_count), g->submissions,
-             g->render_count, plural(g->render_count), g->started, g->threshold, g->allow,
-             grade_format("%g", g->time_limit), grade_format("%g", g->build_time_limit),
-             grade_size_text(g->memory_limit));
+    fprintf(f, "</style>\n</head>\n<body>\n<header class=\"page\"><div>\n<h1>Grading report: "
+               "part %s</h1>\n<p class=\"meta\">%d submission%s from <code>%s</code>, %d scene%s "
+               "each, graded %s.</p>\n<p class=\"meta\">A pixel differs when one of its channels "
+               "differs by more than %s; an image passes when at most the fraction %s of its "
+               "pixels differ. A program gets %g s a scene and %g s to build; memory limit: "
+               "%s.</p>\n",
+            html(g->part), g->sub_count, plural(g->sub_count), html(g->submissions),
+            g->render_count, plural(g->render_count), g->started, html(g->threshold),
+            html(g->allow), g->time_limit, g->build_time_limit, grade_size_text(g->memory_limit));
     if (g->illustrations != NULL)
-        html_put(f, "<p class=\"meta\">Not graded (illustrations): %s.</p>\n", g->illustrations);
-}
-
-/* Writes the summary: a row a submission, linking to its details, and the legend. */
-static void write_summary(FILE *f, const Grading *g)
-{
-    int passed = 0;
+        fprintf(f, "<p class=\"meta\">Not graded (illustrations): %s.</p>\n",
+                html(g->illustrations));
     for (int i = 0; i < g->sub_count; i++)
         passed += g->subs[i].tally[TALLY_PASS] == g->render_count;
-    html_put(f, summary_head, passed, g->sub_count, plural(g->sub_count));
+    fprintf(f, "</div></header>\n<main>\n<section id=\"summary\">\n<h2>Summary</h2>\n<p "
+               "class=\"counts\">%d of %d submission%s pass every scene.</p>\n<table "
+               "class=\"summary\">\n<thead><tr><th>Submission</th><th>Kind</th><th class=\"n\">"
+               "Pass</th><th class=\"n\">Fail</th><th class=\"n\">Missing</th><th class=\"n\">"
+               "Error</th><th>Scenes</th><th>Verdict</th></tr></thead>\n<tbody>\n",
+            passed, g->sub_count, plural(g->sub_count));
     for (int i = 0; i < g->sub_count; i++) {
         const Submission *s = &g->subs[i];
-        html_put(f, "<tr><td><a href=\"#s%d\">%s</a></td><td>%S</td>", i + 1, s->name,
-                 s->program ? "program" : "images");
+        fprintf(f, "<tr><td><a href=\"#s%d\">%s</a></td><td>%s</td>", i + 1, html(s->name),
+                s->program ? "program" : "images");
         for (int t = 0; t < TALLY_COUNT; t++)
-            html_put(f, "<td class=\"n%S\">%d</td>", s->tally[t] == 0 ? " zero" : "", s->tally[t]);
+            fprintf(f, "<td class=\"n%s\">%d</td>", s->tally[t] == 0 ? " zero" : "", s->tally[t]);
         /* A square a scene, in its verdict's colour, named when pointed at. */
         fputs("<td class=\"dots\">", f);
         for (int k = 0; k < g->render_count; k++) {
             const VerdictInfo *v = &verdict_info[s->results[k].verdict];
-            html_put(f, "<span class=\"dot %S\" title=\"%s: %S\"></span>", tally_class[v->tally],
-                     g->renders[k].name, v->name);
+            fprintf(f, "<span class=\"dot %s\" title=\"%s: %s\"></span>", tally_class[v->tally],
+                    html(g->renders[k].name), v->name);
         }
-        html_put(f, "</td><td><span class=\"badge %S\">%S</span></td></tr>\n",
-                 tally_class[overall(g, s)->tally], overall(g, s)->name);
+        fprintf(f, "</td><td>%s</td></tr>\n", badge(overall(g, s)));
     }
-    html_put(f, legend_head);
-    for (const VerdictInfo *v = verdict_info; v < verdict_info + VERDICT_COUNT; v++)
-        html_put(f, "<dt><span class=\"badge %S\">%S</span></dt><dd>%S; counted as %S</dd>\n",
-                 tally_class[v->tally], v->name, v->meaning, tally_class[v->tally]);
-    fputs("</dl>\n</details>\n</section>\n", f);
+    fputs("</tbody>\n</table>\n</section>\n", f);
 }
 
 /* Writes a block of a program's output, or nothing when there is none. */
 static void write_log(FILE *f, const char *title, const char *log, bool open)
 {
     if (log != NULL)
-        html_put(f, "<details class=\"log\"%S><summary>%S</summary><pre>%s</pre></details>\n",
-                 open ? " open" : "", title, log);
+        fprintf(f, "<details class=\"log\"%s><summary>%s</summary><pre>%s</pre></details>\n",
+                open ? " open" : "", title, html(log));
 }
 
 /* Writes a figure of scene k: the reference's picture with classes `same` when it stands
@@ -225,7 +176,7 @@ static void write_figure(FILE *f, const char *same, const char *path, double wid
     char *uri = same == NULL ? picture_uri(path, &w, &h) : NULL;
     fputs("<figure>", f);
     if (same != NULL)
-        html_put(f, "<div class=\"pic %S%d\" role=\"img\" aria-label=\"%S\"></div>", same, k, alt);
+        fprintf(f, "<div class=\"pic %s%d\" role=\"img\" aria-label=\"%s\"></div>", same, k, alt);
     else if (uri != NULL)
         fprintf(f,
                 "<img class=\"pic%s\" width=\"%d\" height=\"%d\" style=\"width:%.1f%%\" "
@@ -233,7 +184,7 @@ static void write_figure(FILE *f, const char *same, const char *path, double wid
                 w <= PIXELATED_WIDTH ? " px" : "", w, h, 100 * width, alt, uri);
     else /* the reference's rule gives the box its shape; .pic.none wins its background */
         fprintf(f, "<div class=\"pic none ref%d\">%s</div>", k, none);
-    html_put(f, "<figcaption>%S</figcaption></figure>\n", caption);
+    fprintf(f, "<figcaption>%s</figcaption></figure>\n", caption);
     free(uri);
 }
 
@@ -243,24 +194,19 @@ static void write_figure(FILE *f, const char *same, const char *path, double wid
 static void write_pictures(FILE *f, const SceneResult *res, int k)
 {
     const Figures *fig = &res->figures;
-    char caption[128] = "Differences", psnr[32] = "&infin; (equal)", box[128] = "";
-    if (res->identical)
-        snprintf(caption, sizeof caption, "Differences: none, the images are identical");
-    else if (res->heat_show != NULL)
-        snprintf(caption, sizeof caption, "Differences: black where equal, white at %.3g/255",
-                 fig->heat_scale * 255);
     double width = res->relative_width > 0 && res->relative_width < 1 ? res->relative_width : 1;
+    char *caption = "Differences";
+    if (res->identical)
+        caption = "Differences: none, the images are identical";
+    else if (res->compared)
+        caption = grade_format("Differences: black where equal, white at %.3g/255",
+                               fig->heat_scale * 255);
     fputs("<div class=\"pictures\">\n", f);
     write_figure(f, "ref", NULL, 1, k, "reference image", "Reference", NULL);
     write_figure(f, res->identical ? "ref" : NULL, res->image_show, width, k, "submitted image",
                  "Submission", "no image");
     write_figure(f, res->identical ? "black ref" : NULL, res->heat_show, 1, k,
                  "heat map of the differences", caption, "no comparison");
-    if (!isinf(fig->psnr))
-        snprintf(psnr, sizeof psnr, "%.2f dB", fig->psnr);
-    if (fig->has_box)
-        snprintf(box, sizeof box, "<tr><th>Region</th><td>(%d,%d)&ndash;(%d,%d)</td></tr>",
-                 fig->box[0], fig->box[1], fig->box[2], fig->box[3]);
     if (res->compared)
         fprintf(f,
                 "<table class=\"figures\"><tr><th>Max diff R, G, B</th><td>%.3g, %.3g, %.3g /255"
@@ -268,55 +214,110 @@ static void write_pictures(FILE *f, const SceneResult *res, int k)
                 "%.4g</td></tr><tr><th>PSNR</th><td>%s</td></tr><tr><th>Differing pixels</th><td>"
                 "%ld (%.3g%%)</td></tr>%s</table>\n",
                 fig->max[0] * 255, fig->max[1] * 255, fig->max[2] * 255, fig->mean * 255,
-                fig->rmse, psnr, fig->differing,
-                fig->pixels > 0 ? 100.0 * fig->differing / fig->pixels : 0.0, box);
+                fig->rmse, isinf(fig->psnr) ? "&infin; (equal)" : grade_format("%.2f dB", fig->psnr),
+                fig->differing, fig->pixels > 0 ? 100.0 * fig->differing / fig->pixels : 0.0,
+                fig->has_box ? grade_format("<tr><th>Region</th><td>(%d,%d)&ndash;(%d,%d)</td></tr>",
+                                            fig->box[0], fig->box[1], fig->box[2], fig->box[3])
+                             : "");
     fputs("</div>\n", f);
 }
 
-/* Writes one scene of one submission: a line that opens (open already unless it passed)
- * on the scene file, the pictures when there is an image, and the program's output. */
-static void write_scene(FILE *f, const Grading *g, const Submission *s, int k)
-{
-    const Render *r = &g->renders[k];
-    const SceneResult *res = &s->results[k];
-    Tally tally = verdict_info[res->verdict].tally;
-    char seconds[64] = "";
-    if (res->seconds >= 0)
-        snprintf(seconds, sizeof seconds, "<span class=\"time\">%.2f s</span>", res->seconds);
-    html_put(f, scene_head, res->verdict == VERDICT_PASS ? "" : " open", r->name,
-             tally_class[tally], verdict_info[res->verdict].name, res->message, seconds, r->scene);
-    for (char **a = r->args; *a != NULL; a++)
-        html_put(f, " %s", *a);
-    fputs("</code></p>\n", f);
-    if (res->identical || res->image_show != NULL)
-        write_pictures(f, res, k);
-    write_log(f, "Program output (the last lines)", res->log_tail, tally == TALLY_ERROR);
-    fputs("</div>\n</details>\n", f);
-}
-
-/* Writes the whole page: the heading, the summary, then a section a submission with its
- * verdict, its build, and each of its scenes. */
+/* Writes the whole page: the heading and summary, then a section a submission with its
+ * verdict, its build, and a line a scene that opens (open already unless it passed) on the
+ * scene file, the pictures when there is an image, and the program's output. */
 static void write_html(FILE *f, const Grading *g)
 {
     write_heading(f, g);
-    write_summary(f, g);
     for (int i = 0; i < g->sub_count; i++) {
         const Submission *s = &g->subs[i];
-        bool broken = s->build_message[0] != '\0';
-        html_put(f, submission_head, i + 1, s->name, s->program ? "program" : "images",
-                 tally_class[overall(g, s)->tally], overall(g, s)->name);
+        bool broken = s->build_message != NULL;
+        fprintf(f, "<section id=\"s%d\">\n<h2><span class=\"name\">%s</span><span class=\"kind\">"
+                   "%s</span>%s<a class=\"back\" href=\"#summary\">&uarr; summary</a></h2>\n",
+                i + 1, html(s->name), s->program ? "program" : "images", badge(overall(g, s)));
         if (broken)
-            html_put(f, "<div class=\"broken\"><strong>The build failed:</strong> %s. No scene "
-                        "could be rendered.", s->build_message);
+            fprintf(f, "<div class=\"broken\"><strong>The build failed:</strong> %s. No scene "
+                       "could be rendered.", html(s->build_message));
         else
-            html_put(f, "<p class=\"counts\">%d of %d scene%S pass.</p>\n", s->tally[TALLY_PASS],
-                     g->render_count, plural(g->render_count));
+            fprintf(f, "<p class=\"counts\">%d of %d scene%s pass.</p>\n", s->tally[TALLY_PASS],
+                    g->render_count, plural(g->render_count));
         write_log(f, "Build output (the last lines)", s->build_log_tail, broken);
-        for (int k = 0; k < g->render_count && !broken; k++)
-            write_scene(f, g, s, k);
+        for (int k = 0; k < g->render_count && !broken; k++) {
+            const Render *r = &g->renders[k];
+            const SceneResult *res = &s->results[k];
+            const VerdictInfo *v = &verdict_info[res->verdict];
+            fprintf(f, "<details class=\"scene\"%s>\n<summary><span class=\"scene-name\">%s</span>"
+                       "%s<span class=\"message\">%s</span>%s</summary>\n<div class=\"scene-body\">"
+                       "\n<p class=\"file\">Scene <code>%s",
+                    res->verdict == VERDICT_PASS ? "" : " open", html(r->name), badge(v),
+                    html(res->message),
+                    res->seconds > 0
+                        ? grade_format("<span class=\"time\">%.2f s</span>", res->seconds)
+                        : "",
+                    html(r->scene));
+            for (char **a = r->args; *a != NULL; a++)
+                fprintf(f, " %s", html(*a));
+            fputs("</code></p>\n", f);
+            if (res->compared || res->relative_width > 0)
+                write_pictures(f, res, k);
+            write_log(f, "Program output (the last lines)", res->log_tail, v->tally == TALLY_ERROR);
+            fputs("</div>\n</details>\n", f);
+        }
         fputs(broken ? "</div>\n</section>\n" : "</section>\n", f);
     }
-    html_put(f, page_end, g->work);
+    fprintf(f, "</main>\n<footer>Written by raytra's <code>tools/grade</code> (docs/grading.md). "
+               "The builds, images, logs and heat maps are in <code>%s</code>.</footer>\n</body>\n"
+               "</html>\n",
+            html(g->work));
+}
+
+/* Writes text as one CSV field and a comma: quoted, its quotes doubled (RFC 4180), when it
+ * holds a comma, a quote or a line break, or starts or ends with a space. A text that a
+ * spreadsheet would take for a formula, starting with =, +, -, @, a tab or a carriage
+ * return, gets a quote ' first, and quotes around. */
+static void csv_field(FILE *f, const char *text)
+{
+    size_t len = strlen(text);
+    bool formula = len > 0 && strchr("=+-@\t\r", text[0]) != NULL;
+    bool quote = formula || strpbrk(text, ",\"\r\n") != NULL ||
+                 (len > 0 && (text[0] == ' ' || text[len - 1] == ' '));
+    fputs(formula ? "\"'" : quote ? "\"" : "", f);
+    for (const char *p = text; *p != '\0'; p++) {
+        if (*p == '"')
+            fputc('"', f);
+        fputc(*p, f);
+    }
+    fputs(quote ? "\"," : ",", f);
+}
+
+/* Writes the CSV: a header line, then one line a submission and scene; the figures, which
+ * need no quoting, are empty when no comparison was made. */
+static void write_csv(FILE *f, const Grading *g)
+{
+    fputs("submission,scene,verdict,max_diff_r,max_diff_g,max_diff_b,mean_abs_diff,rmse,"
+          "psnr_db,differing_pixels,differing_fraction,bbox,message,seconds\n", f);
+    for (int i = 0; i < g->sub_count; i++)
+        for (int k = 0; k < g->render_count; k++) {
+            const SceneResult *res = &g->subs[i].results[k];
+            const Figures *fig = &res->figures;
+            csv_field(f, g->subs[i].name);
+            csv_field(f, g->renders[k].name);
+            csv_field(f, verdict_info[res->verdict].name);
+            if (res->compared)
+                fprintf(f, "%.6g,%.6g,%.6g,%.6g,%.6g,%s,%ld,%.6g,", fig->max[0], fig->max[1],
+                        fig->max[2], fig->mean, fig->rmse,
+                        isinf(fig->psnr) ? "inf" : grade_format("%.2f", fig->psnr), fig->differing,
+                        fig->pixels > 0 ? (double)fig->differing / fig->pixels : 0.0);
+            else
+                fputs(",,,,,,,,", f);
+            if (res->compared && fig->has_box)
+                fprintf(f, "\"(%d,%d)-(%d,%d)\"", fig->box[0], fig->box[1], fig->box[2],
+                        fig->box[3]);
+            fputc(',', f);
+            csv_field(f, res->message);
+            if (res->seconds > 0)
+                fprintf(f, "%.3f", res->seconds);
+            fputc('\n', f);
+        }
 }
 
 /* Writes g->out/name with write, through a temporary renamed onto it so that it appears
@@ -327,25 +328,20 @@ static char *write_whole(const Grading *g, const char *name, void (*write)(FILE 
     OutFile out;
     Error err;
     bool ok = outfile_open(&out, path, &err);
-    if (ok) {
+    if (ok)
         write(out.file, g);
-        if (ferror(out.file)) {
-            error_set(&err, "write error");
-            outfile_abort(&out);
-            ok = false;
-        } else {
-            ok = outfile_commit(&out, &err);
-        }
-    }
-    if (!ok)
+    /* outfile_commit fails on a write error too. */
+    if (!ok || !outfile_commit(&out, &err)) {
         fprintf(stderr, "grade: cannot write %s: %s\n", path, err.text);
-    return ok ? path : NULL;
+        return NULL;
+    }
+    return path;
 }
 
 /* Writes grades.csv and report.html into g->out; false (reported) when it cannot. */
 bool report_write(const Grading *g)
 {
-    char *csv = write_whole(g, "grades.csv", csv_write);
+    char *csv = write_whole(g, "grades.csv", write_csv);
     char *html = csv != NULL ? write_whole(g, "report.html", write_html) : NULL;
     if (html != NULL && !g->quiet)
         fprintf(stderr, "grade: wrote %s and %s\n", html, csv);

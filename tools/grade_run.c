@@ -35,10 +35,7 @@
 void run_init(void)
 {
     stop_install();
-    struct sigaction sa = {0};
-    sa.sa_handler = stop_request;
-    sigemptyset(&sa.sa_mask);
-    sigaction(SIGHUP, &sa, NULL);
+    signal(SIGHUP, stop_request);
     /* With its output piped into head, the grader must not die before ending a child. */
     signal(SIGPIPE, SIG_IGN);
     sigset_t child;
@@ -60,25 +57,6 @@ static void wait_for_signal(double seconds)
     sigtimedwait(&child, NULL, &t);
 }
 
-/* Closes every file descriptor above stderr, so that a child holds none of the grader's
- * files, nor the jobserver pipes of a make that runs the grader. */
-static void close_other_files(void)
-{
-    DIR *d = opendir("/proc/self/fd");
-    if (d == NULL) {
-        for (int fd = 3; fd < 1024; fd++)
-            close(fd);
-        return;
-    }
-    struct dirent *e;
-    while ((e = readdir(d)) != NULL) {
-        int fd = atoi(e->d_name);
-        if (fd > 2 && fd != dirfd(d))
-            close(fd);
-    }
-    closedir(d);
-}
-
 /* Sets a resource limit, soft and hard, so that the child cannot raise it again; a lower
  * hard limit already set stays, as only root may raise one. */
 static void set_limit(int resource, long long value)
@@ -92,17 +70,13 @@ static void set_limit(int resource, long long value)
 }
 
 /* Prepares a new child: its own process group, stdin from /dev/null, output to the log,
- * the limits, the folder; exits with EXEC_FAILED (why, in the log) when it cannot. */
+ * the limits, the folder; exits with EXEC_FAILED (why, in the log) when it cannot. The
+ * signals the grader catches go back to their defaults at exec; the one it ignores and
+ * the one it holds back are given back here. */
 static void child_setup(const RunSpec *spec)
 {
     setpgid(0, 0);
-#ifdef __linux__
-    /* Should the grader itself be killed, the child dies with it rather than run on. */
-    prctl(PR_SET_PDEATHSIG, SIGKILL, 0, 0, 0);
-#endif
-    int defaults[] = {SIGINT, SIGTERM, SIGHUP, SIGPIPE};
-    for (size_t k = 0; k < sizeof defaults / sizeof defaults[0]; k++)
-        signal(defaults[k], SIG_DFL);
+    signal(SIGPIPE, SIG_DFL);
     sigset_t none;
     sigemptyset(&none);
     sigprocmask(SIG_SETMASK, &none, NULL);
@@ -113,17 +87,10 @@ static void child_setup(const RunSpec *spec)
     int out = spec->log != NULL ? open(spec->log, flags, 0644) : open("/dev/null", O_WRONLY);
     if (in < 0 || out < 0 || dup2(in, 0) < 0 || dup2(out, 1) < 0 || dup2(out, 2) < 0)
         _exit(EXEC_FAILED);
-    close_other_files();
     set_limit(RLIMIT_CORE, 0);
     set_limit(RLIMIT_FSIZE, FILE_LIMIT);
     if (spec->memory_limit > 0)
         set_limit(RLIMIT_AS, spec->memory_limit);
-    /* make hands its flags and jobserver to sub-makes through these: a student's make is
-     * not a sub-make of the one that may be running the grader. */
-    static const char *const make_vars[] = {"MAKEFLAGS", "MFLAGS",    "GNUMAKEFLAGS",
-                                            "MAKELEVEL", "MAKEFILES", "MAKEOVERRIDES"};
-    for (size_t k = 0; k < sizeof make_vars / sizeof make_vars[0]; k++)
-        unsetenv(make_vars[k]);
     if (spec->dir != NULL && chdir(spec->dir) != 0) {
         fprintf(stderr, "grade: cannot enter '%s': %s\n", spec->dir, strerror(errno));
         _exit(EXEC_FAILED);
@@ -208,10 +175,9 @@ static RunResult wait_child(pid_t pid, const RunSpec *spec, double start)
     return r;
 }
 
-/* Runs argv (a program found on PATH, with its arguments) or else function(arg) in a
- * child under spec's limits; waits for it and all it started. */
-static RunResult run_child(char *const argv[], int (*function)(void *), void *arg,
-                           const RunSpec *spec)
+/* Runs argv (a program found on PATH, with its arguments) in a child under spec's
+ * limits; waits for it and all it started. */
+RunResult run_program(char *const argv[], const RunSpec *spec)
 {
     if (stop_requested())
         return (RunResult){.end = RUN_INTERRUPTED};
@@ -223,8 +189,6 @@ static RunResult run_child(char *const argv[], int (*function)(void *), void *ar
         return (RunResult){.end = RUN_NOT_RUN, .status = errno};
     if (pid == 0) {
         child_setup(spec);
-        if (function != NULL)
-            _exit(function(arg));
         execvp(argv[0], argv);
         fprintf(stderr, "grade: cannot run '%s': %s\n", argv[0], strerror(errno));
         _exit(EXEC_FAILED);
@@ -234,65 +198,41 @@ static RunResult run_child(char *const argv[], int (*function)(void *), void *ar
     return wait_child(pid, spec, start);
 }
 
-/* Runs the program argv[0] (found on PATH) with its arguments under spec's limits. */
-RunResult run_program(char *const argv[], const RunSpec *spec)
+/* Tells whether a run ended with exit status 0. */
+bool run_succeeded(const RunResult *r)
 {
-    return run_child(argv, NULL, NULL, spec);
-}
-
-/* Runs function(arg) in a forked child under spec's limits, so that a crash or a hang
- * in it (on a student's file) cannot take the grader down; its return is the status. */
-RunResult run_function(int (*function)(void *), void *arg, const RunSpec *spec)
-{
-    return run_child(NULL, function, arg, spec);
+    return r->end == RUN_EXITED && r->status == 0;
 }
 
 /* Returns how a run ended: "exit status 2", "killed by signal 11 (Segmentation fault)". */
-char *run_describe(const RunResult *r, double limit)
+char *run_describe(const RunResult *r)
 {
     switch (r->end) {
     case RUN_EXITED: return grade_format("exit status %d", r->status);
     case RUN_KILLED:
         return grade_format("killed by signal %d (%s)", r->status, strsignal(r->status));
-    case RUN_TIMED_OUT: return grade_format("still running after %g s", limit);
+    case RUN_TIMED_OUT: return grade_format("still running after %.0f s", r->seconds);
     case RUN_NOT_RUN: return grade_format("not started: %s", strerror(r->status));
     default: return "interrupted";
     }
 }
 
-/* Returns the end of the file at path (a program's output) as a terminal shows it: a
- * carriage return starts its line again (a progress bar leaves its last state), escape
- * sequences go, other control characters become '?'; "[...]" first when the start was
- * cut, at a line's. NULL when it is empty or unreadable. */
+/* Returns the last lines of the file at path (a program's output), "[...]" first when
+ * the start was cut, at a line's; NULL when it is empty or unreadable. */
 char *run_log_tail(const char *path)
 {
     FILE *f = imgfile_fopen(path);
-    if (f == NULL)
-        return NULL;
-    long size = fseek(f, 0, SEEK_END) == 0 ? ftell(f) : -1;
+    long size = f != NULL && fseek(f, 0, SEEK_END) == 0 ? ftell(f) : -1;
     long from = size > TAIL_BYTES ? size - TAIL_BYTES : 0;
-    char raw[TAIL_BYTES], *text = grade_alloc(TAIL_BYTES + 8);
-    size_t n = size >= 0 && fseek(f, from, SEEK_SET) == 0 ? fread(raw, 1, sizeof raw, f) : 0;
-    fclose(f);
-    const char *newline = from > 0 ? memchr(raw, '\n', n) : NULL;
-    size_t i = newline != NULL ? (size_t)(newline - raw) + 1 : 0;
-    size_t len = from > 0 ? (size_t)sprintf(text, "[...]\n") : 0, line = len, start = len;
-    while (from > 0 && i < n && ((unsigned char)raw[i] & 0xC0) == 0x80)
-        i++; /* the rest of a UTF-8 character cut in two */
-    for (; i < n; i++) {
-        unsigned char c = (unsigned char)raw[i];
-        if (c == '\r' && (i + 1 == n || raw[i + 1] != '\n'))
-            len = line;
-        else if (c == 0x1B && i + 1 < n && raw[i + 1] == '[')
-            /* ESC [ parameters, then a final byte from @ to ~: colours, erasing. */
-            for (i += 2; i < n && (raw[i] < '@' || raw[i] > '~'); i++)
-                continue;
-        else if (c != '\r')
-            text[len++] = (c < 0x20 && c != '\t' && c != '\n') || c == 0x7F ? '?' : (char)c;
-        line = c == '\n' ? len : line;
-    }
-    while (len > start && isspace((unsigned char)text[len - 1]))
-        len--;
-    text[len] = '\0';
-    return len > start ? text : NULL;
+    char *text = grade_alloc(TAIL_BYTES + 8);
+    size_t n = size > 0 && fseek(f, from, SEEK_SET) == 0 ? fread(text, 1, TAIL_BYTES, f) : 0;
+    if (f != NULL)
+        fclose(f);
+    while (n > 0 && isspace((unsigned char)text[n - 1]))
+        n--;
+    text[n] = '\0';
+    const char *newline = strchr(text, '\n');
+    if (from > 0)
+        return grade_format("[...]%s", newline != NULL ? newline : text);
+    return n > 0 ? text : NULL;
 }

@@ -1,4 +1,4 @@
-/* grade_submission.c: the class's submissions: listed, then built and run or their images found. */
+/* grade_submission.c: the class's submissions: listed, built and run or their images found, judged through imgdiff. */
 #include "grade.h"
 
 #include <ctype.h>
@@ -6,13 +6,186 @@
 #include <libgen.h>
 #include <limits.h>
 #include <signal.h>
+#include <stdarg.h>
 #include <stdlib.h>
 #include <string.h>
 #include <strings.h>
-#include <sys/stat.h>
 #include <unistd.h>
 
+#include "imgfile.h"
 #include "stop.h"
+
+/* What imgdiff --machine said about an image against its reference. */
+typedef struct {
+    Figures figures;
+    bool has_verdict, pass, has_sizes;
+    int sizes[4];     /* the reference's width and height, then the image's */
+    char reason[400]; /* imgdiff's complaint, when it made one */
+} DiffAnswer;
+
+/* Sets the verdict of res and its reason, made as printf makes it. */
+static void DIAG_PRINTF(3, 4) set_verdict(SceneResult *res, Verdict v, const char *fmt, ...)
+{
+    va_list ap;
+    va_start(ap, fmt);
+    vsnprintf(res->message, sizeof res->message, fmt, ap);
+    va_end(ap);
+    res->verdict = v;
+}
+
+/* Reads what imgdiff --machine wrote (its log, stdout and stderr) into a; of imgdiff's
+ * first complaint, the reason keeps what follows the file's name. */
+static void read_answer(const char *log, DiffAnswer *a)
+{
+    *a = (DiffAnswer){0};
+    FILE *f = imgfile_fopen(log);
+    Figures *fig = &a->figures;
+    char line[1024], word[16];
+    while (f != NULL && fgets(line, sizeof line, f) != NULL) {
+        line[strcspn(line, "\n")] = '\0';
+        const char *named = strstr(line, "': "); /* imgdiff: cannot read 'FILE': REASON */
+        if (sscanf(line, "verdict %15s", word) == 1) {
+            a->has_verdict = true;
+            a->pass = strcmp(word, "PASS") == 0;
+        } else if (sscanf(line, "sizes %d %d %d %d", &a->sizes[0], &a->sizes[1], &a->sizes[2],
+                          &a->sizes[3]) == 4) {
+            a->has_sizes = true;
+        } else if (sscanf(line, "box %d %d %d %d", &fig->box[0], &fig->box[1], &fig->box[2],
+                          &fig->box[3]) == 4) {
+            fig->has_box = true;
+        } else if (strncmp(line, "imgdiff: ", 9) == 0 && a->reason[0] == '\0') {
+            snprintf(a->reason, sizeof a->reason, "%.*s", (int)sizeof a->reason - 1,
+                     named != NULL ? named + 3 : line + 9);
+        } else {
+            /* || stops at the first pattern that fits the line. */
+            (void)(sscanf(line, "threshold %lf", &fig->threshold) == 1 ||
+                   sscanf(line, "allow %lf", &fig->allow) == 1 ||
+                   sscanf(line, "max %lf %lf %lf", &fig->max[0], &fig->max[1], &fig->max[2]) == 3 ||
+                   sscanf(line, "mean %lf", &fig->mean) == 1 ||
+                   sscanf(line, "rmse %lf", &fig->rmse) == 1 ||
+                   sscanf(line, "psnr %lf", &fig->psnr) == 1 ||
+                   sscanf(line, "differing %ld %ld", &fig->differing, &fig->pixels) == 2 ||
+                   sscanf(line, "heat_scale %lf", &fig->heat_scale) == 1);
+        }
+    }
+    if (f != NULL)
+        fclose(f);
+}
+
+/* Compares image, submitted for render k, with the reference through imgdiff, which also
+ * writes the full-size heat map and the thumbnails the report shows; sets the verdict from
+ * its answer, with the reason in words. */
+static void compare_image(const Grading *g, const Submission *s, int k, const char *image)
+{
+    const Render *r = &g->renders[k];
+    SceneResult *res = &s->results[k];
+    char *log = grade_format("%s/%s.diff.txt", s->work, r->name);
+    res->image_show = grade_format("%s/%s.show.png", s->work, r->name);
+    res->heat_show = grade_format("%s/%s.heat-show.png", s->work, r->name);
+    char *argv[] = {g->imgdiff, "--machine", "--threshold", (char *)g->threshold, "--allow",
+                    (char *)g->allow, "--diff", grade_format("%s/%s.heat.png", s->work, r->name),
+                    "--thumb", res->image_show, "--diff-thumb", res->heat_show, "--",
+                    r->reference, (char *)image, NULL};
+    RunSpec spec = {.log = log, .time_limit = 600, .memory_limit = RUN_OWN_MEMORY(g->memory_limit)};
+    RunResult run = run_program(argv, &spec);
+    bool exited = run.end == RUN_EXITED;
+    DiffAnswer a;
+    read_answer(log, &a);
+    const Figures *f = &a.figures;
+    Verdict v = a.pass ? VERDICT_PASS : VERDICT_FAIL;
+    res->compared = exited && run.status <= 1 && a.has_verdict;
+    res->figures = *f;
+    res->identical = res->compared && f->max[0] == 0 && f->max[1] == 0 && f->max[2] == 0;
+    if (res->identical)
+        set_verdict(res, v, "identical to the reference");
+    else if (res->compared && f->differing == 0)
+        set_verdict(res, v, "no pixel differs by more than %.3g/255", f->threshold * 255);
+    else if (res->compared)
+        set_verdict(res, v, "%.3g%% of the pixels differ by more than %.3g/255, %s the %.3g%% allowed",
+                    100.0 * f->differing / f->pixels, f->threshold * 255,
+                    a.pass ? "within" : "more than", f->allow * 100);
+    else if (exited && a.has_sizes) {
+        set_verdict(res, VERDICT_WRONG_SIZE, "the image is %d x %d pixels, the reference %d x %d",
+                    a.sizes[2], a.sizes[3], a.sizes[0], a.sizes[1]);
+        res->relative_width = a.sizes[0] > 0 ? (double)a.sizes[2] / a.sizes[0] : 0;
+    } else if (exited && a.reason[0] != '\0')
+        set_verdict(res, VERDICT_UNREADABLE, "the file cannot be read as an image: %s", a.reason);
+    else if (run.end != RUN_INTERRUPTED)
+        set_verdict(res, VERDICT_UNREADABLE, "imgdiff could not compare the file (%s)",
+                    run_describe(&run));
+}
+
+/* Tells whether the file at path, found for render r, is an image handed in: a regular
+ * file, not a symbolic link nor the reference itself under another name; else sets the
+ * verdict, LINK or UNREADABLE. lstat only: a FIFO or a device is never opened. */
+static bool handed_in(const Render *r, SceneResult *res, const char *path)
+{
+    struct stat st, ref;
+    const char *name = strrchr(path, '/') + 1;
+    char target[256] = "";
+    if (lstat(path, &st) != 0) {
+        set_verdict(res, VERDICT_UNREADABLE, "%s cannot be read: %s", name, strerror(errno));
+    } else if (S_ISLNK(st.st_mode)) {
+        ssize_t n = readlink(path, target, sizeof target - 1);
+        target[n > 0 ? n : 0] = '\0';
+        set_verdict(res, VERDICT_LINK, "%s is a symbolic link to %s: not an image handed in", name,
+                    target);
+    } else if (!S_ISREG(st.st_mode)) {
+        set_verdict(res, VERDICT_UNREADABLE, "%s is not a regular file (%s)", name,
+                    imgfile_kind_text(st.st_mode));
+    } else if (stat(r->reference, &ref) == 0 && ref.st_dev == st.st_dev &&
+               ref.st_ino == st.st_ino) {
+        set_verdict(res, VERDICT_LINK, "%s is a hard link to the reference image", name);
+    } else {
+        return true;
+    }
+    return false;
+}
+
+/* Grades render k of a submission of images: finds the image, by the reference's name or
+ * with another of .png, .pfm and .exr, and compares it. */
+static void grade_image(const Grading *g, Submission *s, int k)
+{
+    const Render *r = &g->renders[k];
+    static const char *const endings[] = {".png", ".pfm", ".exr"};
+    char *found = grade_format("%s/%s", s->path, r->image);
+    struct stat st;
+    for (size_t e = 0; e < sizeof endings / sizeof *endings && lstat(found, &st) != 0; e++)
+        found = grade_format("%s/%s%s", s->path, r->name, endings[e]);
+    if (lstat(found, &st) != 0)
+        set_verdict(&s->results[k], VERDICT_MISSING, "no %s.png, .pfm or .exr in the submission",
+                    r->name);
+    else if (handed_in(r, &s->results[k], found))
+        compare_image(g, s, k, found);
+}
+
+/* Copies submission s into its work folder (cp -P: a link stays a link, never followed out
+ * of it) and runs make there under the limits; returns the program it built, or NULL with
+ * the reason in s->build_message. */
+static char *build(const Grading *g, Submission *s)
+{
+    char *copy = grade_format("%s/build", s->work), *log = grade_format("%s/build.log", s->work);
+    char *program = grade_format("%s/raytra", copy);
+    char *cp[] = {"cp", "-R", "-P", "--", grade_format("%s/.", s->path), copy, NULL};
+    char *make[] = {"make", NULL};
+    RunSpec spec = {.log = log, .time_limit = 600};
+    RunResult r = run_program(cp, &spec);
+    if (!run_succeeded(&r)) {
+        s->build_message = grade_format("the submission could not be copied to build it (cp: %s)",
+                                        run_describe(&r));
+    } else {
+        spec = (RunSpec){copy, log, g->build_time_limit, g->memory_limit};
+        r = run_program(make, &spec);
+        if (r.end == RUN_TIMED_OUT)
+            s->build_message = grade_format("make did not finish within %g s", g->build_time_limit);
+        else if (!run_succeeded(&r))
+            s->build_message = grade_format("make failed (%s)", run_describe(&r));
+        else if (grade_kind(program) != S_IFREG || access(program, X_OK) != 0)
+            s->build_message = "make succeeded but made no executable raytra beside the Makefile";
+    }
+    s->build_log_tail = run_log_tail(log);
+    return s->build_message != NULL || r.end == RUN_INTERRUPTED ? NULL : program;
+}
 
 /* Tells whether a program's last output says that it ran out of memory, in the words of
  * C's and C++'s libraries and of the common messages. */
@@ -29,53 +202,6 @@ static bool says_out_of_memory(const char *output)
     return false;
 }
 
-/* Grades render k of a submission of images: finds the image, by the reference's name or
- * with another of .png, .pfm and .exr, and compares it. */
-static void grade_image(const Grading *g, Submission *s, int k)
-{
-    const Render *r = &g->renders[k];
-    static const char *const endings[] = {".png", ".pfm", ".exr"};
-    char *found = grade_format("%s/%s", s->path, r->image);
-    struct stat st;
-    for (size_t e = 0; e < sizeof endings / sizeof *endings && lstat(found, &st) != 0; e++)
-        found = grade_format("%s/%s%s", s->path, r->name, endings[e]);
-    if (lstat(found, &st) != 0)
-        grade_verdict(&s->results[k], VERDICT_MISSING, "no %s.png, .pfm or .exr in the submission",
-                      r->name);
-    else if (compare_handed_in(r, &s->results[k], found))
-        compare_image(g, s, k, found);
-}
-
-/* Copies submission s into its work folder (cp -P: a link stays a link, never followed out
- * of it) and runs make there under the limits; returns the program it built, or NULL with
- * the reason in s->build_message. */
-static char *build(const Grading *g, Submission *s)
-{
-    char *copy = grade_format("%s/build", s->work), *log = grade_format("%s/build.log", s->work);
-    char *program = grade_format("%s/raytra", copy), *message = s->build_message;
-    char *cp[] = {"cp", "-R", "-P", "--", grade_format("%s/.", s->path), copy, NULL};
-    char *make[] = {"make", NULL};
-    size_t size = sizeof s->build_message;
-    RunSpec spec = {.log = log, .time_limit = 600};
-    RunResult r = run_program(cp, &spec);
-    if (r.end != RUN_EXITED || r.status != 0) {
-        snprintf(message, size, "the submission could not be copied to build it (cp: %s)",
-                 run_describe(&r, spec.time_limit));
-    } else {
-        spec = (RunSpec){copy, log, g->build_time_limit, g->memory_limit};
-        r = run_program(make, &spec);
-        if (r.end == RUN_TIMED_OUT)
-            snprintf(message, size, "make did not finish within %g s", g->build_time_limit);
-        else if (r.end != RUN_EXITED || r.status != 0)
-            snprintf(message, size, "make failed (%s)", run_describe(&r, spec.time_limit));
-        else if (grade_kind(program) != S_IFREG || access(program, X_OK) != 0)
-            snprintf(message, size, "make succeeded but made no executable raytra beside the "
-                                    "Makefile");
-    }
-    s->build_log_tail = run_log_tail(log);
-    return message[0] != '\0' || r.end == RUN_INTERRUPTED ? NULL : program;
-}
-
 /* Grades render k of a submission that is a program: runs it on the scene under the
  * limits, in a scratch folder, and judges how it ended and what it wrote. */
 static void run_scene(const Grading *g, Submission *s, int k, const char *program)
@@ -84,7 +210,6 @@ static void run_scene(const Grading *g, Submission *s, int k, const char *progra
     SceneResult *res = &s->results[k];
     char *image = grade_format("%s/images/%s", s->work, r->image);
     char *log = grade_format("%s/%s.log", s->work, r->name);
-    char *scratch = grade_format("%s/run", s->work);
     int n = 0;
     while (r->args[n] != NULL)
         n++;
@@ -93,30 +218,30 @@ static void run_scene(const Grading *g, Submission *s, int k, const char *progra
     argv[1] = r->scene_path;
     argv[2] = image;
     memcpy(argv + 3, r->args, ((size_t)n + 1) * sizeof *argv);
-    RunSpec spec = {scratch, log, g->time_limit, g->memory_limit};
+    RunSpec spec = {grade_format("%s/run", s->work), log, g->time_limit, g->memory_limit};
     RunResult run = run_program(argv, &spec);
     res->seconds = run.seconds;
     res->log_tail = run_log_tail(log);
-    char *how = run_describe(&run, g->time_limit);
+    char *how = run_describe(&run);
     struct stat st;
     bool wrote = lstat(image, &st) == 0, exited = run.end == RUN_EXITED;
     bool failed = run.end == RUN_KILLED || (exited && run.status != 0);
     /* The kernel's out-of-memory killer sends SIGKILL; the grader's own kills are timeouts. */
     if (failed &&
         (says_out_of_memory(res->log_tail) || (run.end == RUN_KILLED && run.status == SIGKILL)))
-        grade_verdict(res, VERDICT_OUT_OF_MEMORY, "ran out of memory (%s; memory limit %s)", how,
-                      grade_size_text(g->memory_limit));
+        set_verdict(res, VERDICT_OUT_OF_MEMORY, "ran out of memory (%s; memory limit %s)", how,
+                    grade_size_text(g->memory_limit));
     else if (run.end == RUN_TIMED_OUT)
-        grade_verdict(res, VERDICT_TIMEOUT, "did not finish within %g s", g->time_limit);
+        set_verdict(res, VERDICT_TIMEOUT, "did not finish within %g s", g->time_limit);
     else if (run.end == RUN_KILLED)
-        grade_verdict(res, VERDICT_CRASHED, "%s", how);
+        set_verdict(res, VERDICT_CRASHED, "%s", how);
     else if (run.end == RUN_NOT_RUN)
-        grade_verdict(res, VERDICT_ERROR, "the grader could not start the program (%s)", how);
+        set_verdict(res, VERDICT_ERROR, "the grader could not start the program (%s)", how);
     else if (exited && !wrote && failed)
-        grade_verdict(res, VERDICT_ERROR, "ended with %s and wrote no image", how);
+        set_verdict(res, VERDICT_ERROR, "ended with %s and wrote no image", how);
     else if (exited && !wrote)
-        grade_verdict(res, VERDICT_MISSING, "ended normally but wrote no %s", r->image);
-    else if (exited && compare_handed_in(r, res, image))
+        set_verdict(res, VERDICT_MISSING, "ended normally but wrote no %s", r->image);
+    else if (exited && handed_in(r, res, image))
         compare_image(g, s, k, image);
     /* An image written before a failure exit is graded; the failure is told. */
     if (exited && wrote && failed && res->verdict != VERDICT_OUT_OF_MEMORY) {
@@ -130,8 +255,6 @@ static void run_scene(const Grading *g, Submission *s, int k, const char *progra
 static bool grade_one(const Grading *g, Submission *s)
 {
     s->results = grade_alloc((size_t)g->render_count * sizeof *s->results);
-    for (int k = 0; k < g->render_count; k++)
-        s->results[k].seconds = -1;
     /* A program is built and run, in folders of its own; a folder of images is read. */
     bool runs = s->program && s->link == NULL;
     bool ok = grade_make_folder(s->work, true) &&
@@ -141,14 +264,14 @@ static bool grade_one(const Grading *g, Submission *s)
     for (int k = 0; ok && k < g->render_count && !stop_requested(); k++) {
         /* A folder that is a link (to a classmate's) is not a submission of its own. */
         if (s->link != NULL)
-            grade_verdict(&s->results[k], VERDICT_LINK,
-                          "the submission's folder is a symbolic link to %s", s->link);
+            set_verdict(&s->results[k], VERDICT_LINK,
+                        "the submission's folder is a symbolic link to %s", s->link);
         else if (!s->program)
             grade_image(g, s, k);
         else if (program != NULL)
             run_scene(g, s, k, program);
         else
-            grade_verdict(&s->results[k], VERDICT_BUILD_FAILED, "%s", s->build_message);
+            set_verdict(&s->results[k], VERDICT_BUILD_FAILED, "%s", s->build_message);
     }
     for (int k = 0; k < g->render_count; k++)
         s->tally[verdict_info[s->results[k].verdict].tally]++;
@@ -158,7 +281,7 @@ static bool grade_one(const Grading *g, Submission *s)
 /* Prints how the scenes of s went: "5 scenes: 4 pass, 1 timeout". */
 static void print_tally(const Grading *g, const Submission *s)
 {
-    if (s->build_message[0] != '\0') {
+    if (s->build_message != NULL) {
         fprintf(stderr, "BUILD FAILED: %s\n", s->build_message);
         return;
     }
@@ -232,7 +355,7 @@ bool submission_list(Grading *g)
         return true;
     }
     int count = 0;
-    char **names = part_list_folders(g->submissions, &count);
+    char **names = grade_list_folders(g->submissions, &count);
     if (names == NULL) {
         fprintf(stderr, "grade: cannot read the folder %s: %s\n", g->submissions, strerror(errno));
         return false;

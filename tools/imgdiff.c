@@ -17,6 +17,7 @@ enum { EXIT_MATCH = 0, EXIT_DIFFER = 1, EXIT_TROUBLE = 2 };
 /* What the command line asks for. */
 typedef struct {
     const char *paths[2], *diff_path; /* the images; --diff's heat map, or NULL */
+    const char *thumb_path, *diff_thumb; /* --thumb's and --diff-thumb's files, or NULL */
     double threshold; /* a pixel differs when its largest channel difference exceeds this */
     double allow;     /* the fraction of the pixels that may differ */
     double scale;     /* the difference shown white in the heat map; 0: the largest found */
@@ -43,9 +44,19 @@ static const Color ramp[] = {
 };
 #define RAMP_STOPS ((int)(sizeof ramp / sizeof ramp[0]))
 
+/* The longest side of a thumbnail: three fit side by side on a laptop's screen. */
+#define THUMB_SIDE 320
+
+/* The largest image of another size shrunk for --thumb: a larger one is surely a mistake,
+ * or a decompression bomb. */
+#define THUMB_MAX_PIXELS (4096L * 4096)
+
 /* imgdiff's options, from which the parsing and --help are made; the enum names each
  * one's place in the table. */
-enum { OPT_THRESHOLD, OPT_ALLOW, OPT_DIFF, OPT_SCALE, OPT_QUIET, OPT_MACHINE, OPT_HELP };
+enum {
+    OPT_THRESHOLD, OPT_ALLOW, OPT_DIFF, OPT_THUMB, OPT_DIFF_THUMB, OPT_SCALE, OPT_QUIET,
+    OPT_MACHINE, OPT_HELP
+};
 static const ToolOption options[] = {
     {"threshold", 0, "T", "a pixel differs when one of its channels differs by more\n"
      "than T, a number or a fraction such as 8/255; 2/255\nis more than 2 steps of 8 bits",
@@ -55,6 +66,11 @@ static const ToolOption options[] = {
     {"diff", 0, "FILE", "write a heat map of the differences to FILE (.png or\n.pfm): black "
      "where a pixel is exactly equal; any\ndifference, even one within the threshold, is at "
      "least\ndark blue, then the colours run through purple, red\nand yellow to white", NULL},
+    {"thumb", 0, "FILE", "write B shrunk by a whole factor to at most 320\npixels a side to "
+     "FILE, each pixel a block's mean;\nalso when the sizes differ, up to 4096 x 4096 pixels",
+     NULL},
+    {"diff-thumb", 0, "FILE", "write the heat map so shrunk to FILE, each pixel\nits block's "
+     "brightest, so that one differing pixel\nstill shows", NULL},
     {"scale", 0, "S", "the difference that is white in the heat map, larger\nones too "
      "(default: the largest difference found)", NULL},
     {"quiet", 'q', NULL, "print only the verdict", NULL},
@@ -100,8 +116,8 @@ static bool set_option(void *state, int k, const char *value)
         *(k == OPT_QUIET ? &o->quiet : k == OPT_HELP ? &o->help : &o->machine) = true;
         return true;
     }
-    if (k == OPT_DIFF) {
-        o->diff_path = value;
+    if (k == OPT_DIFF || k == OPT_THUMB || k == OPT_DIFF_THUMB) {
+        *(k == OPT_DIFF ? &o->diff_path : k == OPT_THUMB ? &o->thumb_path : &o->diff_thumb) = value;
         return true;
     }
     char *end;
@@ -149,18 +165,18 @@ static bool parse_args(int argc, char **argv, DiffOptions *o)
     return true;
 }
 
-/* Tells, before any work, whether the heat map can be written; reports why not. */
-static bool check_diff_path(const DiffOptions *o)
+/* Tells, before any work, whether an image asked for (the heat map, a thumbnail) can be
+ * written to path; reports why not. */
+static bool check_output(const DiffOptions *o, const char *path)
 {
-    const char *path = o->diff_path;
     Error err;
     /* The same file, however it is spelt (./a.png, d/../a.png, a link, a hard link). */
     struct stat map, input;
     for (int k = 0; k < 2 && stat(path, &map) == 0; k++)
         if (stat(o->paths[k], &input) == 0 && input.st_dev == map.st_dev &&
             input.st_ino == map.st_ino) {
-            fprintf(stderr, "imgdiff: --diff %s would overwrite %s, an image being compared\n",
-                    path, o->paths[k]);
+            fprintf(stderr, "imgdiff: %s would overwrite %s, an image being compared\n", path,
+                    o->paths[k]);
             return false;
         }
     if (image_format_for_path(path) == IMAGE_FORMAT_UNKNOWN)
@@ -223,9 +239,46 @@ static Color heat_color(double e, double top)
     return color_add(color_scale(ramp[k], 1 - f), color_scale(ramp[k + 1], f));
 }
 
-/* Writes the heat map of a against b to path, linear so that the ramp's colours are
- * stored as chosen; false (reported) when it cannot. */
-static bool write_heat_map(const Image *a, const Image *b, double top, const char *path)
+/* Writes img to path shrunk by a whole factor to at most THUMB_SIDE pixels a side, each
+ * pixel the mean of its block, or with peaks its brightest pixel, so that a heat map's
+ * single differing pixel stays; false (reported) when it cannot. */
+static bool write_thumb(const Image *img, bool peaks, PngEncoding encoding, const char *path)
+{
+    int side = img->width > img->height ? img->width : img->height;
+    int f = (side + THUMB_SIDE - 1) / THUMB_SIDE;
+    Image thumb;
+    Error err;
+    error_set(&err, "not enough memory");
+    bool ok = image_init(&thumb, (img->width + f - 1) / f, (img->height + f - 1) / f);
+    for (int y = 0; ok && y < thumb.height; y++)
+        for (int x = 0; x < thumb.width; x++) {
+            Color sum = color(0, 0, 0), peak = image_get(img, x * f, y * f);
+            int n = 0;
+            for (int v = y * f; v < (y + 1) * f && v < img->height; v++)
+                for (int u = x * f; u < (x + 1) * f && u < img->width; u++, n++) {
+                    Color c = image_get(img, u, v);
+                    sum = color_add(sum, c);
+                    peak = c.r + c.g + c.b > peak.r + peak.g + peak.b ? c : peak;
+                }
+            image_set(&thumb, x, y, peaks ? peak : color_scale(sum, 1.0 / n));
+        }
+    ok = ok && image_write(&thumb, path, encoding, &err);
+    if (!ok)
+        fprintf(stderr, "imgdiff: cannot write '%s': %s\n", path, err.text);
+    image_free(&thumb);
+    return ok;
+}
+
+/* Returns the encoding that writes an image read from a file of kind `kind` back to a PNG as
+ * it looks: a PNG's values as they were read, linear ones as raytra encodes its PNGs. */
+static PngEncoding encoding_of(ImgFileKind kind)
+{
+    return kind == IMGFILE_PNG ? PNG_ENCODING_LINEAR : PNG_ENCODING_SRGB;
+}
+
+/* Writes the heat map of a against b, for --diff and --diff-thumb, linear so that the
+ * ramp's colours are stored as chosen; false (reported) when it cannot. */
+static bool write_heat_map(const Image *a, const Image *b, double top, const DiffOptions *o)
 {
     Image map;
     double e[3];
@@ -237,9 +290,10 @@ static bool write_heat_map(const Image *a, const Image *b, double top, const cha
         for (int x = 0; x < a->width; x++)
             image_set(&map, x, y, heat_color(pixel_diff(a, b, (long)y * a->width + x, e), top));
     Error err;
-    bool ok = image_write(&map, path, PNG_ENCODING_LINEAR, &err);
+    bool ok = o->diff_path == NULL || image_write(&map, o->diff_path, PNG_ENCODING_LINEAR, &err);
     if (!ok)
-        fprintf(stderr, "imgdiff: cannot write '%s': %s\n", path, err.text);
+        fprintf(stderr, "imgdiff: cannot write '%s': %s\n", o->diff_path, err.text);
+    ok = ok && (o->diff_thumb == NULL || write_thumb(&map, true, PNG_ENCODING_LINEAR, o->diff_thumb));
     image_free(&map);
     return ok;
 }
@@ -319,6 +373,13 @@ static bool check_headers(const DiffOptions *o, ImgFileKind kind[2])
         printf("sizes %d %d %d %d\n", w[0], h[0], w[1], h[1]);
     fprintf(stderr, "imgdiff: sizes differ: %s is %d x %d, %s is %d x %d\n", o->paths[0], w[0],
             h[0], o->paths[1], w[1], h[1]);
+    /* B is still shown, unless its size makes it a likely bomb. */
+    Image b;
+    if (o->thumb_path != NULL && (long)w[1] * h[1] <= THUMB_MAX_PIXELS &&
+        image_read(&b, o->paths[1], &err)) {
+        write_thumb(&b, false, encoding_of(kind[1]), o->thumb_path);
+        image_free(&b);
+    }
     return false;
 }
 
@@ -331,6 +392,8 @@ static int compare(Image img[2], const ImgFileKind kind[2], const DiffOptions *o
         fprintf(stderr, "imgdiff: '%s' changed while it was read\n", o->paths[1]);
         return EXIT_TROUBLE;
     }
+    if (o->thumb_path != NULL && !write_thumb(b, false, encoding_of(kind[1]), o->thumb_path))
+        return EXIT_TROUBLE;
     /* A PNG against linear values (a PFM's, an EXR's): each linear value is encoded as
      * raytra encodes its PNGs, clamped to [0, 1], given the sRGB curve and rounded to 8
      * bits. A non-finite value stays as it is, to be reported. */
@@ -350,13 +413,14 @@ static int compare(Image img[2], const ImgFileKind kind[2], const DiffOptions *o
         print_figures(&d, a->width, a->height, 0, o);
     /* Equal images get an all-black map; the scale then only needs to be positive. */
     double top = o->scale > 0 ? o->scale : d.largest_finite > 0 ? d.largest_finite : 1.0 / 255;
-    if (o->diff_path != NULL && !write_heat_map(a, b, top, o->diff_path))
+    bool heat = o->diff_path != NULL || o->diff_thumb != NULL;
+    if (heat && !write_heat_map(a, b, top, o))
         return EXIT_TROUBLE;
     if (o->diff_path != NULL && !o->quiet && !o->machine)
         printf("heat map: black = 0, white = %.4g (%.1f/255), written to %s\n", top, top * 255,
                o->diff_path);
     if (o->machine)
-        print_figures(&d, a->width, a->height, o->diff_path != NULL ? top : 0, o);
+        print_figures(&d, a->width, a->height, heat ? top : 0, o);
     return print_verdict(&d, (long)a->width * a->height, o);
 }
 
@@ -371,7 +435,11 @@ int main(int argc, char **argv)
         return EXIT_MATCH;
     }
     ImgFileKind kind[2];
-    if ((o.diff_path != NULL && !check_diff_path(&o)) || !check_headers(&o, kind))
+    const char *outputs[] = {o.diff_path, o.thumb_path, o.diff_thumb};
+    for (int k = 0; k < 3; k++)
+        if (outputs[k] != NULL && !check_output(&o, outputs[k]))
+            return EXIT_TROUBLE;
+    if (!check_headers(&o, kind))
         return EXIT_TROUBLE;
     Image img[2] = {{0}};
     Error err;

@@ -14,6 +14,15 @@
 /* The largest header read: a PNG's IHDR is at byte 16, an EXR's dataWindow within it. */
 #define HEADER_BYTES 4096
 
+/* Returns what a file that is not a regular one is, in words: "a FIFO". */
+const char *imgfile_kind_text(mode_t mode)
+{
+    return S_ISLNK(mode)    ? "a symbolic link"
+           : S_ISFIFO(mode) ? "a FIFO"
+           : S_ISDIR(mode)  ? "a folder"
+                            : "a special file";
+}
+
 /* Opens path for reading only when it is a regular file, never blocking on a FIFO or a
  * device and never following a symbolic link: a student's file may be any of these.
  * Returns the descriptor, or -1 (err) when it is not a readable regular file. */
@@ -25,11 +34,7 @@ static int imgfile_open(const char *path, Error *err)
         return -1;
     }
     if (S_ISLNK(st.st_mode) || !S_ISREG(st.st_mode)) {
-        error_set(err, "not a regular file (%s)",
-                  S_ISLNK(st.st_mode)    ? "a symbolic link"
-                  : S_ISFIFO(st.st_mode) ? "a FIFO"
-                  : S_ISDIR(st.st_mode)  ? "a folder"
-                                         : "a special file");
+        error_set(err, "not a regular file (%s)", imgfile_kind_text(st.st_mode));
         return -1;
     }
     int fd = open(path, O_RDONLY | O_NONBLOCK | O_NOFOLLOW | O_CLOEXEC);
