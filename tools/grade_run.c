@@ -57,6 +57,25 @@ static void wait_for_signal(double seconds)
     sigtimedwait(&child, NULL, &t);
 }
 
+/* Closes every file descriptor above stderr, so that a child holds none of the grader's
+ * files, nor the jobserver pipes of a make that runs the grader. */
+static void close_other_files(void)
+{
+    DIR *d = opendir("/proc/self/fd");
+    if (d == NULL) {
+        for (int fd = 3; fd < 1024; fd++)
+            close(fd);
+        return;
+    }
+    struct dirent *e;
+    while ((e = readdir(d)) != NULL) {
+        int fd = atoi(e->d_name);
+        if (fd > 2 && fd != dirfd(d))
+            close(fd);
+    }
+    closedir(d);
+}
+
 /* Sets a resource limit, soft and hard, so that the child cannot raise it again; a lower
  * hard limit already set stays, as only root may raise one. */
 static void set_limit(int resource, long long value)
@@ -76,6 +95,10 @@ static void set_limit(int resource, long long value)
 static void child_setup(const RunSpec *spec)
 {
     setpgid(0, 0);
+#ifdef __linux__
+    /* Should the grader itself be killed, the child dies with it rather than run on. */
+    prctl(PR_SET_PDEATHSIG, SIGKILL, 0, 0, 0);
+#endif
     signal(SIGPIPE, SIG_DFL);
     sigset_t none;
     sigemptyset(&none);
@@ -87,10 +110,17 @@ static void child_setup(const RunSpec *spec)
     int out = spec->log != NULL ? open(spec->log, flags, 0644) : open("/dev/null", O_WRONLY);
     if (in < 0 || out < 0 || dup2(in, 0) < 0 || dup2(out, 1) < 0 || dup2(out, 2) < 0)
         _exit(EXEC_FAILED);
+    close_other_files();
     set_limit(RLIMIT_CORE, 0);
     set_limit(RLIMIT_FSIZE, FILE_LIMIT);
     if (spec->memory_limit > 0)
         set_limit(RLIMIT_AS, spec->memory_limit);
+    /* make hands its flags and jobserver to sub-makes through these: a student's make is
+     * not a sub-make of the one that may be running the grader. */
+    static const char *const make_vars[] = {"MAKEFLAGS", "MFLAGS",    "GNUMAKEFLAGS",
+                                            "MAKELEVEL", "MAKEFILES", "MAKEOVERRIDES"};
+    for (size_t k = 0; k < sizeof make_vars / sizeof make_vars[0]; k++)
+        unsetenv(make_vars[k]);
     if (spec->dir != NULL && chdir(spec->dir) != 0) {
         fprintf(stderr, "grade: cannot enter '%s': %s\n", spec->dir, strerror(errno));
         _exit(EXEC_FAILED);
