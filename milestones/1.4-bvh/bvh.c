@@ -39,6 +39,8 @@ static float float_above(double x)
     return -float_below(-x);
 }
 
+_Static_assert(sizeof(BvhNode) == 64, "a node is one cache line");
+
 /* Returns the box of child k of node in double: exactly its float box. */
 Box bvh_child_box(const BvhNode *node, int k)
 {
@@ -309,7 +311,8 @@ typedef struct {
 typedef struct {
     int near[3], far[3]; /* where on axis a the near and far faces are in bounds[0]:
                             4 a for lo, 4 a + 2 for hi */
-    Float4 origin[3];    /* the origin on axis a, rounded to float, in each lane */
+    Float4 origin[3];    /* the origin on axis a rounded to float; when d = 0 on that
+                            axis, down in the near lanes and up in the far ones */
     Float4 inv_dir[3];   /* 1/d on axis a, negated in the far lanes */
     Float4 scale, slack; /* each lane is moved to lane * scale - slack: see float_ray */
     float tmin;          /* the ray's tmin, rounded down */
@@ -334,7 +337,7 @@ static inline Float4 float4(float a, float b, float c, float d)
 /* Makes ray r ready for the float test, once a ray: 1/d, the faces' order, and how far
  * a t computed in float may be from the exact one. Three roundings (of 1/d, of
  * face - o and of the product) move t by at most 3 parts in 2^24 of itself; rounding
- * the origin to float moves it by (o - o_float) / d, the slack. The test moves each
+ * the origin to float moves t by (o - o_float) / d, the slack. The test moves each
  * lane down by FLOAT_TEST_EPSILON of itself and by the slack: entries (never below
  * tmin >= 0) scale by 1 - epsilon, -exits by 1 + epsilon, which covers an exit just
  * below 0 as well once the slack is grown by 2^-16. FLT_MIN covers t so small that
