@@ -278,7 +278,7 @@ static void bench_mesh(BenchMesh *m, View v, int res)
     double bytes = (double)(scene->triangle_count * sizeof(Triangle) + bvh_bytes(&bvh)) /
                    scene->triangle_count;
 
-    printf("\n== %s: %d triangles; BVH: %d nodes, %d leaves, depth %d\n", m->name,
+    printf("\n== %s: %d triangles; BVH: %d interior nodes, %d leaves, depth %d\n", m->name,
            scene->triangle_count, bvh.node_count, bvh.leaf_count, bvh.depth);
     if (m->load_mb_per_s > 0)
         printf("   OBJ load          %8.1f MB/s\n", m->load_mb_per_s);

@@ -39,17 +39,26 @@ static float float_above(double x)
     return -float_below(-x);
 }
 
-/* Returns the box of node in double: exactly its float box. */
-static inline Box node_box(const BvhNode *node)
+_Static_assert(sizeof(BvhNode) == 64, "a node is one cache line");
+
+/* Returns the box of child k of node in double: exactly its float box. */
+Box bvh_child_box(const BvhNode *node, int k)
 {
-    return (Box){vec3(node->lo[0], node->lo[1], node->lo[2]),
-                 vec3(node->hi[0], node->hi[1], node->hi[2])};
+    return (Box){vec3(node->bounds[0][k], node->bounds[1][k], node->bounds[2][k]),
+                 vec3(node->bounds[0][2 + k], node->bounds[1][2 + k], node->bounds[2][2 + k])};
 }
 
-/* Returns the box of node, as the traversal tests it. */
-Box bvh_node_box(const BvhNode *node)
+/* Returns where child k of node is. */
+BvhRef bvh_child(const BvhNode *node, int k)
 {
-    return node_box(node);
+    return (BvhRef){node->index[k], node->count[k]};
+}
+
+/* Returns box b rounded outwards to floats: the float box that holds it. */
+static Box box_to_floats(Box b)
+{
+    return (Box){vec3(float_below(b.lo.x), float_below(b.lo.y), float_below(b.lo.z)),
+                 vec3(float_above(b.hi.x), float_above(b.hi.y), float_above(b.hi.z))};
 }
 
 /* What the build works on: every primitive's box and centroid, by primitive number. */
@@ -171,19 +180,15 @@ static int longest_axis(Box b)
 
 /* excerpt: bvh-build-node */
 /* Builds the subtree over prims[begin, end) at the given depth, depth first into
- * b->nodes, and returns the index of its root. */
-static uint32_t build_node(Builder *b, int begin, int end, int depth)
+ * b->nodes; returns where it is, and its box in *box_out. */
+static BvhRef build_node(Builder *b, int begin, int end, int depth, Box *box_out)
 {
-    uint32_t self = (uint32_t)b->node_count++;
     Box box = box_empty(), centroids = box_empty();
     for (int k = begin; k < end; k++) {
         box = box_union(box, b->boxes[b->prims[k]]);
         centroids = box_add_point(centroids, b->centroids[b->prims[k]]);
     }
-    /* Rounding the box outwards to floats keeps every primitive's box inside it. */
-    BvhNode *node = &b->nodes[self];
-    *node = (BvhNode){.lo = {float_below(box.lo.x), float_below(box.lo.y), float_below(box.lo.z)},
-                      .hi = {float_above(box.hi.x), float_above(box.hi.y), float_above(box.hi.z)}};
+    *box_out = box;
     if (depth > b->depth)
         b->depth = depth;
 
@@ -197,18 +202,36 @@ static uint32_t build_node(Builder *b, int begin, int end, int depth)
         axis = longest_axis(centroids);
     }
     if (mid < 0) {
-        node->index = (uint32_t)begin;
-        node->count = (uint16_t)n;
         b->leaf_count++;
-        return self;
+        return (BvhRef){(uint32_t)begin, (uint32_t)n};
     }
-    node->axis = (uint8_t)axis;
-    build_node(b, begin, mid, depth + 1); /* the first child is node self + 1 */
-    uint32_t second = build_node(b, mid, end, depth + 1);
-    node->index = second;
-    return self;
+    uint32_t self = (uint32_t)b->node_count++;
+    BvhRef child[2];
+    Box child_box[2];
+    child[0] = build_node(b, begin, mid, depth + 1, &child_box[0]); /* node self + 1 */
+    child[1] = build_node(b, mid, end, depth + 1, &child_box[1]);
+    /* Rounding the children's boxes outwards to floats keeps every primitive's box inside. */
+    BvhNode *node = &b->nodes[self];
+    *node = (BvhNode){.axis = (uint8_t)axis};
+    for (int k = 0; k < 2; k++) {
+        Box f = box_to_floats(child_box[k]);
+        for (int a = 0; a < 3; a++) {
+            node->bounds[a][k] = (float)axis_of(f.lo, a);
+            node->bounds[a][2 + k] = (float)axis_of(f.hi, a);
+        }
+        node->index[k] = child[k].index;
+        node->count[k] = (uint16_t)child[k].count;
+    }
+    return (BvhRef){self, 0};
 }
 /* end excerpt: bvh-build-node */
+
+/* Tells whether every coordinate of box b lies within +-2^60: then no t the float test
+ * computes can overflow (see float_ray). */
+static bool box_float_safe(Box b)
+{
+    return vec3_max_abs(b.lo) <= 0x1p60 && vec3_max_abs(b.hi) <= 0x1p60;
+}
 
 /* Builds the hierarchy of scene's spheres and triangles; false when out of memory. */
 bool bvh_build(Bvh *bvh, const Scene *scene)
@@ -217,10 +240,11 @@ bool bvh_build(Bvh *bvh, const Scene *scene)
     int n = scene->sphere_count + scene->triangle_count;
     if (n == 0)
         return true;
+    /* A binary tree of n leaves or fewer has at most n - 1 interior nodes. */
     Builder b = {.boxes = malloc((size_t)n * sizeof *b.boxes),
                  .centroids = malloc((size_t)n * sizeof *b.centroids),
                  .prims = malloc((size_t)n * sizeof *b.prims),
-                 .nodes = malloc((size_t)(2 * n - 1) * sizeof *b.nodes)};
+                 .nodes = malloc((size_t)(n > 1 ? n - 1 : 1) * sizeof *b.nodes)};
     bool ok = b.boxes != NULL && b.centroids != NULL && b.prims != NULL && b.nodes != NULL;
     if (ok) {
         for (int k = 0; k < n; k++) {
@@ -228,9 +252,11 @@ bool bvh_build(Bvh *bvh, const Scene *scene)
             b.boxes[k] = bvh_prim_box(scene, (uint32_t)k);
             b.centroids[k] = box_center(b.boxes[k]);
         }
-        build_node(&b, 0, n, 0);
-        /* A binary tree whose leaves hold at least one primitive has at most 2n - 1 nodes. */
-        BvhNode *fit = realloc(b.nodes, (size_t)b.node_count * sizeof *b.nodes);
+        Box box;
+        bvh->root = build_node(&b, 0, n, 0, &box);
+        bvh->box = box_to_floats(box);
+        bvh->float_safe = box_float_safe(bvh->box);
+        BvhNode *fit = realloc(b.nodes, (size_t)(b.node_count > 0 ? b.node_count : 1) * sizeof *b.nodes);
         bvh->nodes = fit != NULL ? fit : b.nodes;
         bvh->node_count = b.node_count;
         bvh->prims = b.prims;
@@ -261,15 +287,171 @@ size_t bvh_bytes(const Bvh *bvh)
            (size_t)bvh->prim_count * sizeof *bvh->prims;
 }
 
+/* excerpt: bvh-float-ray */
+/* Four floats: the traversal tests a node's two boxes, near and far planes, at once.
+ * With SSE2 (every x86-64 processor) they are one register; elsewhere, or when built
+ * with -DBVH_PORTABLE (the tests build it so too), an array and plain C. */
+#if defined(__SSE2__) && !defined(BVH_PORTABLE)
+#define BVH_SSE2
+#endif
+#ifdef BVH_SSE2
+#include <emmintrin.h>
+typedef __m128 Float4;
+#else
+typedef struct {
+    float v[4];
+} Float4;
+#endif
+
+/* A ray made ready for the float test of a node's two boxes. On axis a it meets the
+ * planes of child k's near face at t = (near - o) / d and of its far face at
+ * t = (far - o) / d; the near face is lo when d >= 0, hi when d < 0. The four lanes
+ * are the near faces of children 0 and 1, then their far faces, which are negated
+ * so that one max gathers both ends of the intervals (the max of -far is -min far). */
+typedef struct {
+    int near[3], far[3]; /* where on axis a the near and far faces are in bounds[0]:
+                            4 a for lo, 4 a + 2 for hi */
+    Float4 origin[3];    /* the origin on axis a rounded to float; when d = 0 on that
+                            axis, down in the near lanes and up in the far ones */
+    Float4 inv_dir[3];   /* 1/d on axis a, negated in the far lanes */
+    Float4 scale, slack; /* each lane is moved to lane * scale - slack: see float_ray */
+    float tmin;          /* the ray's tmin, rounded down */
+} FloatRay;
+/* end excerpt: bvh-float-ray */
+
+/* The relative error allowed for every t computed in float: 2^-20 covers the three
+ * roundings of t and the two of the correction itself (2^-24 each), with room to spare. */
+#define FLOAT_TEST_EPSILON 0x1p-20f
+
+/* Returns four floats: a, b, c and d. */
+static inline Float4 float4(float a, float b, float c, float d)
+{
+#ifdef BVH_SSE2
+    return _mm_setr_ps(a, b, c, d);
+#else
+    return (Float4){{a, b, c, d}};
+#endif
+}
+
+/* excerpt: bvh-float-ray-make */
+/* Makes ray r ready for the float test, once a ray: 1/d, the faces' order, and how far
+ * a t computed in float may be from the exact one. Three roundings (of 1/d, of
+ * face - o and of the product) move t by at most 3 parts in 2^24 of itself; rounding
+ * the origin to float moves t by (o - o_float) / d, the slack. The test moves each
+ * lane down by FLOAT_TEST_EPSILON of itself and by the slack: entries (never below
+ * tmin >= 0) scale by 1 - epsilon, -exits by 1 + epsilon, which covers an exit just
+ * below 0 as well once the slack is grown by 2^-16. FLT_MIN covers t so small that
+ * their floats have fewer than 24 digits.
+ * A zero component of d makes that slab a test of the origin alone: 1/d = +inf, the
+ * near face is lo and the far one hi, and the origin is rounded down for lo and up for
+ * hi, so that (lo - o) * inf and (hi - o) * inf say "outside" only when it is so. */
+static FloatRay float_ray(const Bvh *bvh, Ray r, const BoxRay *br, double tmin)
+{
+    FloatRay fr;
+    fr.tmin = float_below(tmin);
+    double o[3] = {r.origin.x, r.origin.y, r.origin.z}, d[3] = {r.dir.x, r.dir.y, r.dir.z};
+    double inv_d[3] = {br->inv_dir.x, br->inv_dir.y, br->inv_dir.z};
+    /* The largest slack and |o| of the three axes, and whether every 1/d is in range. */
+    double slack = 0, o_max = 0;
+    bool safe = bvh->float_safe && tmin >= 0;
+    for (int a = 0; a < 3; a++) {
+        int hi_first = d[a] < 0 ? 2 : 0;
+        fr.near[a] = 4 * a + hi_first;
+        fr.far[a] = 4 * a + 2 - hi_first;
+        double o_abs = fabs(o[a]);
+        o_max = o_abs > o_max ? o_abs : o_max;
+        if (d[a] == 0) {
+            float below = float_below(o[a]), above = float_above(o[a]);
+            fr.origin[a] = float4(below, below, above, above);
+            fr.inv_dir[a] = float4(INFINITY, INFINITY, -INFINITY, -INFINITY);
+            continue;
+        }
+        float of = (float)o[a], inv = (float)inv_d[a];
+        fr.origin[a] = float4(of, of, of, of);
+        fr.inv_dir[a] = float4(inv, inv, -inv, -inv);
+        double inv_abs = fabs(inv_d[a]), shift = fabs(o[a] - of) * inv_abs;
+        slack = shift > slack ? shift : slack;
+        safe = safe && inv_abs >= 0x1p-50 && inv_abs <= 0x1p50;
+    }
+    if (!safe || !(o_max <= 0x1p50)) {
+        /* Past these bounds a float could overflow or lose all its digits: every lane
+         * becomes -inf and the test meets every box, which is slow but never wrong. */
+        for (int a = 0; a < 3; a++)
+            fr.origin[a] = fr.inv_dir[a] = float4(0, 0, 0, 0);
+        fr.scale = float4(1, 1, 1, 1);
+        fr.slack = float4(INFINITY, INFINITY, INFINITY, INFINITY);
+        return fr;
+    }
+    const float e = FLOAT_TEST_EPSILON;
+    fr.scale = float4(1 - e, 1 - e, 1 + e, 1 + e);
+    float s = float_above(slack * (1 + 0x1p-16) + FLT_MIN);
+    fr.slack = float4(s, s, s, s);
+    return fr;
+}
+/* end excerpt: bvh-float-ray-make */
+
+/* excerpt: bvh-node-hit */
+/* Tests both children's boxes of node against the float ray fr with [tmin, tmax]:
+ * returns bit k set when the ray may meet child k's box, with entry[k] no greater than
+ * where it enters. Conservative: it may meet a box the ray misses, never the reverse.
+ * The lanes hold [enter 0, enter 1, -leave 0, -leave 1]: each slab's t, then the max
+ * over the three axes and [tmin, tmax]. A lane that is NaN, (lo - o) * inf for a ray
+ * parallel to a slab that starts on its plane, is left out by the max (SSE's max gives
+ * its second operand when either is NaN, as the C fallback's ?: does). */
+static inline int node_hit(const BvhNode *node, const FloatRay *fr, float tmax, float entry[2])
+{
+    const float *bounds = &node->bounds[0][0];
+#ifdef BVH_SSE2
+    __m128 u = _mm_setr_ps(fr->tmin, fr->tmin, -tmax, -tmax);
+    for (int a = 0; a < 3; a++) {
+        __m128 faces = _mm_loadl_pi(_mm_setzero_ps(), (const __m64 *)(bounds + fr->near[a]));
+        faces = _mm_loadh_pi(faces, (const __m64 *)(bounds + fr->far[a]));
+        __m128 t = _mm_mul_ps(_mm_sub_ps(faces, fr->origin[a]), fr->inv_dir[a]);
+        u = _mm_max_ps(t, u);
+    }
+    /* Rounding: every lane moves down by its error bound, so that no entry is later and
+     * no exit earlier than in exact arithmetic; then enter k <= leave k, as a sum <= 0. */
+    u = _mm_sub_ps(_mm_mul_ps(u, fr->scale), fr->slack);
+    __m128 sum = _mm_add_ps(u, _mm_shuffle_ps(u, u, _MM_SHUFFLE(1, 0, 3, 2)));
+    entry[0] = _mm_cvtss_f32(u);
+    entry[1] = _mm_cvtss_f32(_mm_shuffle_ps(u, u, _MM_SHUFFLE(1, 1, 1, 1)));
+    return _mm_movemask_ps(_mm_cmple_ps(sum, _mm_setzero_ps())) & 3;
+#else
+    float u[4] = {fr->tmin, fr->tmin, -tmax, -tmax};
+    for (int a = 0; a < 3; a++)
+        for (int k = 0; k < 4; k++) {
+            float face = bounds[(k < 2 ? fr->near[a] : fr->far[a]) + k % 2];
+            float t = (face - fr->origin[a].v[k]) * fr->inv_dir[a].v[k];
+            u[k] = t > u[k] ? t : u[k];
+        }
+    for (int k = 0; k < 4; k++)
+        u[k] = u[k] * fr->scale.v[k] - fr->slack.v[k];
+    entry[0] = u[0];
+    entry[1] = u[1];
+    return (u[0] + u[2] <= 0) | (u[1] + u[3] <= 0) << 1;
+#endif
+}
+/* end excerpt: bvh-node-hit */
+
+/* Tests both children's boxes of node against ray r with [tmin, tmax] as the traversal
+ * does, in float: bit k set when child k's box may be met. For the tests. */
+int bvh_children_hit(const Bvh *bvh, const BvhNode *node, Ray r, double tmin, double tmax)
+{
+    BoxRay br = box_ray(r);
+    FloatRay fr = float_ray(bvh, r, &br, tmin);
+    float entry[2];
+    return node_hit(node, &fr, float_above(tmax), entry);
+}
+
 /* What a leaf does with a ray: tests its primitives, keeping what it needs in state,
  * and may lower *tmax, the farthest t still of interest. Returns true to stop there. */
-typedef bool (*LeafFn)(const Bvh *bvh, const BvhNode *leaf, Ray r, double tmin, double *tmax,
+typedef bool (*LeafFn)(const Bvh *bvh, BvhRef leaf, Ray r, double tmin, double *tmax,
                        void *state);
 
-/* An entry of the traversal stack: a node still to visit and where the ray enters its box. */
+/* An entry of the traversal stack: a subtree still to visit and where the ray may enter it. */
 typedef struct {
-    uint32_t node;
-    double t;
+    uint32_t index, count; /* as in BvhRef */
+    float t;
 } Pending;
 
 /* The traversal is written once and inlined into each of its three users, where the leaf
@@ -286,60 +468,64 @@ typedef struct {
 static ALWAYS_INLINE bool traverse(const Bvh *bvh, Ray r, double tmin, double *tmax, LeafFn leaf,
                                    void *state, long *box_tests)
 {
-    if (bvh->node_count == 0)
-        return false;
-    const BvhNode *nodes = bvh->nodes;
+    double t;
     BoxRay br = box_ray(r);
+    if (bvh->prim_count == 0 || !box_hit(bvh->box, &br, tmin, *tmax, &t))
+        return false;
+    FloatRay fr = float_ray(bvh, r, &br, tmin);
     bool negative[3] = {signbit(r.dir.x), signbit(r.dir.y), signbit(r.dir.z)};
+    float tmax_float = float_above(*tmax);
     Pending stack[BVH_MAX_DEPTH];
     int top = 0;
-    double t;
-    if (!box_hit(node_box(&nodes[0]), &br, tmin, *tmax, &t))
-        return false;
-    uint32_t current = 0;
+    uint32_t index = bvh->root.index, count = bvh->root.count; /* the subtree at hand */
     for (;;) {
-        const BvhNode *node = &nodes[current];
-        if (node->count > 0) {
-            if (leaf(bvh, node, r, tmin, tmax, state))
+        if (count > 0) {
+            if (leaf(bvh, (BvhRef){index, count}, r, tmin, tmax, state))
                 return true;
+            tmax_float = float_above(*tmax);
         } else {
             /* Both children's boxes are tested; the ray goes on into the nearer one
              * and the other waits on the stack. When the ray starts inside both (the
-             * entry is tmin for each), the split axis decides: the child on the side
-             * the ray comes from first. */
-            uint32_t near = current + 1, far = node->index;
-            if (negative[node->axis]) {
-                near = node->index;
-                far = current + 1;
-            }
-            double t_near, t_far;
-            bool hit_near = box_hit(node_box(&nodes[near]), &br, tmin, *tmax, &t_near);
-            bool hit_far = box_hit(node_box(&nodes[far]), &br, tmin, *tmax, &t_far);
+             * entries are equal), the split axis decides: the child on the side the
+             * ray comes from first. The outcomes are branches on purpose: the
+             * processor guesses the next node and loads it while the test is still
+             * running, where an index computed from the test's bits would wait for it. */
+            const BvhNode *node = &bvh->nodes[index];
+            float entry[2];
+            int hits = node_hit(node, &fr, tmax_float, entry);
             if (box_tests != NULL) /* only for --view box-tests; inlined away elsewhere */
                 *box_tests += 2;
-            if (hit_near && hit_far) {
-                if (t_far < t_near) {
-                    uint32_t swap = near;
-                    near = far;
-                    far = swap;
-                    t_far = t_near;
+            if (hits == 3) {
+                if (entry[0] < entry[1] || (entry[0] == entry[1] && !negative[node->axis])) {
+                    stack[top++] = (Pending){node->index[1], node->count[1], entry[1]};
+                    index = node->index[0];
+                    count = node->count[0];
+                } else {
+                    stack[top++] = (Pending){node->index[0], node->count[0], entry[0]};
+                    index = node->index[1];
+                    count = node->count[1];
                 }
-                stack[top++] = (Pending){far, t_far};
-                current = near;
                 continue;
             }
-            if (hit_near || hit_far) {
-                current = hit_near ? near : far;
+            if (hits == 1) {
+                index = node->index[0];
+                count = node->count[0];
+                continue;
+            }
+            if (hits == 2) {
+                index = node->index[1];
+                count = node->count[1];
                 continue;
             }
         }
-        /* Back up to the nearest waiting node that a hit found since has not ruled out. */
+        /* Back up to the nearest waiting subtree that a hit found since has not ruled out. */
         do {
             if (top == 0)
                 return false;
             top--;
         } while (stack[top].t > *tmax);
-        current = stack[top].node;
+        index = stack[top].index;
+        count = stack[top].count;
     }
 }
 /* end excerpt: bvh-traverse */
@@ -381,11 +567,11 @@ static inline bool closest_offer(Closest *c, uint32_t which, double t, double *t
 /* Tests a leaf's primitives for the closest hit. A primitive tested with t < limit,
  * just above the closest t, also finds hits at exactly that t: of several surfaces
  * at the same t, brute force keeps the first it tested, and so must we. */
-static bool leaf_closest(const Bvh *bvh, const BvhNode *leaf, Ray r, double tmin, double *tmax,
+static bool leaf_closest(const Bvh *bvh, BvhRef leaf, Ray r, double tmin, double *tmax,
                          void *state)
 {
     Closest *c = state;
-    for (uint32_t k = leaf->index; k < leaf->index + leaf->count; k++) {
+    for (uint32_t k = leaf.index; k < leaf.index + leaf.count; k++) {
         double t;
         if (prim_intersect(bvh->scene, bvh->prims[k], r, tmin, c->limit, &t))
             closest_offer(c, bvh->prims[k], t, tmax);
@@ -423,11 +609,11 @@ bool bvh_hit(const Bvh *bvh, Ray r, double tmin, double tmax, Hit *hit)
 
 /* excerpt: bvh-leaf-any */
 /* Tests a leaf's primitives for any hit at all: the first one found stops the traversal. */
-static bool leaf_any(const Bvh *bvh, const BvhNode *leaf, Ray r, double tmin, double *tmax,
+static bool leaf_any(const Bvh *bvh, BvhRef leaf, Ray r, double tmin, double *tmax,
                      void *state)
 {
     (void)state;
-    for (uint32_t k = leaf->index; k < leaf->index + leaf->count; k++) {
+    for (uint32_t k = leaf.index; k < leaf.index + leaf.count; k++) {
         double t;
         if (prim_intersect(bvh->scene, bvh->prims[k], r, tmin, *tmax, &t))
             return true;
@@ -448,14 +634,22 @@ typedef struct {
     BoxHit face;
 } LeafBoxes;
 
+/* Returns the box of leaf as the build stored it: its primitives' boxes, rounded outwards. */
+static Box leaf_box_of(const Bvh *bvh, BvhRef leaf)
+{
+    Box box = box_empty();
+    for (uint32_t k = leaf.index; k < leaf.index + leaf.count; k++)
+        box = box_union(box, bvh_prim_box(bvh->scene, bvh->prims[k]));
+    return box_to_floats(box);
+}
+
 /* Tests a leaf's own box, as if it were a surface: mode 2 draws the leaves. */
-static bool leaf_box(const Bvh *bvh, const BvhNode *leaf, Ray r, double tmin, double *tmax,
-                     void *state)
+static bool leaf_box(const Bvh *bvh, BvhRef leaf, Ray r, double tmin, double *tmax, void *state)
 {
     LeafBoxes *lb = state;
     BoxHit face;
-    if (box_hit_face(node_box(leaf), r, tmin, lb->closest.limit, &face) &&
-        closest_offer(&lb->closest, (uint32_t)(leaf - bvh->nodes), face.t, tmax))
+    if (box_hit_face(leaf_box_of(bvh, leaf), r, tmin, lb->closest.limit, &face) &&
+        closest_offer(&lb->closest, leaf.index, face.t, tmax))
         lb->face = face;
     return false;
 }
@@ -469,10 +663,9 @@ bool bvh_hit_leaf_boxes(const Bvh *bvh, Ray r, double tmin, double tmax, Hit *hi
     traverse(bvh, r, tmin, &tmax, leaf_box, &lb, NULL);
     if (!lb.closest.found)
         return false;
-    const BvhNode *leaf = &bvh->nodes[lb.closest.which];
     *hit =
         (Hit){.t = lb.face.t, .point = ray_at(r, lb.face.t), .normal = box_face_normal(&lb.face)};
-    bvh_prim_surface(bvh->scene, bvh->prims[leaf->index], hit);
+    bvh_prim_surface(bvh->scene, bvh->prims[lb.closest.which], hit);
     return true;
 }
 
@@ -483,11 +676,11 @@ typedef struct {
 } Counted;
 
 /* Tests a leaf's primitives as leaf_closest does, counting them. */
-static bool leaf_counted(const Bvh *bvh, const BvhNode *leaf, Ray r, double tmin, double *tmax,
+static bool leaf_counted(const Bvh *bvh, BvhRef leaf, Ray r, double tmin, double *tmax,
                          void *state)
 {
     Counted *c = state;
-    c->prim_tests += leaf->count;
+    c->prim_tests += leaf.count;
     return leaf_closest(bvh, leaf, r, tmin, tmax, &c->closest);
 }
 
@@ -496,7 +689,7 @@ long bvh_count_tests(const Bvh *bvh, Ray r)
 {
     Counted c = {.closest = {.limit = INFINITY}};
     double tmax = INFINITY;
-    long box_tests = bvh->node_count > 0; /* the root's */
+    long box_tests = bvh->prim_count > 0; /* the root's */
     traverse(bvh, r, 0, &tmax, leaf_counted, &c, &box_tests);
     return box_tests + c.prim_tests;
 }

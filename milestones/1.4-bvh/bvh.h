@@ -18,15 +18,22 @@
 #define BVH_BINS 16
 
 /* excerpt: bvh-node */
-/* A node of the flattened hierarchy: 32 bytes, two to a 64-byte cache line. Nodes are
- * stored depth first: an interior node's first child comes right after it. */
+/* Where a subtree is: an interior node, or a leaf's run of primitives. */
 typedef struct {
-    float lo[3], hi[3]; /* its box in float, rounded outwards so that it holds every
-                           double box below it: no hit is ever lost to rounding */
-    uint32_t index;     /* interior: its second child; leaf: its first entry of prims */
-    uint16_t count;     /* leaf: how many primitives (1 to BVH_MAX_LEAF); interior: 0 */
-    uint8_t axis;       /* interior: the axis its children were split along */
-    uint8_t unused;
+    uint32_t index; /* interior: the node in nodes; leaf: its first entry of prims */
+    uint32_t count; /* leaf: how many primitives (1 to BVH_MAX_LEAF); interior: 0 */
+} BvhRef;
+
+/* An interior node of the flattened hierarchy: its two children's boxes side by side,
+ * so that one cache line of 64 bytes answers for both, and where the children are.
+ * Nodes are stored depth first: an interior first child comes right after its parent. */
+typedef struct {
+    float bounds[3][4]; /* on axis a: child 0's lo, child 1's lo, child 0's hi, child 1's hi,
+                           rounded outwards so that each holds every double box below it */
+    uint32_t index[2];  /* child k: its node, or its leaf's first entry of prims */
+    uint16_t count[2];  /* child k: 0 for a node, or its leaf's number of primitives */
+    uint8_t axis;       /* the axis the children were split along */
+    uint8_t unused[3];
 } BvhNode;
 /* end excerpt: bvh-node */
 
@@ -36,18 +43,22 @@ typedef struct {
  * world_hit tests them, which is how ties are broken. Planes have no box: they stay out. */
 typedef struct {
     const Scene *scene;
-    BvhNode *nodes; /* node 0 is the root; none when there are no primitives */
+    Box box;         /* the root's box, rounded outwards to floats */
+    BvhRef root;     /* a node, or a leaf when there are few primitives */
+    BvhNode *nodes;  /* the interior nodes; none when the root is a leaf or there is nothing */
     int node_count;
-    uint32_t *prims; /* the primitives in leaf order: leaf n holds prims[index .. index+count) */
+    uint32_t *prims; /* the primitives in leaf order: a leaf holds prims[index .. index+count) */
     int prim_count;
     int leaf_count;
     int depth; /* levels below the root */
+    bool float_safe; /* every coordinate of the box is small enough for the float test */
 } Bvh;
 /* end excerpt: bvh-struct */
 
 bool bvh_build(Bvh *bvh, const Scene *scene);
 void bvh_free(Bvh *bvh);
-Box bvh_node_box(const BvhNode *node);
+Box bvh_child_box(const BvhNode *node, int k);
+BvhRef bvh_child(const BvhNode *node, int k);
 Box bvh_prim_box(const Scene *scene, uint32_t prim);
 void bvh_prim_surface(const Scene *scene, uint32_t prim, Hit *hit);
 bool bvh_hit(const Bvh *bvh, Ray r, double tmin, double tmax, Hit *hit);
@@ -55,5 +66,6 @@ bool bvh_blocked(const Bvh *bvh, Ray r, double tmin, double tmax);
 bool bvh_hit_leaf_boxes(const Bvh *bvh, Ray r, double tmin, double tmax, Hit *hit);
 size_t bvh_bytes(const Bvh *bvh);
 long bvh_count_tests(const Bvh *bvh, Ray r);
+int bvh_children_hit(const Bvh *bvh, const BvhNode *node, Ray r, double tmin, double tmax);
 
 #endif

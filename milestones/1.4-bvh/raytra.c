@@ -64,7 +64,7 @@ static void report(const void *ctx, const RenderResult *result)
         return;
     }
     const Bvh *b = &a->bvh;
-    printf("mode %d: BVH of %d primitives: %d nodes, %d leaves, depth %d, %.1f bytes per "
+    printf("mode %d: BVH of %d primitives: %d interior nodes, %d leaves, depth %d, %.1f bytes per "
            "primitive, built in %.1f ms\n",
            a->mode, b->prim_count, b->node_count, b->leaf_count, b->depth,
            b->prim_count > 0 ? (double)bvh_bytes(b) / b->prim_count : 0.0, a->build_seconds * 1e3);

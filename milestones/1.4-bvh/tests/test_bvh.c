@@ -86,20 +86,16 @@ typedef struct {
     int nodes, leaves, depth;
 } Walk;
 
-/* Checks the subtree under node index, at depth, recursively. */
-static void walk(Walk *w, uint32_t index, int depth)
+/* Checks the subtree at ref, whose box is box, at depth, recursively. */
+static void walk(Walk *w, BvhRef ref, Box box, int depth)
 {
-    ck_assert_int_lt(index, w->bvh->node_count);
-    const BvhNode *node = &w->bvh->nodes[index];
-    Box box = bvh_node_box(node);
-    w->nodes++;
     if (depth > w->depth)
         w->depth = depth;
     ck_assert_int_lt(depth, BVH_MAX_DEPTH);
-    if (node->count > 0) {
+    if (ref.count > 0) {
         w->leaves++;
-        ck_assert_int_le(node->count, BVH_MAX_LEAF);
-        for (uint32_t k = node->index; k < node->index + node->count; k++) {
+        ck_assert_int_le(ref.count, BVH_MAX_LEAF);
+        for (uint32_t k = ref.index; k < ref.index + ref.count; k++) {
             ck_assert_int_lt(k, w->bvh->prim_count);
             uint32_t p = w->bvh->prims[k];
             w->seen[p]++;
@@ -108,10 +104,16 @@ static void walk(Walk *w, uint32_t index, int depth)
         }
         return;
     }
-    uint32_t children[2] = {index + 1, node->index};
+    ck_assert_int_lt(ref.index, w->bvh->node_count);
+    const BvhNode *node = &w->bvh->nodes[ref.index];
+    w->nodes++;
     for (int c = 0; c < 2; c++) {
-        ck_assert(box_contains(box, bvh_node_box(&w->bvh->nodes[children[c]])));
-        walk(w, children[c], depth + 1);
+        Box child = bvh_child_box(node, c);
+        ck_assert(box_contains(box, child));
+        /* Depth first: a first child that is a node comes right after its parent. */
+        if (c == 0 && node->count[0] == 0)
+            ck_assert_int_eq(node->index[0], ref.index + 1);
+        walk(w, bvh_child(node, c), child, depth + 1);
     }
 }
 
@@ -124,15 +126,18 @@ static void check_invariants(const Scene *scene)
     ck_assert_int_eq(bvh.prim_count, n);
     if (n == 0) {
         ck_assert_int_eq(bvh.node_count, 0);
+        ck_assert_int_eq(bvh.leaf_count, 0);
         Hit hit;
         ck_assert(!bvh_hit(&bvh, ray(vec3(0, 0, 0), vec3(0, 0, 1)), 0, INFINITY, &hit));
         ck_assert(!bvh_blocked(&bvh, ray(vec3(0, 0, 0), vec3(0, 0, 1)), 0, INFINITY));
         bvh_free(&bvh);
         return;
     }
-    ck_assert_int_le(bvh.node_count, 2 * n - 1);
+    /* A binary tree of L leaves has L - 1 interior nodes, and L <= n. */
+    ck_assert_int_le(bvh.leaf_count, n);
+    ck_assert_int_eq(bvh.node_count, bvh.leaf_count - 1);
     Walk w = {&bvh, calloc((size_t)n, sizeof(int)), 0, 0, 0};
-    walk(&w, 0, 0);
+    walk(&w, bvh.root, bvh.box, 0);
     ck_assert_int_eq(w.nodes, bvh.node_count); /* every node is reached, once */
     ck_assert_int_eq(w.leaves, bvh.leaf_count);
     ck_assert_int_eq(w.depth, bvh.depth);
@@ -209,7 +214,7 @@ static void compare_with_brute_force(const Scene *scene, int count, double lo, d
 {
     Bvh bvh;
     ck_assert(bvh_build(&bvh, scene));
-    Box all = bvh_node_box(&bvh.nodes[0]);
+    Box all = bvh.box;
     int hits = 0, blocked = 0;
     for (int k = 0; k < count; k++) {
         Vec3 o = rnd_point(lo, hi), target = vec3_add(all.lo, vec3(rnd() * (all.hi.x - all.lo.x),
@@ -239,6 +244,104 @@ static void compare_with_brute_force(const Scene *scene, int count, double lo, d
     ck_assert_int_eq(blocked, hits);
     bvh_free(&bvh);
 }
+
+/* Returns a random float box: its corners at about scale from the origin, its sides
+ * from 0 (flat) to about scale. */
+static Box rnd_float_box(double scale)
+{
+    double lo[3], hi[3];
+    for (int a = 0; a < 3; a++) {
+        lo[a] = (float)(scale * (2 * rnd() - 1));
+        hi[a] = rnd() < 0.1 ? lo[a] : (float)(lo[a] + scale * rnd());
+    }
+    return (Box){vec3(lo[0], lo[1], lo[2]), vec3(hi[0], hi[1], hi[2])};
+}
+
+/* Returns coordinate a of v. */
+static double coord(Vec3 v, int a)
+{
+    return a == 0 ? v.x : a == 1 ? v.y : v.z;
+}
+
+/* The float test of two boxes against the exact slab test in double, on rays chosen to
+ * graze: origins on the boxes' planes or at no float, rays parallel to a face, aimed at
+ * a corner, an edge or a face, with tmax at the box's own entry. Wherever the double test
+ * meets a box, so must the float test; and it may meet more, but rarely. */
+START_TEST(float_test_is_conservative)
+{
+    Bvh bvh = {.float_safe = true};
+    long met = 0, extra = 0, count = 0; /* of the rays in random directions */
+    const double scales[] = {1e-3, 1, 1e3, 1e6};
+    for (int k = 0; k < 400000; k++) {
+        double scale = scales[k % 4];
+        Box box[2] = {rnd_float_box(scale), rnd_float_box(scale)};
+        BvhNode node = {0};
+        for (int c = 0; c < 2; c++)
+            for (int a = 0; a < 3; a++) {
+                node.bounds[a][c] = (float)coord(box[c].lo, a);
+                node.bounds[a][2 + c] = (float)coord(box[c].hi, a);
+            }
+        Vec3 o = vec3_scale(rnd_point(-3, 3), scale);
+        if (rnd() < 0.3) /* on a plane of the first box */
+            o.x = rnd() < 0.5 ? box[0].lo.x : box[0].hi.x;
+        Vec3 target = vec3(rnd() < 0.5 ? box[0].lo.x : box[0].hi.x,
+                           rnd() < 0.5 ? box[0].lo.y : box[0].hi.y,
+                           rnd() < 0.5 ? box[0].lo.z : box[0].hi.z); /* a corner */
+        if (rnd() < 0.5) /* a point of an edge or a face */
+            target.y = box[0].lo.y + rnd() * (box[0].hi.y - box[0].lo.y);
+        Vec3 to = vec3_sub(target, o);
+        bool aimed = rnd() < 0.7 && vec3_length(to) > 0;
+        Vec3 d = aimed ? vec3_normalize(to) : rnd_dir();
+        if (rnd() < 0.1)
+            d.z = rnd() < 0.5 ? 0.0 : -0.0;
+        if (d.x == 0 && d.y == 0 && d.z == 0)
+            continue;
+        Ray r = ray(o, d);
+        BoxRay br = box_ray(r);
+        double tmin = rnd() < 0.5 ? 0 : 1e-9 * scale, tmax = INFINITY, t;
+        if (rnd() < 0.3 && box_hit(box[0], &br, tmin, INFINITY, &t))
+            tmax = t; /* the interval ends where the box begins */
+        else if (rnd() < 0.3)
+            tmax = rnd() * 5 * scale;
+        int bits = bvh_children_hit(&bvh, &node, r, tmin, tmax);
+        for (int c = 0; c < 2; c++) {
+            bool exact = box_hit(box[c], &br, tmin, tmax, &t);
+            if (exact)
+                ck_assert_msg(bits >> c & 1,
+                              "box %d missed: o (%a, %a, %a) d (%a, %a, %a) t [%a, %a]", c,
+                              o.x, o.y, o.z, d.x, d.y, d.z, tmin, tmax);
+            if (aimed)
+                continue;
+            met += exact;
+            extra += !exact && (bits >> c & 1);
+            count++;
+        }
+    }
+    /* The margin is about 2^-20 of t: a ray in a random direction rarely passes so close. */
+    ck_assert_msg(met > 1000 && extra * 10 < met, "of %ld boxes, %ld met, %ld by the float test alone",
+                  count, met, extra);
+}
+END_TEST
+
+/* A ray whose origin or direction is beyond what floats can hold, or whose tmin is
+ * negative, meets every box: slow, but never wrong. */
+START_TEST(float_test_out_of_range)
+{
+    Bvh bvh = {.float_safe = true};
+    BvhNode node = {.bounds = {{0, 10, 1, 11}, {0, 10, 1, 11}, {0, 10, 1, 11}}};
+    ck_assert_int_eq(bvh_children_hit(&bvh, &node, ray(vec3(5, 5, -5), vec3(0, 0, 1)), 0, 1), 0);
+    ck_assert_int_eq(bvh_children_hit(&bvh, &node, ray(vec3(0.5, 0.5, -5), vec3(0, 0, 1)), 0,
+                                      INFINITY),
+                     1);
+    ck_assert_int_eq(bvh_children_hit(&bvh, &node, ray(vec3(0x1p60, 5, -5), vec3(0, 0, 1)), 0, 1),
+                     3);
+    ck_assert_int_eq(bvh_children_hit(&bvh, &node, ray(vec3(5, 5, -5), vec3(0x1p-60, 0, 1)), 0, 1),
+                     3);
+    ck_assert_int_eq(bvh_children_hit(&bvh, &node, ray(vec3(5, 5, -5), vec3(0, 0, 1)), -1, 1), 3);
+    bvh.float_safe = false;
+    ck_assert_int_eq(bvh_children_hit(&bvh, &node, ray(vec3(5, 5, -5), vec3(0, 0, 1)), 0, 1), 3);
+}
+END_TEST
 
 START_TEST(closest_hit_as_brute_force)
 {
@@ -314,6 +417,8 @@ static Suite *bvh_suite(void)
     tcase_add_test(tc, invariants_of_random_soups);
     tcase_add_test(tc, invariants_of_degenerate_sets);
     tcase_add_test(tc, tests_counted_for_the_box_tests_view);
+    tcase_add_test(tc, float_test_is_conservative);
+    tcase_add_test(tc, float_test_out_of_range);
     tcase_add_test(tc, closest_hit_as_brute_force);
     tcase_add_test(tc, modes_0_and_3_as_brute_force);
     tcase_add_test(tc, bunny_as_brute_force);
