@@ -131,6 +131,10 @@ int grade_kind(const char *path);
 bool grade_make_folder(const char *path, bool anew);
 char **grade_list_folders(const char *folder, int *count);
 
+/* grade_part.c */
+char *part_find(const char *top, const char *part);
+bool part_read_renders(Grading *g, const char *top);
+
 /* grade_submission.c */
 bool submission_list(Grading *g);
 bool submission_grade_all(Grading *g);

@@ -2,7 +2,7 @@
 # reference images (docs/grading.md). Included by tools/Makefile after common/build.mk.
 
 GRADE         := $(BUILD)/grade
-GRADE_OBJECTS := $(addprefix $(BUILD)/,grade.o grade_submission.o grade_run.o grade_report.o \
+GRADE_OBJECTS := $(addprefix $(BUILD)/,grade.o grade_part.o grade_submission.o grade_run.o grade_report.o \
                    imgfile.o toolopt.o)
 # The test's model of a correct submission runs part 1.1's program, built without the
 # sanitizers: their shadow memory does not fit under the grader's memory limit.

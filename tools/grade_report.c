@@ -214,11 +214,13 @@ static void write_pictures(FILE *f, const SceneResult *res, int k)
                 "%.4g</td></tr><tr><th>PSNR</th><td>%s</td></tr><tr><th>Differing pixels</th><td>"
                 "%ld (%.3g%%)</td></tr>%s</table>\n",
                 fig->max[0] * 255, fig->max[1] * 255, fig->max[2] * 255, fig->mean * 255,
-                fig->rmse, isinf(fig->psnr) ? "&infin; (equal)" : grade_format("%.2f dB", fig->psnr),
+                fig->rmse,
+                isinf(fig->psnr) ? "&infin; (equal)" : grade_format("%.2f dB", fig->psnr),
                 fig->differing, fig->pixels > 0 ? 100.0 * fig->differing / fig->pixels : 0.0,
-                fig->has_box ? grade_format("<tr><th>Region</th><td>(%d,%d)&ndash;(%d,%d)</td></tr>",
-                                            fig->box[0], fig->box[1], fig->box[2], fig->box[3])
-                             : "");
+                fig->has_box
+                    ? grade_format("<tr><th>Region</th><td>(%d,%d)&ndash;(%d,%d)</td></tr>",
+                                   fig->box[0], fig->box[1], fig->box[2], fig->box[3])
+                    : "");
     fputs("</div>\n", f);
 }
 

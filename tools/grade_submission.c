@@ -101,7 +101,8 @@ static void compare_image(const Grading *g, const Submission *s, int k, const ch
     else if (res->compared && f->differing == 0)
         set_verdict(res, v, "no pixel differs by more than %.3g/255", f->threshold * 255);
     else if (res->compared)
-        set_verdict(res, v, "%.3g%% of the pixels differ by more than %.3g/255, %s the %.3g%% allowed",
+        set_verdict(res, v,
+                    "%.3g%% of the pixels differ by more than %.3g/255, %s the %.3g%% allowed",
                     100.0 * f->differing / f->pixels, f->threshold * 255,
                     a.pass ? "within" : "more than", f->allow * 100);
     else if (exited && a.has_sizes) {

@@ -9,6 +9,7 @@
 #include "image.h"
 #include "imgdiff.h"
 #include "imgfile.h"
+#include "imgmap.h"
 #include "outfile.h"
 #include "toolopt.h"
 
@@ -33,19 +34,6 @@ typedef struct {
     long differing;          /* pixels with a channel difference above the threshold */
     int x0, y0, x1, y1;      /* the box around those pixels, y from the top */
 } Diff;
-
-/* The heat map's colours, evenly spread from the smallest difference to the scale's top. */
-static const Color ramp[] = {
-    {0.0, 0.0, 0.35}, /* dark blue: the smallest difference, still unlike black */
-    {0.5, 0.0, 0.75}, /* purple */
-    {1.0, 0.0, 0.0},  /* red */
-    {1.0, 1.0, 0.0},  /* yellow */
-    {1.0, 1.0, 1.0},  /* white: the top of the scale, and above */
-};
-#define RAMP_STOPS ((int)(sizeof ramp / sizeof ramp[0]))
-
-/* The longest side of a thumbnail: three fit side by side on a laptop's screen. */
-#define THUMB_SIDE 320
 
 /* The largest image of another size shrunk for --thumb: a larger one is surely a mistake,
  * or a decompression bomb. */
@@ -187,27 +175,13 @@ static bool check_output(const DiffOptions *o, const char *path)
     return false;
 }
 
-/* Writes the differences of the channels of pixel k of a and b into e; returns the
- * largest. A NaN or an infinity in either is an infinite difference, even against
- * another: such a pixel is broken, never equal. */
-static double pixel_diff(const Image *a, const Image *b, long k, double e[3])
-{
-    double largest = 0;
-    for (int c = 0; c < 3; c++) {
-        float p = a->pixels[3 * k + c], q = b->pixels[3 * k + c];
-        e[c] = isfinite(p) && isfinite(q) ? fabs((double)p - (double)q) : INFINITY;
-        largest = fmax(largest, e[c]);
-    }
-    return largest;
-}
-
 /* Measures how a and b, of the same size, differ, counting the pixels beyond threshold. */
 static Diff diff_images(const Image *a, const Image *b, double threshold)
 {
     Diff d = {.x0 = a->width, .y0 = a->height, .x1 = -1, .y1 = -1};
     for (int y = 0; y < a->height; y++)
         for (int x = 0; x < a->width; x++) {
-            double e[3], largest = pixel_diff(a, b, (long)y * a->width + x, e);
+            double e[3], largest = imgmap_pixel_diff(a, b, (long)y * a->width + x, e);
             for (int c = 0; c < 3; c++) {
                 d.max[c] = fmax(d.max[c], e[c]);
                 d.sum += e[c];
@@ -227,75 +201,11 @@ static Diff diff_images(const Image *a, const Image *b, double threshold)
     return d;
 }
 
-/* Returns the heat map's colour for difference e on a scale whose top is top: black
- * for an exactly equal pixel, at least dark blue for any difference at all. */
-static Color heat_color(double e, double top)
-{
-    if (e == 0)
-        return color(0, 0, 0);
-    double t = fmin(e / top, 1.0) * (RAMP_STOPS - 1);
-    int k = t < RAMP_STOPS - 2 ? (int)t : RAMP_STOPS - 2; /* the stops t lies between */
-    double f = t - k;
-    return color_add(color_scale(ramp[k], 1 - f), color_scale(ramp[k + 1], f));
-}
-
-/* Writes img to path shrunk by a whole factor to at most THUMB_SIDE pixels a side, each
- * pixel the mean of its block, or with peaks its brightest pixel, so that a heat map's
- * single differing pixel stays; false (reported) when it cannot. */
-static bool write_thumb(const Image *img, bool peaks, PngEncoding encoding, const char *path)
-{
-    int side = img->width > img->height ? img->width : img->height;
-    int f = (side + THUMB_SIDE - 1) / THUMB_SIDE;
-    Image thumb;
-    Error err;
-    error_set(&err, "not enough memory");
-    bool ok = image_init(&thumb, (img->width + f - 1) / f, (img->height + f - 1) / f);
-    for (int y = 0; ok && y < thumb.height; y++)
-        for (int x = 0; x < thumb.width; x++) {
-            Color sum = color(0, 0, 0), peak = image_get(img, x * f, y * f);
-            int n = 0;
-            for (int v = y * f; v < (y + 1) * f && v < img->height; v++)
-                for (int u = x * f; u < (x + 1) * f && u < img->width; u++, n++) {
-                    Color c = image_get(img, u, v);
-                    sum = color_add(sum, c);
-                    peak = c.r + c.g + c.b > peak.r + peak.g + peak.b ? c : peak;
-                }
-            image_set(&thumb, x, y, peaks ? peak : color_scale(sum, 1.0 / n));
-        }
-    ok = ok && image_write(&thumb, path, encoding, &err);
-    if (!ok)
-        fprintf(stderr, "imgdiff: cannot write '%s': %s\n", path, err.text);
-    image_free(&thumb);
-    return ok;
-}
-
 /* Returns the encoding that writes an image read from a file of kind `kind` back to a PNG as
  * it looks: a PNG's values as they were read, linear ones as raytra encodes its PNGs. */
 static PngEncoding encoding_of(ImgFileKind kind)
 {
     return kind == IMGFILE_PNG ? PNG_ENCODING_LINEAR : PNG_ENCODING_SRGB;
-}
-
-/* Writes the heat map of a against b, for --diff and --diff-thumb, linear so that the
- * ramp's colours are stored as chosen; false (reported) when it cannot. */
-static bool write_heat_map(const Image *a, const Image *b, double top, const DiffOptions *o)
-{
-    Image map;
-    double e[3];
-    if (!image_init(&map, a->width, a->height)) {
-        fprintf(stderr, "imgdiff: not enough memory for the heat map\n");
-        return false;
-    }
-    for (int y = 0; y < a->height; y++)
-        for (int x = 0; x < a->width; x++)
-            image_set(&map, x, y, heat_color(pixel_diff(a, b, (long)y * a->width + x, e), top));
-    Error err;
-    bool ok = o->diff_path == NULL || image_write(&map, o->diff_path, PNG_ENCODING_LINEAR, &err);
-    if (!ok)
-        fprintf(stderr, "imgdiff: cannot write '%s': %s\n", o->diff_path, err.text);
-    ok = ok && (o->diff_thumb == NULL || write_thumb(&map, true, PNG_ENCODING_LINEAR, o->diff_thumb));
-    image_free(&map);
-    return ok;
 }
 
 /* Prints the measures of d for images of width x height pixels: in words, or with
@@ -377,7 +287,7 @@ static bool check_headers(const DiffOptions *o, ImgFileKind kind[2])
     Image b;
     if (o->thumb_path != NULL && (long)w[1] * h[1] <= THUMB_MAX_PIXELS &&
         image_read(&b, o->paths[1], &err)) {
-        write_thumb(&b, false, encoding_of(kind[1]), o->thumb_path);
+        imgmap_write_thumb(&b, false, encoding_of(kind[1]), o->thumb_path);
         image_free(&b);
     }
     return false;
@@ -392,7 +302,8 @@ static int compare(Image img[2], const ImgFileKind kind[2], const DiffOptions *o
         fprintf(stderr, "imgdiff: '%s' changed while it was read\n", o->paths[1]);
         return EXIT_TROUBLE;
     }
-    if (o->thumb_path != NULL && !write_thumb(b, false, encoding_of(kind[1]), o->thumb_path))
+    if (o->thumb_path != NULL &&
+        !imgmap_write_thumb(b, false, encoding_of(kind[1]), o->thumb_path))
         return EXIT_TROUBLE;
     /* A PNG against linear values (a PFM's, an EXR's): each linear value is encoded as
      * raytra encodes its PNGs, clamped to [0, 1], given the sRGB curve and rounded to 8
@@ -414,7 +325,7 @@ static int compare(Image img[2], const ImgFileKind kind[2], const DiffOptions *o
     /* Equal images get an all-black map; the scale then only needs to be positive. */
     double top = o->scale > 0 ? o->scale : d.largest_finite > 0 ? d.largest_finite : 1.0 / 255;
     bool heat = o->diff_path != NULL || o->diff_thumb != NULL;
-    if (heat && !write_heat_map(a, b, top, o))
+    if (heat && !imgmap_write_heat(a, b, top, o->diff_path, o->diff_thumb))
         return EXIT_TROUBLE;
     if (o->diff_path != NULL && !o->quiet && !o->machine)
         printf("heat map: black = 0, white = %.4g (%.1f/255), written to %s\n", top, top * 255,
