@@ -78,6 +78,19 @@ static inline double axis_of(Vec3 v, int axis)
     return axis == 0 ? v.x : axis == 1 ? v.y : v.z;
 }
 
+/* Stores child k of node: where it is, and its box rounded outwards to floats, which
+ * keeps every primitive's box inside it. */
+void bvh_node_set_child(BvhNode *node, int k, Box box, BvhRef ref)
+{
+    Box f = box_to_floats(box);
+    for (int a = 0; a < 3; a++) {
+        node->bounds[a][k] = (float)axis_of(f.lo, a);
+        node->bounds[a][2 + k] = (float)axis_of(f.hi, a);
+    }
+    node->index[k] = ref.index;
+    node->count[k] = (uint16_t)ref.count;
+}
+
 /* Returns the bin of centroid coordinate c, for bins of width 1 / scale from lo. */
 static inline int bin_of(double c, double lo, double scale)
 {
@@ -210,18 +223,10 @@ static BvhRef build_node(Builder *b, int begin, int end, int depth, Box *box_out
     Box child_box[2];
     child[0] = build_node(b, begin, mid, depth + 1, &child_box[0]); /* node self + 1 */
     child[1] = build_node(b, mid, end, depth + 1, &child_box[1]);
-    /* Rounding the children's boxes outwards to floats keeps every primitive's box inside. */
     BvhNode *node = &b->nodes[self];
     *node = (BvhNode){.axis = (uint8_t)axis};
-    for (int k = 0; k < 2; k++) {
-        Box f = box_to_floats(child_box[k]);
-        for (int a = 0; a < 3; a++) {
-            node->bounds[a][k] = (float)axis_of(f.lo, a);
-            node->bounds[a][2 + k] = (float)axis_of(f.hi, a);
-        }
-        node->index[k] = child[k].index;
-        node->count[k] = (uint16_t)child[k].count;
-    }
+    for (int k = 0; k < 2; k++)
+        bvh_node_set_child(node, k, child_box[k], child[k]);
     return (BvhRef){self, 0};
 }
 /* end excerpt: bvh-build-node */

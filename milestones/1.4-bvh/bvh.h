@@ -59,6 +59,7 @@ bool bvh_build(Bvh *bvh, const Scene *scene);
 void bvh_free(Bvh *bvh);
 Box bvh_child_box(const BvhNode *node, int k);
 BvhRef bvh_child(const BvhNode *node, int k);
+void bvh_node_set_child(BvhNode *node, int k, Box box, BvhRef ref);
 Box bvh_prim_box(const Scene *scene, uint32_t prim);
 void bvh_prim_surface(const Scene *scene, uint32_t prim, Hit *hit);
 bool bvh_hit(const Bvh *bvh, Ray r, double tmin, double tmax, Hit *hit);

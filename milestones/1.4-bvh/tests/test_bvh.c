@@ -257,12 +257,6 @@ static Box rnd_float_box(double scale)
     return (Box){vec3(lo[0], lo[1], lo[2]), vec3(hi[0], hi[1], hi[2])};
 }
 
-/* Returns coordinate a of v. */
-static double coord(Vec3 v, int a)
-{
-    return a == 0 ? v.x : a == 1 ? v.y : v.z;
-}
-
 /* The float test of two boxes against the exact slab test in double, on rays chosen to
  * graze: origins on the boxes' planes or at no float, rays parallel to a face, aimed at
  * a corner, an edge or a face, with tmax at the box's own entry. Wherever the double test
@@ -276,11 +270,8 @@ START_TEST(float_test_is_conservative)
         double scale = scales[k % 4];
         Box box[2] = {rnd_float_box(scale), rnd_float_box(scale)};
         BvhNode node = {0};
-        for (int c = 0; c < 2; c++)
-            for (int a = 0; a < 3; a++) {
-                node.bounds[a][c] = (float)coord(box[c].lo, a);
-                node.bounds[a][2 + c] = (float)coord(box[c].hi, a);
-            }
+        for (int c = 0; c < 2; c++) /* float boxes already: stored as they are */
+            bvh_node_set_child(&node, c, box[c], (BvhRef){0, 1});
         Vec3 o = vec3_scale(rnd_point(-3, 3), scale);
         if (rnd() < 0.3) /* on a plane of the first box */
             o.x = rnd() < 0.5 ? box[0].lo.x : box[0].hi.x;
