@@ -318,15 +318,24 @@ typedef struct {
                             4 a for lo, 4 a + 2 for hi */
     Float4 origin[3];    /* the origin on axis a rounded to float; when d = 0 on that
                             axis, down in the near lanes and up in the far ones */
-    Float4 inv_dir[3];   /* 1/d on axis a, negated in the far lanes */
-    Float4 scale, slack; /* each lane is moved to lane * scale - slack: see float_ray */
+    Float4 inv_dir[3];   /* 1/d on axis a, negated in the far lanes, and times
+                            1 - epsilon in the near lanes, 1 + epsilon in the far ones */
+    Float4 slack;        /* how far the origin's rounding may move a t: see float_ray */
+    Float4 slack2;       /* twice the slack: how far enter + -leave may exceed 0 */
     float tmin;          /* the ray's tmin, rounded down */
 } FloatRay;
 /* end excerpt: bvh-float-ray */
 
-/* The relative error allowed for every t computed in float: 2^-20 covers the three
- * roundings of t and the two of the correction itself (2^-24 each), with room to spare. */
+/* The relative error allowed for every t computed in float: 2^-20 covers its three
+ * float roundings (of 1/d times 1 -+ epsilon, of face - o, of the product; 2^-24 each)
+ * and the two in double, with room to spare. */
 #define FLOAT_TEST_EPSILON 0x1p-20f
+
+/* Returns the larger of a and b, or b when either is NaN, as SSE's max does. */
+static inline float float_max(float a, float b)
+{
+    return a > b ? a : b;
+}
 
 /* Returns four floats: a, b, c and d. */
 static inline Float4 float4(float a, float b, float c, float d)
@@ -340,12 +349,13 @@ static inline Float4 float4(float a, float b, float c, float d)
 
 /* excerpt: bvh-float-ray-make */
 /* Makes ray r ready for the float test, once a ray: 1/d, the faces' order, and how far
- * a t computed in float may be from the exact one. Three roundings (of 1/d, of
- * face - o and of the product) move t by at most 3 parts in 2^24 of itself; rounding
- * the origin to float moves t by (o - o_float) / d, the slack. The test moves each
- * lane down by FLOAT_TEST_EPSILON of itself and by the slack: entries (never below
- * tmin >= 0) scale by 1 - epsilon, -exits by 1 + epsilon, which covers an exit just
- * below 0 as well once the slack is grown by 2^-16. FLT_MIN covers t so small that
+ * a t computed in float may be from the exact one. Its roundings (see
+ * FLOAT_TEST_EPSILON) move t by less than 4 parts in 2^24 of itself, which the factor
+ * 1 - epsilon in the near lanes more than undoes, and 1 + epsilon in the far lanes,
+ * negated, likewise; rounding the origin to float moves
+ * t by (o - o_float) / d, the slack. So no entry comes out later than the exact one
+ * plus the slack, and no -exit larger than the exact one plus the slack (an exit just
+ * below 0 too, once the slack is grown by 2^-16). FLT_MIN covers t so small that
  * their floats have fewer than 24 digits.
  * A zero component of d makes that slab a test of the origin alone: 1/d = +inf, the
  * near face is lo and the far one hi, and the origin is rounded down for lo and up for
@@ -371,70 +381,106 @@ static FloatRay float_ray(const Bvh *bvh, Ray r, const BoxRay *br, double tmin)
             fr.inv_dir[a] = float4(INFINITY, INFINITY, -INFINITY, -INFINITY);
             continue;
         }
-        float of = (float)o[a], inv = (float)inv_d[a];
+        float of = (float)o[a];
+        float enter = (float)(inv_d[a] * (1 - FLOAT_TEST_EPSILON));
+        float leave = (float)(inv_d[a] * (1 + FLOAT_TEST_EPSILON));
         fr.origin[a] = float4(of, of, of, of);
-        fr.inv_dir[a] = float4(inv, inv, -inv, -inv);
+        fr.inv_dir[a] = float4(enter, enter, -leave, -leave);
         double inv_abs = fabs(inv_d[a]), shift = fabs(o[a] - of) * inv_abs;
         slack = shift > slack ? shift : slack;
         safe = safe && inv_abs >= 0x1p-50 && inv_abs <= 0x1p50;
     }
     if (!safe || !(o_max <= 0x1p50)) {
-        /* Past these bounds a float could overflow or lose all its digits: every lane
-         * becomes -inf and the test meets every box, which is slow but never wrong. */
+        /* Past these bounds a float could overflow or lose all its digits: an infinite
+         * slack makes the test meet every box, which is slow but never wrong. */
         for (int a = 0; a < 3; a++)
             fr.origin[a] = fr.inv_dir[a] = float4(0, 0, 0, 0);
-        fr.scale = float4(1, 1, 1, 1);
-        fr.slack = float4(INFINITY, INFINITY, INFINITY, INFINITY);
+        fr.slack = fr.slack2 = float4(INFINITY, INFINITY, INFINITY, INFINITY);
         return fr;
     }
-    const float e = FLOAT_TEST_EPSILON;
-    fr.scale = float4(1 - e, 1 - e, 1 + e, 1 + e);
     float s = float_above(slack * (1 + 0x1p-16) + FLT_MIN);
     fr.slack = float4(s, s, s, s);
+    fr.slack2 = float4(2 * s, 2 * s, 2 * s, 2 * s);
     return fr;
 }
 /* end excerpt: bvh-float-ray-make */
 
 /* excerpt: bvh-node-hit */
-/* Tests both children's boxes of node against the float ray fr with [tmin, tmax]:
- * returns bit k set when the ray may meet child k's box, with entry[k] no greater than
- * where it enters. Conservative: it may meet a box the ray misses, never the reverse.
- * The lanes hold [enter 0, enter 1, -leave 0, -leave 1]: each slab's t, then the max
- * over the three axes and [tmin, tmax]. A lane that is NaN, (lo - o) * inf for a ray
- * parallel to a slab that starts on its plane, is left out by the max (SSE's max gives
- * its second operand when either is NaN, as the C fallback's ?: does). */
-static inline int node_hit(const BvhNode *node, const FloatRay *fr, float tmax, float entry[2])
+/* Returns the four lanes' t where the float ray fr meets a node's planes on axis a:
+ * child 0's and child 1's near face, then their far faces, negated. */
+static inline Float4 slab_lanes(const float *bounds, const FloatRay *fr, int a)
+{
+#ifdef BVH_SSE2
+    __m128 faces = _mm_loadl_pi(_mm_setzero_ps(), (const __m64 *)(bounds + fr->near[a]));
+    faces = _mm_loadh_pi(faces, (const __m64 *)(bounds + fr->far[a]));
+    return _mm_mul_ps(_mm_sub_ps(faces, fr->origin[a]), fr->inv_dir[a]);
+#else
+    Float4 t;
+    for (int k = 0; k < 4; k++) {
+        float face = bounds[(k < 2 ? fr->near[a] : fr->far[a]) + k % 2];
+        t.v[k] = (face - fr->origin[a].v[k]) * fr->inv_dir[a].v[k];
+    }
+    return t;
+#endif
+}
+
+/* Returns the larger of a and b in each lane, or b's lane where a's is NaN. */
+static inline Float4 float4_max(Float4 a, Float4 b)
+{
+#ifdef BVH_SSE2
+    return _mm_max_ps(a, b);
+#else
+    for (int k = 0; k < 4; k++)
+        a.v[k] = float_max(a.v[k], b.v[k]);
+    return a;
+#endif
+}
+
+/* Tests both children's boxes of node against the float ray fr, whose limits are
+ * [tmin, tmin, -tmax, -tmax]: returns bit k set when the ray may meet child k's box.
+ * Conservative: it may meet a box the ray misses, never the reverse. *lanes gets
+ * [enter 0, enter 1, -leave 0, -leave 1], the max of the three slabs' lanes and the
+ * limits, taken as a tree so that the two first maxes run side by side. Each lane may
+ * be off by the slack (see float_ray), so child k is met when enter k - leave k is at
+ * most twice the slack. A NaN lane, (lo - o) * inf for a ray parallel to a slab that
+ * starts on its plane, is left out: the max gives its second operand when either is
+ * NaN, so x's NaN drops x and y, y's drops both too, and z's drops z, never the
+ * limits; dropping a slab only meets more boxes. */
+static inline int node_hit(const BvhNode *node, const FloatRay *fr, Float4 limits, Float4 *lanes)
 {
     const float *bounds = &node->bounds[0][0];
+    Float4 x = slab_lanes(bounds, fr, 0), y = slab_lanes(bounds, fr, 1);
+    Float4 z = slab_lanes(bounds, fr, 2);
+    Float4 u = float4_max(float4_max(x, y), float4_max(z, limits));
+    *lanes = u;
 #ifdef BVH_SSE2
-    __m128 u = _mm_setr_ps(fr->tmin, fr->tmin, -tmax, -tmax);
-    for (int a = 0; a < 3; a++) {
-        __m128 faces = _mm_loadl_pi(_mm_setzero_ps(), (const __m64 *)(bounds + fr->near[a]));
-        faces = _mm_loadh_pi(faces, (const __m64 *)(bounds + fr->far[a]));
-        __m128 t = _mm_mul_ps(_mm_sub_ps(faces, fr->origin[a]), fr->inv_dir[a]);
-        u = _mm_max_ps(t, u);
-    }
-    /* Rounding: every lane moves down by its error bound, so that no entry is later and
-     * no exit earlier than in exact arithmetic; then enter k <= leave k, as a sum <= 0. */
-    u = _mm_sub_ps(_mm_mul_ps(u, fr->scale), fr->slack);
     __m128 sum = _mm_add_ps(u, _mm_shuffle_ps(u, u, _MM_SHUFFLE(1, 0, 3, 2)));
-    entry[0] = _mm_cvtss_f32(u);
-    entry[1] = _mm_cvtss_f32(_mm_shuffle_ps(u, u, _MM_SHUFFLE(1, 1, 1, 1)));
-    return _mm_movemask_ps(_mm_cmple_ps(sum, _mm_setzero_ps())) & 3;
+    return _mm_movemask_ps(_mm_cmple_ps(sum, fr->slack2)) & 3;
 #else
-    float u[4] = {fr->tmin, fr->tmin, -tmax, -tmax};
-    for (int a = 0; a < 3; a++)
-        for (int k = 0; k < 4; k++) {
-            float face = bounds[(k < 2 ? fr->near[a] : fr->far[a]) + k % 2];
-            float t = (face - fr->origin[a].v[k]) * fr->inv_dir[a].v[k];
-            u[k] = t > u[k] ? t : u[k];
-        }
-    for (int k = 0; k < 4; k++)
-        u[k] = u[k] * fr->scale.v[k] - fr->slack.v[k];
-    entry[0] = u[0];
-    entry[1] = u[1];
-    return (u[0] + u[2] <= 0) | (u[1] + u[3] <= 0) << 1;
+    float s2 = fr->slack2.v[0];
+    return (u.v[0] + u.v[2] <= s2) | (u.v[1] + u.v[3] <= s2) << 1;
 #endif
+}
+
+/* Sets entry[k] to where the ray may enter child k, no later than it does, from the
+ * lanes node_hit left: the traversal needs it only when both children are met. */
+static inline void node_entries(const FloatRay *fr, Float4 lanes, float entry[2])
+{
+#ifdef BVH_SSE2
+    __m128 e = _mm_sub_ps(lanes, fr->slack);
+    entry[0] = _mm_cvtss_f32(e);
+    entry[1] = _mm_cvtss_f32(_mm_shuffle_ps(e, e, _MM_SHUFFLE(1, 1, 1, 1)));
+#else
+    entry[0] = lanes.v[0] - fr->slack.v[0];
+    entry[1] = lanes.v[1] - fr->slack.v[1];
+#endif
+}
+
+/* Returns the limits of the float ray fr for the interval [fr's tmin, tmax]. */
+static inline Float4 float_limits(const FloatRay *fr, double tmax)
+{
+    float t = float_above(tmax);
+    return float4(fr->tmin, fr->tmin, -t, -t);
 }
 /* end excerpt: bvh-node-hit */
 
@@ -444,8 +490,8 @@ int bvh_children_hit(const Bvh *bvh, const BvhNode *node, Ray r, double tmin, do
 {
     BoxRay br = box_ray(r);
     FloatRay fr = float_ray(bvh, r, &br, tmin);
-    float entry[2];
-    return node_hit(node, &fr, float_above(tmax), entry);
+    Float4 lanes;
+    return node_hit(node, &fr, float_limits(&fr, tmax), &lanes);
 }
 
 /* What a leaf does with a ray: tests its primitives, keeping what it needs in state,
@@ -479,7 +525,7 @@ static ALWAYS_INLINE bool traverse(const Bvh *bvh, Ray r, double tmin, double *t
         return false;
     FloatRay fr = float_ray(bvh, r, &br, tmin);
     bool negative[3] = {signbit(r.dir.x), signbit(r.dir.y), signbit(r.dir.z)};
-    float tmax_float = float_above(*tmax);
+    Float4 limits = float_limits(&fr, *tmax);
     Pending stack[BVH_MAX_DEPTH];
     int top = 0;
     uint32_t index = bvh->root.index, count = bvh->root.count; /* the subtree at hand */
@@ -487,7 +533,7 @@ static ALWAYS_INLINE bool traverse(const Bvh *bvh, Ray r, double tmin, double *t
         if (count > 0) {
             if (leaf(bvh, (BvhRef){index, count}, r, tmin, tmax, state))
                 return true;
-            tmax_float = float_above(*tmax);
+            limits = float_limits(&fr, *tmax);
         } else {
             /* Both children's boxes are tested; the ray goes on into the nearer one
              * and the other waits on the stack. When the ray starts inside both (the
@@ -496,11 +542,13 @@ static ALWAYS_INLINE bool traverse(const Bvh *bvh, Ray r, double tmin, double *t
              * processor guesses the next node and loads it while the test is still
              * running, where an index computed from the test's bits would wait for it. */
             const BvhNode *node = &bvh->nodes[index];
-            float entry[2];
-            int hits = node_hit(node, &fr, tmax_float, entry);
+            Float4 lanes;
+            int hits = node_hit(node, &fr, limits, &lanes);
             if (box_tests != NULL) /* only for --view box-tests; inlined away elsewhere */
                 *box_tests += 2;
             if (hits == 3) {
+                float entry[2];
+                node_entries(&fr, lanes, entry);
                 if (entry[0] < entry[1] || (entry[0] == entry[1] && !negative[node->axis])) {
                     stack[top++] = (Pending){node->index[1], node->count[1], entry[1]};
                     index = node->index[0];
