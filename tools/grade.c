@@ -82,33 +82,31 @@ bool grade_fail(const char *fmt, ...)
 
 /* Sets the field of the Grading `state` that option k sets from its value: seconds are a
  * number from 0; a memory limit is bytes, or a number followed by K, M or G (2^10, 2^20,
- * 2^30), 0 or at least 1 MiB (less is surely a slip). False (reported) when the value is
- * not a valid one. */
+ * 2^30), 0 or at least 1 MiB (less is surely a slip). False (reported) for a bad value. */
 static bool set_option(void *state, int k, const char *value)
 {
     static const char units[] = "KkMmGg";
     const GradeOption *o = &options[k];
     void *field = (char *)state + o->field;
-    if (o->kind == OPT_FLAG || o->kind == OPT_TEXT) {
-        if (o->kind == OPT_FLAG)
-            *(bool *)field = true;
-        else
-            *(const char **)field = value;
-        return true;
-    }
-    char *end;
-    double v = strtod(value, &end);
+    char *end = (char *)value; /* flags have no value */
+    double v = o->kind >= OPT_SECONDS ? strtod(value, &end) : 0;
     const char *unit = o->kind == OPT_BYTES && end != value && *end != '\0' ? strchr(units, *end)
                                                                              : NULL;
-    v = unit != NULL ? ldexp(v, 10 * (int)((unit - units) / 2 + 1)) : v;
-    end += unit != NULL;
-    if (end == value || *end != '\0' || !isfinite(v) || v < 0 ||
-        (o->kind == OPT_BYTES && (v > 1e18 || (v > 0 && v < 1 << 20))))
+    if (unit != NULL) {
+        v = ldexp(v, 10 * (int)((unit - units) / 2 + 1));
+        end++;
+    }
+    if (o->kind == OPT_FLAG)
+        *(bool *)field = true;
+    else if (o->kind == OPT_TEXT)
+        *(const char **)field = value;
+    else if (end == value || *end != '\0' || !isfinite(v) || v < 0 ||
+             (o->kind == OPT_BYTES && (v > 1e18 || (v > 0 && v < 1 << 20))))
         return grade_fail("--%s takes %s, got '%s'", o->o.name,
                           o->kind == OPT_SECONDS ? "a number of seconds, or 0"
                                                  : "a size such as 512M or 2G, or 0",
                           value);
-    if (o->kind == OPT_SECONDS)
+    else if (o->kind == OPT_SECONDS)
         *(double *)field = v;
     else
         *(long long *)field = (long long)v;
@@ -168,36 +166,23 @@ bool grade_make_folder(const char *path)
            grade_fail("cannot make the folder %s: %s", path, strerror(errno));
 }
 
-/* Tells whether a folder's entry is not hidden, for scandir. */
-static int visible(const struct dirent *e)
-{
-    return e->d_name[0] != '.';
-}
-
 /* Returns the names of the folders in `folder`, hidden ones left out, in strcmp's order;
  * sets *count. NULL (and errno) when the folder cannot be read. */
 char **grade_list_folders(const char *folder, int *count)
 {
     struct dirent **entries;
-    int n = scandir(folder, &entries, visible, alphasort);
-    if (n < 0)
-        return NULL;
-    char **names = grade_alloc(((size_t)n + 1) * sizeof *names);
+    int n = scandir(folder, &entries, NULL, alphasort);
+    char **names = n >= 0 ? grade_alloc(((size_t)n + 1) * sizeof *names) : NULL;
     *count = 0;
     for (int k = 0; k < n; k++) {
-        if (grade_kind(grade_format("%s/%s", folder, entries[k]->d_name)) == S_IFDIR)
-            names[(*count)++] = grade_format("%s", entries[k]->d_name);
+        const char *name = entries[k]->d_name;
+        if (name[0] != '.' && grade_kind(grade_format("%s/%s", folder, name)) == S_IFDIR)
+            names[(*count)++] = grade_format("%s", name);
         free(entries[k]);
     }
-    free(entries);
+    if (n >= 0)
+        free(entries);
     return names;
-}
-
-/* Runs a command of the grader's own, with no limit but time; true when it succeeds. */
-static bool run_quietly(char **argv, const char *log)
-{
-    RunResult r = run_program(argv, NULL, log, 600, 0);
-    return r.end == RUN_EXITED && r.status == 0;
 }
 
 /* Makes OUT, and OUT/work anew as an absolute path (students' programs run elsewhere),
@@ -215,11 +200,12 @@ static bool prepare_work(Grading *g)
         return grade_fail("%s exists and was not made by grade: choose another --out", g->work);
     /* chmod first: a student's build may have left folders read-only. */
     char *anew[] = {"sh", "-c",
-                    "chmod -R u+rwX -- \"$1\"; rm -rf -- \"$1\" && mkdir -- \"$1\" \"$1/references\""
-                    " && echo \"grade's work folder: each run of grade with this --out removes it"
-                    " and makes it anew.\" >\"$1/.made-by-grade\"",
+                    "chmod -R u+rwX -- \"$1\"; rm -rf -- \"$1\" && mkdir -- \"$1\" "
+                    "\"$1/references\" && echo \"grade's work folder: each run of grade with this "
+                    "--out removes it and makes it anew.\" >\"$1/.made-by-grade\"",
                     "sh", g->work, NULL};
-    return run_quietly(anew, NULL) || grade_fail("cannot make the work folder %s anew", g->work);
+    return run_program(anew, NULL, NULL, 600, 0).ok ||
+           grade_fail("cannot make the work folder %s anew", g->work);
 }
 
 /* Has imgdiff compare each reference image with itself, with the tolerances, before any
@@ -234,7 +220,7 @@ static bool show_references(Grading *g)
         char *argv[] = {g->imgdiff, "-q", "--threshold", (char *)g->threshold, "--allow",
                         (char *)g->allow, "--thumb", r->reference_show, "--", r->reference,
                         r->reference, NULL};
-        if (!run_quietly(argv, log)) {
+        if (!run_program(argv, NULL, log, 600, 0).ok) {
             char *said = run_log_tail(log);
             return !stop_requested() && grade_fail("%s", said ? said : "imgdiff could not run");
         }
@@ -303,6 +289,7 @@ int main(int argc, char **argv)
         return EXIT_TROUBLE;
     }
     g.submissions = argv[optind + 1];
+    g.progress = g.quiet ? fopen("/dev/null", "w") : stderr;
     run_init();
     int status = grade(&g, argv[optind]);
     if (!stop_requested())

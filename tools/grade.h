@@ -93,17 +93,19 @@ typedef struct {
     double build_time_limit; /* seconds for make */
     long long memory_limit;  /* bytes of address space; 0: none */
     bool quiet, self, help;  /* self: submissions is one student's folder */
+    FILE *progress;          /* where progress lines and notes go: stderr, or with quiet none */
     char started[32];        /* when grading began, for the report */
 } Grading;
 
 /* How a child ended: status is the exit status (RUN_EXITED), the signal (RUN_KILLED) or the
- * errno (RUN_NOT_RUN: fork failed). */
+ * errno (RUN_NOT_RUN: fork failed); ok when it exited with status 0. */
 typedef enum { RUN_EXITED, RUN_KILLED, RUN_TIMED_OUT, RUN_NOT_RUN, RUN_INTERRUPTED } RunEnd;
 
 typedef struct {
     RunEnd end;
     int status;
     double seconds;
+    bool ok;
 } RunResult;
 
 /* The memory limit of imgdiff, which reads students' files: none under AddressSanitizer,

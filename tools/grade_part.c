@@ -44,8 +44,8 @@ static const CliOption *option_of(const char *word)
 /* Makes r->argv, a student's command line, of the scene's path and the words of its
  * renders.txt line (words[0..n)) that students' programs get: the positional words, and
  * the value of an option the course gives as a positional argument (1.4's MODE); raytra's
- * own options are left out, with a note. */
-static void make_argv(Render *r, char *scene_path, char **words, int n, int part, bool quiet)
+ * own options are left out, with a note on `notes`. */
+static void make_argv(Render *r, char *scene_path, char **words, int n, int part, FILE *notes)
 {
     r->argv = grade_alloc(((size_t)n + 4) * sizeof *r->argv);
     r->argv[1] = scene_path;
@@ -59,10 +59,9 @@ static void make_argv(Render *r, char *scene_path, char **words, int n, int part
             r->argv[kept++] = grade_format("%s", words[k]);
         else if (o != NULL && o->argument != NULL && value != NULL && cli_option_accepted(o, part))
             r->argv[kept++] = grade_format("%s", value);
-        else if (!quiet)
-            fprintf(stderr,
-                    "grade: note: %s: raytra's option %s%s%s is not given to students' "
-                    "programs\n",
+        else
+            fprintf(notes, "grade: note: %s: raytra's option %s%s%s is not given to students' "
+                           "programs\n",
                     r->image, words[k], next ? " " : "", next ? words[k + 1] : "");
         k += next;
     }
@@ -89,7 +88,7 @@ static bool add_render(Grading *g, const char *top, char **words, int n, const c
     r->name = grade_format("%.*s", stem, image);
     r->reference = grade_format("%s/%s", g->references, image);
     char *scene_path = words[1][0] == '/' ? r->scene : grade_format("%s/%s", top, words[1]);
-    make_argv(r, scene_path, words + 2, n - 2, cli_part_number(g->part), g->quiet);
+    make_argv(r, scene_path, words + 2, n - 2, cli_part_number(g->part), g->progress);
     if (grade_kind(scene_path) != S_IFREG)
         return grade_fail("%s: no scene file %s", where, scene_path);
     return grade_kind(r->reference) == S_IFREG ||

@@ -1,4 +1,4 @@
-/* grade_report.c: report.html, one self-contained page, and grades.csv, each written whole; --self's lines. */
+/* grade_report.c: report.html, one self-contained page, and grades.csv, written whole; --self's lines. */
 #include "grade.h"
 
 #include <math.h>
@@ -328,8 +328,7 @@ bool report_write(const Grading *g)
     char *page = grade_format("%s/report.html", g->out);
     if (!write_whole(csv, g, write_csv) || !write_whole(page, g, write_html))
         return false;
-    if (!g->quiet)
-        fprintf(stderr, "grade: wrote %s and %s\n", page, csv);
+    fprintf(g->progress, "grade: wrote %s and %s\n", page, csv);
     return true;
 }
 

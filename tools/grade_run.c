@@ -57,18 +57,6 @@ static void wait_for_signal(double seconds)
     sigtimedwait(&child, NULL, &t);
 }
 
-/* Sets a resource limit, soft and hard, so that the child cannot raise it again; a lower
- * hard limit already set stays, as only root may raise one. */
-static void set_limit(int resource, long long value)
-{
-    struct rlimit r;
-    rlim_t v = (rlim_t)value;
-    if (getrlimit(resource, &r) != 0)
-        return;
-    r.rlim_cur = r.rlim_max = r.rlim_max != RLIM_INFINITY && v > r.rlim_max ? r.rlim_max : v;
-    setrlimit(resource, &r);
-}
-
 /* Prepares a new child: its own process group, stdin from /dev/null, output to the log
  * (NULL: /dev/null), no other descriptor, the limits, the folder (NULL: the grader's);
  * exits with EXEC_FAILED (why, in the log) when it cannot. The signals the grader catches
@@ -100,10 +88,12 @@ static void child_setup(const char *dir, const char *log, long long memory_limit
             close(atoi(e->d_name));
     if (fds == NULL || closedir(fds) != 0)
         _exit(EXEC_FAILED);
-    set_limit(RLIMIT_CORE, 0);
-    set_limit(RLIMIT_FSIZE, FILE_LIMIT);
+    /* Soft and hard, so that the child cannot raise them again; should the grader's own hard
+     * limit be lower, setrlimit fails and that one stays. */
+    setrlimit(RLIMIT_CORE, &(struct rlimit){0, 0});
+    setrlimit(RLIMIT_FSIZE, &(struct rlimit){FILE_LIMIT, FILE_LIMIT});
     if (memory_limit > 0)
-        set_limit(RLIMIT_AS, memory_limit);
+        setrlimit(RLIMIT_AS, &(struct rlimit){(rlim_t)memory_limit, (rlim_t)memory_limit});
     /* make hands its flags and jobserver to sub-makes through these: a student's make is
      * not a sub-make of the one that may be running the grader. */
     static const char *const make_vars[] = {"MAKEFLAGS", "MFLAGS",    "GNUMAKEFLAGS",
@@ -193,10 +183,11 @@ RunResult run_program(char *const argv[], const char *dir, const char *log, doub
     int status = 0;
     while (waitpid(pid, &status, 0) < 0 && errno == EINTR)
         continue;
-    if (r.end == RUN_EXITED && WIFSIGNALED(status))
-        r = (RunResult){RUN_KILLED, WTERMSIG(status), r.seconds};
-    else if (r.end == RUN_EXITED)
-        r.status = WEXITSTATUS(status);
+    if (r.end == RUN_EXITED) {
+        r.end = WIFSIGNALED(status) ? RUN_KILLED : RUN_EXITED;
+        r.status = WIFSIGNALED(status) ? WTERMSIG(status) : WEXITSTATUS(status);
+    }
+    r.ok = r.end == RUN_EXITED && r.status == 0;
     end_stragglers();
     return r;
 }

@@ -1,4 +1,4 @@
-/* grade_submission.c: the class's submissions: listed, built and run or their images found, judged through imgdiff. */
+/* grade_submission.c: the class's submissions, listed, built and run or read, judged by imgdiff. */
 #include "grade.h"
 
 #include <ctype.h>
@@ -135,13 +135,13 @@ static char *build(const Grading *g, Submission *s)
     char *cp[] = {"cp", "-R", "-P", "--", grade_format("%s/.", s->path), copy, NULL};
     char *make[] = {"make", NULL};
     RunResult r = run_program(cp, NULL, log, 600, 0);
-    if (r.end != RUN_EXITED || r.status != 0)
+    if (!r.ok)
         s->build_message = grade_format("the submission could not be copied to build it (cp: %s)",
                                         run_describe(&r));
     else if ((r = run_program(make, copy, log, g->build_time_limit, g->memory_limit)).end ==
              RUN_TIMED_OUT)
         s->build_message = grade_format("make did not finish within %g s", g->build_time_limit);
-    else if (r.end != RUN_EXITED || r.status != 0)
+    else if (!r.ok)
         s->build_message = grade_format("make failed (%s)", run_describe(&r));
     else if (grade_kind(program) != S_IFREG || access(program, X_OK) != 0)
         s->build_message = "make succeeded but made no executable raytra beside the Makefile";
@@ -232,14 +232,14 @@ static bool grade_one(const Grading *g, Submission *s)
     return ok && !stop_requested();
 }
 
-/* Prints how the scenes of s went: "5 scenes: 4 pass, 1 timeout". */
-static void print_tally(const Grading *g, const Submission *s)
+/* Prints how the scenes of s went: "5 scenes: 4 pass, 1 timeout", or why it did not build. */
+static void print_tally(FILE *f, const Grading *g, const Submission *s)
 {
     if (s->build_message != NULL) {
-        fprintf(stderr, "BUILD FAILED: %s\n", s->build_message);
+        fprintf(f, "BUILD FAILED: %s\n", s->build_message);
         return;
     }
-    fprintf(stderr, "%d scene%s:", g->render_count, g->render_count == 1 ? "" : "s");
+    fprintf(f, "%d scene%s:", g->render_count, g->render_count == 1 ? "" : "s");
     const char *sep = " ";
     for (int v = 0; v < VERDICT_COUNT; v++) {
         int count = 0;
@@ -247,40 +247,35 @@ static void print_tally(const Grading *g, const Submission *s)
             count += s->results[k].verdict == (Verdict)v;
         if (count == 0)
             continue;
-        fprintf(stderr, "%s%d ", sep, count);
+        fprintf(f, "%s%d ", sep, count);
         for (const char *p = verdict_info[v].name; *p != '\0'; p++)
-            fputc(tolower((unsigned char)*p), stderr);
+            fputc(tolower((unsigned char)*p), f);
         sep = ", ";
     }
-    fputc('\n', stderr);
+    fputc('\n', f);
 }
 
-/* Grades every submission, telling the progress unless g->quiet; false when interrupted
- * or when the grader itself failed (reported). */
+/* Grades every submission, telling the progress on g->progress; false when interrupted or
+ * when the grader itself failed (reported). */
 bool submission_grade_all(Grading *g)
 {
-    if (!g->quiet)
-        fprintf(stderr, "grade: part %s, %d scene%s, %d submission%s\n", g->part, g->render_count,
-                g->render_count == 1 ? "" : "s", g->sub_count, g->sub_count == 1 ? "" : "s");
-    if (!g->quiet && g->illustrations != NULL)
-        fprintf(stderr, "grade: not graded (illustrations): %s\n", g->illustrations);
+    FILE *f = g->progress;
+    fprintf(f, "grade: part %s, %d scene%s, %d submission%s\n", g->part, g->render_count,
+            g->render_count == 1 ? "" : "s", g->sub_count, g->sub_count == 1 ? "" : "s");
+    if (g->illustrations != NULL)
+        fprintf(f, "grade: not graded (illustrations): %s\n", g->illustrations);
     for (int k = 0; k < g->sub_count; k++) {
         Submission *s = &g->subs[k];
-        if (!g->quiet) {
-            /* Control characters made '?': a folder's name cannot play tricks on the terminal. */
-            fprintf(stderr, "grading ");
-            for (const char *p = s->name; *p != '\0'; p++)
-                fputc((unsigned char)*p < 0x20 || *p == 0x7F ? '?' : *p, stderr);
-            fprintf(stderr, " (%s): %s", s->program ? "program" : "images",
-                    s->program ? "building... " : "");
-        }
-        bool ok = grade_one(g, s);
-        if (!g->quiet && ok)
-            print_tally(g, s);
-        else if (!g->quiet)
-            fputc('\n', stderr);
-        if (!ok)
+        /* Control characters made '?': a folder's name cannot play tricks on the terminal. */
+        fprintf(f, "grading ");
+        for (const char *p = s->name; *p != '\0'; p++)
+            fputc((unsigned char)*p < 0x20 || *p == 0x7F ? '?' : *p, f);
+        fprintf(f, " (%s): %s", s->program ? "program" : "images", s->program ? "building... " : "");
+        if (!grade_one(g, s)) {
+            fputc('\n', f);
             return false;
+        }
+        print_tally(f, g, s);
     }
     return true;
 }
