@@ -67,8 +67,7 @@ static void print_help(void)
            "grading could not be done; 130 when interrupted. See docs/grading.md.\n");
 }
 
-/* Prints "grade: " and a message made as printf makes it on stderr; returns false, for the
- * caller to return or to end a chain of && with. */
+/* Prints "grade: " and a message made as printf makes it; returns false, to end a chain. */
 bool grade_fail(const char *fmt, ...)
 {
     va_list ap;
@@ -113,9 +112,8 @@ static bool set_option(void *state, int k, const char *value)
     return true;
 }
 
-/* Returns zeroed memory that lasts until the exit: the grader frees nothing, as what it
- * gathers serves the report; every block begins with the one made before it, so that all
- * stay reachable. Ends the grader when there is no memory, as it cannot go on. */
+/* Returns zeroed memory that lasts until the exit (what the grader gathers serves the
+ * report), each block chained to the one before so that all stay reachable; exits on none. */
 void *grade_alloc(size_t size)
 {
     static void *last;
@@ -158,8 +156,7 @@ int grade_kind(const char *path)
     return stat(path, &st) == 0 ? (int)(st.st_mode & S_IFMT) : 0;
 }
 
-/* Makes the folder path, which must not be there yet (a link a student's program left is
- * refused); false (reported) when it cannot. */
+/* Makes the folder path, refusing anything already there (a link a student left). */
 bool grade_make_folder(const char *path)
 {
     return mkdir(path, 0777) == 0 ||
@@ -185,12 +182,12 @@ char **grade_list_folders(const char *folder, int *count)
     return names;
 }
 
-/* Makes OUT, and OUT/work anew as an absolute path (students' programs run elsewhere),
- * removing only a work folder that holds the mark an earlier run wrote; false (reported)
- * on trouble. */
+/* Makes OUT (grading-PART by default) and OUT/work anew, an absolute path as students'
+ * programs run elsewhere, removing only a work folder that an earlier run marked. */
 static bool prepare_work(Grading *g)
 {
     char real[PATH_MAX];
+    g->out = g->out != NULL ? g->out : grade_format("grading-%s", g->part);
     if (grade_kind(g->out) != S_IFDIR && !grade_make_folder(g->out))
         return false;
     if (realpath(g->out, real) == NULL)
@@ -208,9 +205,8 @@ static bool prepare_work(Grading *g)
            grade_fail("cannot make the work folder %s anew", g->work);
 }
 
-/* Has imgdiff compare each reference image with itself, with the tolerances, before any
- * work: so it takes them, reads the image, and makes its thumbnail for the report. False
- * (reported, in imgdiff's words) when it cannot. */
+/* Has imgdiff compare each reference with itself before any work, which checks both the
+ * image and the tolerances and makes the report's thumbnail; false (reported) on trouble. */
 static bool show_references(Grading *g)
 {
     for (int k = 0; k < g->render_count; k++) {
@@ -228,49 +224,25 @@ static bool show_references(Grading *g)
     return true;
 }
 
-/* Returns the top of the repository, two folders above the grader's program
- * (tools/build/grade), whose imgdiff it takes; NULL (reported) when it is not there. */
-static char *find_top(Grading *g)
+/* Finds the top of the repository, g->top, two folders above the grader's program
+ * (tools/build/grade), and imgdiff beside the grader; false (reported) when it is not there. */
+static bool find_top(Grading *g)
 {
     char exe[PATH_MAX] = "", real[PATH_MAX];
     if (realpath("/proc/self/exe", exe) != NULL)
         *strrchr(exe, '/') = '\0';
     g->imgdiff = grade_format("%s/imgdiff", exe);
-    if (realpath(grade_format("%s/../../milestones", exe), real) != NULL &&
-        grade_kind(real) == S_IFDIR)
-        return grade_format("%.*s", (int)(strrchr(real, '/') - real), real);
-    grade_fail("cannot find the raytra repository: the grader must stay in tools/build/ of "
-               "its checkout");
-    return NULL;
+    if (realpath(grade_format("%s/../../milestones", exe), real) == NULL ||
+        grade_kind(real) != S_IFDIR)
+        return grade_fail("cannot find the raytra repository: the grader must stay in "
+                          "tools/build/ of its checkout");
+    g->top = grade_format("%.*s", (int)(strrchr(real, '/') - real), real);
+    return access(g->imgdiff, X_OK) == 0 ||
+           grade_fail("no imgdiff at %s (make -C tools builds it)", g->imgdiff);
 }
 
-/* Does all the grading but reading the command line, for part `part`; returns the exit
- * status: 0 when the report was written (with --self, 1 when a scene failed), 2 when it
- * could not be. */
-static int grade(Grading *g, const char *part)
-{
-    char *top = find_top(g);
-    char *part_dir = top != NULL ? part_find(top, part) : NULL;
-    if (part_dir == NULL)
-        return EXIT_TROUBLE;
-    g->part = strrchr(part_dir, '/') + 1;
-    g->references = grade_format("%s/references", part_dir);
-    g->out = g->out != NULL ? g->out : grade_format("grading-%s", g->part);
-    time_t now = time(NULL);
-    strftime(g->started, sizeof g->started, "%Y-%m-%d %H:%M", localtime(&now));
-    bool ok = (access(g->imgdiff, X_OK) == 0 ||
-               grade_fail("no imgdiff at %s (make -C tools builds it)", g->imgdiff)) &&
-              (grade_kind(g->submissions) == S_IFDIR ||
-               grade_fail("no folder %s", g->submissions)) &&
-              part_read_renders(g, top) && prepare_work(g) && show_references(g) &&
-              submission_list(g) && submission_grade_all(g) && report_write(g);
-    if (!ok)
-        return EXIT_TROUBLE;
-    return g->self ? report_print_self(g) : EXIT_REPORTED;
-}
-
-/* Runs the grader: exit status 0 when the report was written, 2 when it could not be,
- * 130 when interrupted. Options may follow the words (getopt_long). */
+/* Runs the grader: exit status 0 when the report was written (with --self, 1 when a scene
+ * did not pass), 2 when it could not be, 130 when interrupted. */
 int main(int argc, char **argv)
 {
     static Grading g;
@@ -290,10 +262,19 @@ int main(int argc, char **argv)
     }
     g.submissions = argv[optind + 1];
     g.progress = g.quiet ? fopen("/dev/null", "w") : stderr;
+    time_t now = time(NULL);
+    strftime(g.started, sizeof g.started, "%Y-%m-%d %H:%M", localtime(&now));
     run_init();
-    int status = grade(&g, argv[optind]);
-    if (!stop_requested())
-        return status;
-    fprintf(stderr, "grade: interrupted: no report written\n");
-    return EXIT_INTERRUPTED;
+    bool ok = find_top(&g) && part_find(&g, argv[optind]) &&
+              (grade_kind(g.submissions) == S_IFDIR ||
+               grade_fail("no folder %s", g.submissions)) &&
+              part_read_renders(&g) && prepare_work(&g) && show_references(&g) &&
+              submission_list(&g) && submission_grade_all(&g) && report_write(&g);
+    if (stop_requested()) {
+        fprintf(stderr, "grade: interrupted: no report written\n");
+        return EXIT_INTERRUPTED;
+    }
+    if (!ok)
+        return EXIT_TROUBLE;
+    return g.self ? report_print_self(&g) : EXIT_REPORTED;
 }

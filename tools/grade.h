@@ -76,6 +76,7 @@ typedef struct {
 
 /* Everything a grading run knows: what was asked, what was found, what came out. */
 typedef struct {
+    char *top;        /* the repository's top folder */
     const char *part; /* the part's folder name: 1.1-spheres-red */
     char *references; /* its references folder */
     Render *renders;
@@ -126,8 +127,8 @@ bool grade_make_folder(const char *path);
 char **grade_list_folders(const char *folder, int *count);
 
 /* grade_part.c */
-char *part_find(const char *top, const char *part);
-bool part_read_renders(Grading *g, const char *top);
+bool part_find(Grading *g, const char *part);
+bool part_read_renders(Grading *g);
 
 /* grade_submission.c */
 bool submission_list(Grading *g);

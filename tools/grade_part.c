@@ -9,24 +9,28 @@
 #include "array.h"
 #include "cli.h"
 
-/* Returns the folder of part `part`, NULL (reported) when there is none: a path, or the
- * folder of milestones/ named so or whose name starts with "PART-" (the first, in the
- * order of their names, so that an exact name wins). */
-char *part_find(const char *top, const char *part)
+/* Finds the folder of part `part`, g->part, and its references: a path, or the folder of
+ * milestones/ named so or whose name starts with "PART-" (the first in the order of their
+ * names, so that an exact name wins); false (reported) when there is none. */
+bool part_find(Grading *g, const char *part)
 {
-    char real[PATH_MAX], *milestones = grade_format("%s/milestones", top), *all = "";
+    char real[PATH_MAX], *milestones = grade_format("%s/milestones", g->top), *all = "";
+    char *found = NULL;
     if (strchr(part, '/') != NULL && realpath(part, real) != NULL && grade_kind(real) == S_IFDIR)
-        return grade_format("%s", real);
+        found = grade_format("%s", real);
     int count = 0;
     char **names = grade_list_folders(milestones, &count);
     size_t len = strlen(part);
-    for (int k = 0; k < count; k++) {
+    for (int k = 0; found == NULL && k < count; k++) {
         if (strncmp(names[k], part, len) == 0 && (names[k][len] == '\0' || names[k][len] == '-'))
-            return grade_format("%s/%s", milestones, names[k]);
+            found = grade_format("%s/%s", milestones, names[k]);
         all = grade_format("%s %s", all, names[k]);
     }
-    grade_fail("no part '%s' in %s; the parts are:%s", part, milestones, all);
-    return NULL;
+    if (found == NULL)
+        return grade_fail("no part '%s' in %s; the parts are:%s", part, milestones, all);
+    g->part = strrchr(found, '/') + 1;
+    g->references = grade_format("%s/references", found);
+    return true;
 }
 
 /* Returns raytra's option that `word` names (--name, --name=VALUE or -L), from the one
@@ -70,7 +74,7 @@ static void make_argv(Render *r, char *scene_path, char **words, int n, int part
 /* Adds the render of a renders.txt line (its words) to g, or its name to the illustrations
  * (marked '!': raytra's own pictures, graded on no student); false (reported) when the line
  * is not a valid one or names a file that is not there. */
-static bool add_render(Grading *g, const char *top, char **words, int n, const char *where)
+static bool add_render(Grading *g, char **words, int n, const char *where)
 {
     const char *image = words[0], *dot = strrchr(image, '.');
     int stem = dot != NULL ? (int)(dot - image) : (int)strlen(image);
@@ -87,7 +91,7 @@ static bool add_render(Grading *g, const char *top, char **words, int n, const c
     *r = (Render){.image = grade_format("%s", image), .scene = grade_format("%s", words[1])};
     r->name = grade_format("%.*s", stem, image);
     r->reference = grade_format("%s/%s", g->references, image);
-    char *scene_path = words[1][0] == '/' ? r->scene : grade_format("%s/%s", top, words[1]);
+    char *scene_path = words[1][0] == '/' ? r->scene : grade_format("%s/%s", g->top, words[1]);
     make_argv(r, scene_path, words + 2, n - 2, cli_part_number(g->part), g->progress);
     if (grade_kind(scene_path) != S_IFREG)
         return grade_fail("%s: no scene file %s", where, scene_path);
@@ -96,7 +100,7 @@ static bool add_render(Grading *g, const char *top, char **words, int n, const c
 }
 
 /* Reads references/renders.txt into g->renders; false (reported) when it cannot. */
-bool part_read_renders(Grading *g, const char *top)
+bool part_read_renders(Grading *g)
 {
     char *path = grade_format("%s/renders.txt", g->references), *line = NULL;
     FILE *f = fopen(path, "r");
@@ -115,7 +119,7 @@ bool part_read_renders(Grading *g, const char *top)
         char *where = grade_format("%s:%d", path, line_number);
         ok = (array_grow(&g->renders, &capacity, g->render_count, sizeof *g->renders) ||
               grade_fail("%s: out of memory", where)) &&
-             add_render(g, top, words, n, where);
+             add_render(g, words, n, where);
     }
     ok = ok && (g->render_count > 0 || grade_fail("%s lists no images", path));
     free(line);

@@ -204,9 +204,10 @@ static void run_scene(const Grading *g, Submission *s, int k, char *program)
     }
 }
 
-/* Grades every render of submission s into s->results and counts the verdicts; false
- * when grading must stop (interrupted, or the grader's own trouble, reported). */
-static bool grade_one(const Grading *g, Submission *s)
+/* Grades every render of submission s into s->results, counts the verdicts and tells them
+ * on f ("5 scenes: 4 pass, 1 timeout"); false when grading must stop (interrupted, or the
+ * grader's own trouble, reported). */
+static bool grade_one(const Grading *g, Submission *s, FILE *f)
 {
     s->results = grade_alloc((size_t)g->render_count * sizeof *s->results);
     /* A program is built and run, in folders of its own; a folder of images is read. */
@@ -227,32 +228,31 @@ static bool grade_one(const Grading *g, Submission *s)
         else
             set_verdict(&s->results[k], VERDICT_BUILD_FAILED, "%s", s->build_message);
     }
-    for (int k = 0; k < g->render_count; k++)
+    if (!ok || stop_requested()) {
+        fputc('\n', f);
+        return false;
+    }
+    int count[VERDICT_COUNT] = {0};
+    for (int k = 0; k < g->render_count; k++) {
+        count[s->results[k].verdict]++;
         s->tally[verdict_info[s->results[k].verdict].tally]++;
-    return ok && !stop_requested();
-}
-
-/* Prints how the scenes of s went: "5 scenes: 4 pass, 1 timeout", or why it did not build. */
-static void print_tally(FILE *f, const Grading *g, const Submission *s)
-{
+    }
     if (s->build_message != NULL) {
         fprintf(f, "BUILD FAILED: %s\n", s->build_message);
-        return;
+        return true;
     }
     fprintf(f, "%d scene%s:", g->render_count, g->render_count == 1 ? "" : "s");
     const char *sep = " ";
     for (int v = 0; v < VERDICT_COUNT; v++) {
-        int count = 0;
-        for (int k = 0; k < g->render_count; k++)
-            count += s->results[k].verdict == (Verdict)v;
-        if (count == 0)
+        if (count[v] == 0)
             continue;
-        fprintf(f, "%s%d ", sep, count);
+        fprintf(f, "%s%d ", sep, count[v]);
         for (const char *p = verdict_info[v].name; *p != '\0'; p++)
             fputc(tolower((unsigned char)*p), f);
         sep = ", ";
     }
     fputc('\n', f);
+    return true;
 }
 
 /* Grades every submission, telling the progress on g->progress; false when interrupted or
@@ -271,60 +271,46 @@ bool submission_grade_all(Grading *g)
         for (const char *p = s->name; *p != '\0'; p++)
             fputc((unsigned char)*p < 0x20 || *p == 0x7F ? '?' : *p, f);
         fprintf(f, " (%s): %s", s->program ? "program" : "images", s->program ? "building... " : "");
-        if (!grade_one(g, s)) {
-            fputc('\n', f);
+        if (!grade_one(g, s, f))
             return false;
-        }
-        print_tally(f, g, s);
     }
     return true;
 }
 
-/* Adds the submission in the folder path, named name, with its work folder, to g; takes
- * path and work. It is a program when it holds a Makefile, as make looks for one. */
-static void add_submission(Grading *g, const char *name, char *path, char *work)
-{
-    static const char *const makefiles[] = {"GNUmakefile", "makefile", "Makefile"};
-    Submission *s = &g->subs[g->sub_count++];
-    *s = (Submission){.name = grade_format("%s", name), .path = path, .work = work};
-    for (size_t k = 0; k < sizeof makefiles / sizeof makefiles[0]; k++)
-        s->program |= grade_kind(grade_format("%s/%s", path, makefiles[k])) == S_IFREG;
-    /* A folder of the class that is a link (to a classmate's) is not graded as one. */
-    char target[PATH_MAX];
-    ssize_t n = g->self ? -1 : readlink(path, target, sizeof target - 1);
-    if (n >= 0)
-        s->link = grade_format("%.*s", (int)n, target);
-}
-
-/* Lists the submissions: the folders in g->submissions but hidden ones and the output
- * folder, in the order of their names, each with a work folder named safely for scripts
- * (03-alice); or with --self the one folder. False (reported) when there are none. */
+/* Lists the submissions, each with a work folder named safely for scripts (03-alice): the
+ * folders in g->submissions in the order of their names, but hidden ones and the output
+ * folder, or with --self the one folder; false (reported) when there are none. A folder
+ * is a program when it holds a Makefile, as make looks for one. */
 bool submission_list(Grading *g)
 {
-    if (g->self) {
-        char *path = grade_format("%s", g->submissions);
-        g->subs = grade_alloc(sizeof *g->subs);
-        add_submission(g, basename(grade_format("%s", path)), path,
-                       grade_format("%s/1-self", g->work));
-        return true;
-    }
-    int count = 0;
-    char **names = grade_list_folders(g->submissions, &count);
+    static const char *const makefiles[] = {"GNUmakefile", "makefile", "Makefile"};
+    int count = 1;
+    char *self[] = {basename(grade_format("%s", g->submissions))}, real[PATH_MAX];
+    char **names = g->self ? self : grade_list_folders(g->submissions, &count);
     if (names == NULL)
         return grade_fail("cannot read the folder %s: %s", g->submissions, strerror(errno));
-    char real[PATH_MAX];
     g->subs = grade_alloc((size_t)count * sizeof *g->subs);
     int digits = count < 100 ? 2 : count < 1000 ? 3 : 6;
     for (int k = 0; k < count; k++) {
-        char *path = grade_format("%s/%s", g->submissions, names[k]);
+        char *path = g->self ? grade_format("%s", g->submissions)
+                             : grade_format("%s/%s", g->submissions, names[k]);
         /* The output folder is the one whose work folder is g->work. */
-        if (realpath(path, real) != NULL && strcmp(grade_format("%s/work", real), g->work) == 0)
+        if (!g->self && realpath(path, real) != NULL &&
+            strcmp(grade_format("%s/work", real), g->work) == 0)
             continue;
-        char *work = grade_format("%s/%0*d-%.40s", g->work, digits, g->sub_count + 1, names[k]);
+        Submission *s = &g->subs[g->sub_count++];
+        char *work = g->self ? grade_format("%s/1-self", g->work)
+                             : grade_format("%s/%0*d-%.40s", g->work, digits, g->sub_count, names[k]);
         for (char *p = strrchr(work, '/') + 1; *p != '\0'; p++)
             if (!isalnum((unsigned char)*p) && *p != '.' && *p != '_' && *p != '-')
                 *p = '_';
-        add_submission(g, names[k], path, work);
+        *s = (Submission){.name = grade_format("%s", names[k]), .path = path, .work = work};
+        for (size_t m = 0; m < sizeof makefiles / sizeof makefiles[0]; m++)
+            s->program |= grade_kind(grade_format("%s/%s", path, makefiles[m])) == S_IFREG;
+        /* A folder of the class that is a link (to a classmate's) is not graded as one. */
+        ssize_t n = g->self ? -1 : readlink(path, real, sizeof real - 1);
+        if (n >= 0)
+            s->link = grade_format("%.*s", (int)n, real);
     }
     return g->sub_count > 0 ||
            grade_fail("no submissions in %s: it should hold a folder a student", g->submissions);
