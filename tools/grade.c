@@ -188,10 +188,9 @@ static bool prepare_work(Grading *g)
 {
     char real[PATH_MAX];
     g->out = g->out != NULL ? g->out : grade_format("grading-%s", g->part);
-    if (grade_kind(g->out) != S_IFDIR && !grade_make_folder(g->out))
+    if ((grade_kind(g->out) != S_IFDIR && !grade_make_folder(g->out)) ||
+        realpath(g->out, real) == NULL)
         return false;
-    if (realpath(g->out, real) == NULL)
-        return grade_fail("cannot find %s: %s", g->out, strerror(errno));
     g->work = grade_format("%s/work", real);
     if (grade_kind(g->work) != 0 && grade_kind(grade_format("%s/.made-by-grade", g->work)) == 0)
         return grade_fail("%s exists and was not made by grade: choose another --out", g->work);

@@ -8,6 +8,8 @@
 
 #include "array.h"
 #include "cli.h"
+#include "image.h"
+#include "lex.h"
 
 /* Finds the folder of part `part`, g->part, and its references: a path, or the folder of
  * milestones/ named so or whose name starts with "PART-" (the first in the order of their
@@ -83,8 +85,7 @@ static bool add_render(Grading *g, char **words, int n, const char *where)
                                         g->illustrations ? ", " : "", stem - 1, image + 1);
         return true;
     }
-    if (n < 2 || strchr(image, '/') != NULL || dot == NULL ||
-        (strcmp(dot, ".png") != 0 && strcmp(dot, ".pfm") != 0 && strcmp(dot, ".exr") != 0))
+    if (n < 2 || strchr(image, '/') != NULL || image_format_for_path(image) == IMAGE_FORMAT_UNKNOWN)
         return grade_fail("%s: expected IMAGE SCENE [options], IMAGE a .png, .pfm or .exr name",
                           where);
     Render *r = &g->renders[g->render_count++];
@@ -109,17 +110,15 @@ bool part_read_renders(Grading *g)
     bool ok = f != NULL || grade_fail("cannot read %s: %s", path, strerror(errno));
     while (ok && getline(&line, &size, f) >= 0) {
         line_number++;
-        char *words[64], *save = NULL;
-        int n = 0;
-        for (char *w = strtok_r(line, " \t\r\n", &save); w != NULL && n < 64;
-             w = strtok_r(NULL, " \t\r\n", &save))
-            words[n++] = w;
-        if (n == 0 || words[0][0] == '#')
+        Words w;
+        lex_split(line, &w);
+        int n = w.count < LEX_MAX_WORDS ? w.count : LEX_MAX_WORDS;
+        if (n == 0 || w.word[0][0] == '#')
             continue;
         char *where = grade_format("%s:%d", path, line_number);
         ok = (array_grow(&g->renders, &capacity, g->render_count, sizeof *g->renders) ||
               grade_fail("%s: out of memory", where)) &&
-             add_render(g, words, n, where);
+             add_render(g, w.word, n, where);
     }
     ok = ok && (g->render_count > 0 || grade_fail("%s lists no images", path));
     free(line);

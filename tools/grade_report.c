@@ -1,4 +1,4 @@
-/* grade_report.c: report.html, one self-contained page, and grades.csv, written whole; --self's lines. */
+/* grade_report.c: the self-contained report.html and grades.csv, written whole; --self's lines. */
 #include "grade.h"
 
 #include <math.h>
@@ -58,10 +58,10 @@ static const char *plural(int n)
  * every scene passes, BUILD FAILED, or FAIL; or with k >= 0 that of scene k. */
 static char *badge(const Grading *g, const Submission *s, int k)
 {
-    const VerdictInfo *v = &verdict_info[k >= 0                                 ? s->results[k].verdict
-                                         : s->build_message != NULL            ? VERDICT_BUILD_FAILED
-                                         : s->tally[TALLY_PASS] == g->render_count ? VERDICT_PASS
-                                                                                   : VERDICT_FAIL];
+    Verdict overall = s->build_message != NULL                ? VERDICT_BUILD_FAILED
+                      : s->tally[TALLY_PASS] == g->render_count ? VERDICT_PASS
+                                                                : VERDICT_FAIL;
+    const VerdictInfo *v = &verdict_info[k >= 0 ? s->results[k].verdict : overall];
     return grade_format("<span class=\"badge %s\">%s</span>", tally_class[v->tally], v->name);
 }
 
@@ -260,23 +260,24 @@ static void write_html(FILE *f, const Grading *g)
             html(g->work));
 }
 
-/* Writes text as one CSV field and a comma: quoted, its quotes doubled (RFC 4180), when it
- * holds a comma, a quote or a line break, or starts or ends with a space. A text that a
- * spreadsheet would take for a formula, starting with =, +, -, @, a tab or a carriage
- * return, gets a quote ' first, and quotes around. */
-static void csv_field(FILE *f, const char *text)
+/* Returns text as a CSV field: quoted, its quotes doubled (RFC 4180), when it holds a
+ * comma, a quote or a line break, or starts or ends with a space; a text that a spreadsheet
+ * would take for a formula (=, +, -, @, a tab or a carriage return first) gets a quote '
+ * first, and quotes around. */
+static char *csv(const char *text)
 {
     size_t len = strlen(text);
     bool formula = len > 0 && strchr("=+-@\t\r", text[0]) != NULL;
     bool quote = formula || strpbrk(text, ",\"\r\n") != NULL ||
                  (len > 0 && (text[0] == ' ' || text[len - 1] == ' '));
-    fputs(formula ? "\"'" : quote ? "\"" : "", f);
-    for (const char *p = text; *p != '\0'; p++) {
-        if (*p == '"')
-            fputc('"', f);
-        fputc(*p, f);
+    char *out = grade_alloc(2 * len + 4), *o = stpcpy(out, formula ? "\"'" : quote ? "\"" : "");
+    for (const char *t = text; *t != '\0'; t++) {
+        if (*t == '"')
+            *o++ = '"';
+        *o++ = *t;
     }
-    fputs(quote ? "\"," : ",", f);
+    strcpy(o, quote ? "\"" : "");
+    return out;
 }
 
 /* Writes the CSV: a header line, then one line a submission and scene; the figures, which
@@ -289,22 +290,16 @@ static void write_csv(FILE *f, const Grading *g)
         for (int k = 0; k < g->render_count; k++) {
             const SceneResult *res = &g->subs[i].results[k];
             const Figures *fig = &res->figures;
-            csv_field(f, g->subs[i].name);
-            csv_field(f, g->renders[k].name);
-            csv_field(f, verdict_info[res->verdict].name);
-            if (res->compared) /* glibc prints an infinite PSNR as "inf" */
-                fprintf(f, "%.6g,%.6g,%.6g,%.6g,%.6g,%.2f,%ld,%.6g,%s,", fig->max[0], fig->max[1],
-                        fig->max[2], fig->mean, fig->rmse, fig->psnr, fig->differing,
-                        (double)fig->differing / fig->pixels,
-                        fig->differing > 0 ? grade_format("\"(%d,%d)-(%d,%d)\"", fig->box[0],
-                                                          fig->box[1], fig->box[2], fig->box[3])
-                                           : "");
-            else
-                fputs(",,,,,,,,,", f);
-            csv_field(f, res->message);
-            if (res->seconds > 0)
-                fprintf(f, "%.3f", res->seconds);
-            fputc('\n', f);
+            /* glibc prints an infinite PSNR as "inf" */
+            char *figures = !res->compared ? ",,,,,,,,," : grade_format(
+                "%.6g,%.6g,%.6g,%.6g,%.6g,%.2f,%ld,%.6g,%s,", fig->max[0], fig->max[1],
+                fig->max[2], fig->mean, fig->rmse, fig->psnr, fig->differing,
+                (double)fig->differing / fig->pixels,
+                fig->differing == 0 ? "" : grade_format("\"(%d,%d)-(%d,%d)\"", fig->box[0],
+                                                        fig->box[1], fig->box[2], fig->box[3]));
+            fprintf(f, "%s,%s,%s,%s%s,%s\n", csv(g->subs[i].name), csv(g->renders[k].name),
+                    verdict_info[res->verdict].name, figures, csv(res->message),
+                    res->seconds > 0 ? grade_format("%.3f", res->seconds) : "");
         }
 }
 

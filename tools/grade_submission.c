@@ -42,7 +42,7 @@ static void compare_image(const Grading *g, const Submission *s, int k, const ch
                     r->reference, (char *)image, NULL};
     RunResult run = run_program(argv, NULL, log, 600, RUN_OWN_MEMORY(g->memory_limit));
     FILE *in = imgfile_fopen(log);
-    char line[1024], verdict[8] = "", *reason = NULL;
+    char line[1024], *reason = NULL;
     int size[4] = {0}; /* the reference's width and height, then the image's, when they differ */
     while (in != NULL && fgets(line, sizeof line, in) != NULL) {
         line[strcspn(line, "\n")] = '\0';
@@ -50,21 +50,22 @@ static void compare_image(const Grading *g, const Submission *s, int k, const ch
         if (reason == NULL && strncmp(line, "imgdiff: ", 9) == 0)
             reason = grade_format("%s", named != NULL ? named + 3 : line + 9);
         /* || stops at the first pattern that fits the line. */
-        (void)(sscanf(line, "verdict %7s", verdict) == 1 ||
-               sscanf(line, "sizes %d %d %d %d", &size[0], &size[1], &size[2], &size[3]) == 4 ||
-               sscanf(line, "box %d %d %d %d", &f->box[0], &f->box[1], &f->box[2], &f->box[3]) == 4 ||
+        (void)(sscanf(line, "sizes %d %d %d %d", size, size + 1, size + 2, size + 3) == 4 ||
+               sscanf(line, "box %d %d %d %d", f->box, f->box + 1, f->box + 2, f->box + 3) == 4 ||
                sscanf(line, "threshold %lf", &f->threshold) == 1 ||
                sscanf(line, "allow %lf", &f->allow) == 1 ||
                sscanf(line, "max %lf %lf %lf", &f->max[0], &f->max[1], &f->max[2]) == 3 ||
-               sscanf(line, "mean %lf", &f->mean) == 1 || sscanf(line, "rmse %lf", &f->rmse) == 1 ||
+               sscanf(line, "mean %lf", &f->mean) == 1 ||
+               sscanf(line, "rmse %lf", &f->rmse) == 1 ||
                sscanf(line, "psnr %lf", &f->psnr) == 1 ||
                sscanf(line, "differing %ld %ld", &f->differing, &f->pixels) == 2 ||
                sscanf(line, "heat_scale %lf", &f->heat_scale) == 1);
     }
     if (in != NULL)
         fclose(in);
-    Verdict v = strcmp(verdict, "PASS") == 0 ? VERDICT_PASS : VERDICT_FAIL;
-    res->compared = verdict[0] != '\0';
+    /* imgdiff's exit status: 0 when the images match, 1 when not, 2 on trouble */
+    Verdict v = run.ok ? VERDICT_PASS : VERDICT_FAIL;
+    res->compared = run.end == RUN_EXITED && run.status <= 1;
     res->identical = res->compared && f->max[0] == 0 && f->max[1] == 0 && f->max[2] == 0;
     if (res->identical)
         set_verdict(res, v, "identical to the reference");
@@ -270,7 +271,8 @@ bool submission_grade_all(Grading *g)
         fprintf(f, "grading ");
         for (const char *p = s->name; *p != '\0'; p++)
             fputc((unsigned char)*p < 0x20 || *p == 0x7F ? '?' : *p, f);
-        fprintf(f, " (%s): %s", s->program ? "program" : "images", s->program ? "building... " : "");
+        fprintf(f, " (%s): %s", s->program ? "program" : "images",
+                s->program ? "building... " : "");
         if (!grade_one(g, s, f))
             return false;
     }
@@ -300,7 +302,8 @@ bool submission_list(Grading *g)
             continue;
         Submission *s = &g->subs[g->sub_count++];
         char *work = g->self ? grade_format("%s/1-self", g->work)
-                             : grade_format("%s/%0*d-%.40s", g->work, digits, g->sub_count, names[k]);
+                             : grade_format("%s/%0*d-%.40s", g->work, digits, g->sub_count,
+                                            names[k]);
         for (char *p = strrchr(work, '/') + 1; *p != '\0'; p++)
             if (!isalnum((unsigned char)*p) && *p != '.' && *p != '_' && *p != '-')
                 *p = '_';
