@@ -57,11 +57,9 @@ static void wait_for_signal(double seconds)
     sigtimedwait(&child, NULL, &t);
 }
 
-/* Prepares a new child: its own process group, stdin from /dev/null, output to the log
- * (NULL: /dev/null), no other descriptor, the limits, the folder (NULL: the grader's);
- * exits with EXEC_FAILED (why, in the log) when it cannot. The signals the grader catches
- * go back to their defaults at exec; the one it ignores and the one it holds back are
- * given back here. */
+/* Prepares a new child: its own process group, the signals as they were (those caught go
+ * back to their defaults at exec), stdin from /dev/null, output to the log (NULL: /dev/null),
+ * the limits, the folder (NULL: the grader's); exits with EXEC_FAILED when it cannot. */
 static void child_setup(const char *dir, const char *log, long long memory_limit)
 {
     setpgid(0, 0);
@@ -106,10 +104,9 @@ static void child_setup(const char *dir, const char *log, long long memory_limit
     }
 }
 
-/* Ends and reaps whatever the last child left running outside its process group, handed
- * over to the grader by the subreaper, giving up (with a warning) after two seconds of a
- * fork bomb. While no child runs, every process whose parent is the grader is such a one;
- * an unreaped pid is never reused. */
+/* Ends and reaps what the last child left running outside its group, which the subreaper
+ * made the grader's children (an unreaped pid is never reused); gives up, warning, after
+ * two seconds of a fork bomb. */
 static void end_stragglers(void)
 {
     char path[300], text[512];

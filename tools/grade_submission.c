@@ -87,10 +87,8 @@ static void compare_image(const Grading *g, const Submission *s, int k, const ch
                     run_describe(&run));
 }
 
-/* Judges the file at path as the image of render k: MISSING, with the reason `missing`,
- * when there is none; LINK when it is a symbolic link, or the reference itself under
- * another name; UNREADABLE when it is not a regular file, seen with lstat only, so that a
- * FIFO or a device is never opened; else compared. */
+/* Judges the file at path as the image of render k, with lstat first so that a FIFO or a
+ * device is never opened: MISSING (saying `missing`), LINK, UNREADABLE, or compared. */
 static void judge_file(const Grading *g, const Submission *s, int k, const char *path,
                        const char *missing)
 {
@@ -205,9 +203,8 @@ static void run_scene(const Grading *g, Submission *s, int k, char *program)
     }
 }
 
-/* Grades every render of submission s into s->results, counts the verdicts and tells them
- * on f ("5 scenes: 4 pass, 1 timeout"); false when grading must stop (interrupted, or the
- * grader's own trouble, reported). */
+/* Grades every render of submission s, counts the verdicts and tells them on f ("5 scenes:
+ * 4 pass, 1 timeout"); false when grading must stop (interrupted, or trouble, reported). */
 static bool grade_one(const Grading *g, Submission *s, FILE *f)
 {
     s->results = grade_alloc((size_t)g->render_count * sizeof *s->results);
@@ -280,9 +277,8 @@ bool submission_grade_all(Grading *g)
 }
 
 /* Lists the submissions, each with a work folder named safely for scripts (03-alice): the
- * folders in g->submissions in the order of their names, but hidden ones and the output
- * folder, or with --self the one folder; false (reported) when there are none. A folder
- * is a program when it holds a Makefile, as make looks for one. */
+ * folders in g->submissions by name, but hidden ones and the output folder, or with --self
+ * the one folder; false (reported) when there are none. */
 bool submission_list(Grading *g)
 {
     static const char *const makefiles[] = {"GNUmakefile", "makefile", "Makefile"};
@@ -308,6 +304,7 @@ bool submission_list(Grading *g)
             if (!isalnum((unsigned char)*p) && *p != '.' && *p != '_' && *p != '-')
                 *p = '_';
         *s = (Submission){.name = grade_format("%s", names[k]), .path = path, .work = work};
+        /* A program holds a Makefile, as make looks for one. */
         for (size_t m = 0; m < sizeof makefiles / sizeof makefiles[0]; m++)
             s->program |= grade_kind(grade_format("%s/%s", path, makefiles[m])) == S_IFREG;
         /* A folder of the class that is a link (to a classmate's) is not graded as one. */
