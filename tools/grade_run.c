@@ -29,6 +29,9 @@
 /* The end of a program's output that the report shows. */
 #define TAIL_BYTES 2048
 
+/* SIGCHLD alone: held back by the grader, for the wait loop to wait for. */
+static sigset_t sigchld;
+
 /* Makes SIGINT, SIGTERM and SIGHUP (the terminal going away) requests to stop, which the
  * wait loop polls; holds SIGCHLD back for it to wait for; and makes the grader the parent
  * of any process a child leaves behind (a subreaper), so that it can end those too. */
@@ -38,10 +41,9 @@ void run_init(void)
     signal(SIGHUP, stop_request);
     /* With its output piped into head, the grader must not die before ending a child. */
     signal(SIGPIPE, SIG_IGN);
-    sigset_t child;
-    sigemptyset(&child);
-    sigaddset(&child, SIGCHLD);
-    sigprocmask(SIG_BLOCK, &child, NULL);
+    sigemptyset(&sigchld);
+    sigaddset(&sigchld, SIGCHLD);
+    sigprocmask(SIG_BLOCK, &sigchld, NULL);
 #ifdef __linux__
     prctl(PR_SET_CHILD_SUBREAPER, 1, 0, 0, 0);
 #endif
@@ -50,11 +52,8 @@ void run_init(void)
 /* Waits until a child ends (SIGCHLD), a signal asks to stop, or `seconds` pass. */
 static void wait_for_signal(double seconds)
 {
-    sigset_t child;
-    sigemptyset(&child);
-    sigaddset(&child, SIGCHLD);
     struct timespec t = {(time_t)seconds, (long)((seconds - (double)(time_t)seconds) * 1e9)};
-    sigtimedwait(&child, NULL, &t);
+    sigtimedwait(&sigchld, NULL, &t);
 }
 
 /* Prepares a new child: its own process group, the signals as they were (those caught go
@@ -140,8 +139,8 @@ static void end_stragglers(void)
     }
 }
 
-/* Runs argv (a program found on PATH, with its arguments) in a child as child_setup
- * prepares it, for at most time_limit seconds (0: no limit), killing its group at the limit
+/* Runs argv (a program found on PATH) in a child as child_setup prepares it, with at most
+ * time_limit seconds and memory_limit bytes (0: no limit), killing its group at the limit
  * or on a stop request; then reaps it and everything it left behind. */
 RunResult run_program(char *const argv[], const char *dir, const char *log, double time_limit,
                       long long memory_limit)
