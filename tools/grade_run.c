@@ -109,7 +109,8 @@ static void child_setup(const char *dir, const char *log, long long memory_limit
 static void end_stragglers(void)
 {
     char path[300], text[512];
-    for (double give_up = clock_now() + 2;; wait_for_signal(0.005)) {
+    double give_up = clock_now() + 2;
+    for (;;) {
         pid_t p;
         while ((p = waitpid(-1, NULL, WNOHANG)) > 0)
             continue;
@@ -130,12 +131,13 @@ static void end_stragglers(void)
             /* "pid (name) state ppid ...": the name may hold spaces and parentheses. */
             const char *name_end = strrchr(text, ')');
             long ppid;
-            if (name_end != NULL &&
-                sscanf(name_end + 1, " %*c %ld", &ppid) == 1 && ppid == (long)getpid())
+            if (name_end != NULL && sscanf(name_end + 1, " %*c %ld", &ppid) == 1 &&
+                ppid == (long)getpid())
                 kill((pid_t)atol(e->d_name), SIGKILL);
         }
         if (d != NULL)
             closedir(d);
+        wait_for_signal(0.005);
     }
 }
 
