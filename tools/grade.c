@@ -260,7 +260,8 @@ int main(int argc, char **argv)
         return EXIT_TROUBLE;
     }
     g.submissions = argv[optind + 1];
-    g.progress = g.quiet ? fopen("/dev/null", "w") : stderr;
+    FILE *none = g.quiet ? fopen("/dev/null", "w") : NULL;
+    g.progress = none != NULL ? none : stderr;
     time_t now = time(NULL);
     strftime(g.started, sizeof g.started, "%Y-%m-%d %H:%M", localtime(&now));
     run_init();
