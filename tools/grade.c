@@ -67,51 +67,59 @@ static void print_help(void)
            "grading could not be done; 130 when interrupted. See docs/grading.md.\n");
 }
 
+/* Prints "grade: " and a message made as printf makes it; returns false, to end a chain. */
+bool grade_fail(const char *fmt, ...)
+{
+    va_list ap;
+    va_start(ap, fmt);
+    fputs("grade: ", stderr);
+    vfprintf(stderr, fmt, ap);
+    fputc('\n', stderr);
+    va_end(ap);
+    return false;
+}
+
 /* Sets the field of the Grading `state` that option k sets from its value: seconds are a
  * number from 0; a memory limit is bytes, or a number followed by K, M or G (2^10, 2^20,
- * 2^30), 0 or at least 1 MiB (less is surely a slip). False (reported) when the value is
- * not a valid one. */
+ * 2^30), 0 or at least 1 MiB (less is surely a slip). False (reported) for a bad value. */
 static bool set_option(void *state, int k, const char *value)
 {
     static const char units[] = "KkMmGg";
     const GradeOption *o = &options[k];
     void *field = (char *)state + o->field;
-    if (o->kind == OPT_FLAG || o->kind == OPT_TEXT) {
-        if (o->kind == OPT_FLAG)
-            *(bool *)field = true;
-        else
-            *(const char **)field = value;
-        return true;
-    }
-    char *end;
-    double v = strtod(value, &end);
+    char *end = (char *)value; /* flags have no value */
+    double v = o->kind >= OPT_SECONDS ? strtod(value, &end) : 0;
     const char *unit = o->kind == OPT_BYTES && end != value && *end != '\0' ? strchr(units, *end)
                                                                              : NULL;
-    v = unit != NULL ? ldexp(v, 10 * (int)((unit - units) / 2 + 1)) : v;
-    end += unit != NULL;
-    bool ok = end != value && *end == '\0' && isfinite(v) && v >= 0 &&
-              (o->kind == OPT_SECONDS || (v <= 1e18 && (v == 0 || v >= 1 << 20)));
-    if (ok && o->kind == OPT_SECONDS)
+    if (unit != NULL) {
+        v = ldexp(v, 10 * (int)((unit - units) / 2 + 1));
+        end++;
+    }
+    if (o->kind == OPT_FLAG)
+        *(bool *)field = true;
+    else if (o->kind == OPT_TEXT)
+        *(const char **)field = value;
+    else if (end == value || *end != '\0' || !isfinite(v) || v < 0 ||
+             (o->kind == OPT_BYTES && (v > 1e18 || (v > 0 && v < 1 << 20))))
+        return grade_fail("--%s takes %s, got '%s'", o->o.name,
+                          o->kind == OPT_SECONDS ? "a number of seconds, or 0"
+                                                 : "a size such as 512M or 2G, or 0",
+                          value);
+    else if (o->kind == OPT_SECONDS)
         *(double *)field = v;
-    else if (ok)
-        *(long long *)field = (long long)v;
     else
-        fprintf(stderr, "grade: --%s takes %s, got '%s'\n", o->o.name,
-                o->kind == OPT_SECONDS ? "a number of seconds, or 0"
-                                       : "a size such as 512M or 2G, or 0",
-                value);
-    return ok;
+        *(long long *)field = (long long)v;
+    return true;
 }
 
-/* Returns zeroed memory that lasts until the exit: the grader frees nothing, as what it
- * gathers serves the report; every block begins with the one made before it, so that all
- * stay reachable. Ends the grader when there is no memory, as it cannot go on. */
+/* Returns zeroed memory that lasts until the exit (what the grader gathers serves the
+ * report), each block chained to the one before so that all stay reachable; exits on none. */
 void *grade_alloc(size_t size)
 {
     static void *last;
     void **block = calloc(1, sizeof(max_align_t) + size);
     if (block == NULL) {
-        fprintf(stderr, "grade: out of memory\n");
+        grade_fail("out of memory");
         exit(EXIT_TROUBLE);
     }
     *block = last;
@@ -148,20 +156,11 @@ int grade_kind(const char *path)
     return stat(path, &st) == 0 ? (int)(st.st_mode & S_IFMT) : 0;
 }
 
-/* Makes folder path, or with anew false takes the one there; false (reported) when it
- * cannot. Anew, a folder already there (a link a student's program left) is refused. */
-bool grade_make_folder(const char *path, bool anew)
+/* Makes the folder path, refusing anything already there (a link a student left). */
+bool grade_make_folder(const char *path)
 {
-    if (mkdir(path, 0777) == 0 || (!anew && errno == EEXIST && grade_kind(path) == S_IFDIR))
-        return true;
-    fprintf(stderr, "grade: cannot make the folder %s: %s\n", path, strerror(errno));
-    return false;
-}
-
-/* Tells whether a folder's entry is not hidden, for scandir. */
-static int visible(const struct dirent *e)
-{
-    return e->d_name[0] != '.';
+    return mkdir(path, 0777) == 0 ||
+           grade_fail("cannot make the folder %s: %s", path, strerror(errno));
 }
 
 /* Returns the names of the folders in `folder`, hidden ones left out, in strcmp's order;
@@ -169,64 +168,44 @@ static int visible(const struct dirent *e)
 char **grade_list_folders(const char *folder, int *count)
 {
     struct dirent **entries;
-    int n = scandir(folder, &entries, visible, alphasort);
-    if (n < 0)
-        return NULL;
-    char **names = grade_alloc(((size_t)n + 1) * sizeof *names);
+    int n = scandir(folder, &entries, NULL, alphasort);
+    char **names = n >= 0 ? grade_alloc(((size_t)n + 1) * sizeof *names) : NULL;
     *count = 0;
     for (int k = 0; k < n; k++) {
-        if (grade_kind(grade_format("%s/%s", folder, entries[k]->d_name)) == S_IFDIR)
-            names[(*count)++] = grade_format("%s", entries[k]->d_name);
+        const char *name = entries[k]->d_name;
+        if (name[0] != '.' && grade_kind(grade_format("%s/%s", folder, name)) == S_IFDIR)
+            names[(*count)++] = grade_format("%s", name);
         free(entries[k]);
     }
-    free(entries);
+    if (n >= 0)
+        free(entries);
     return names;
 }
 
-/* Runs a command of the grader's own (no limits but time); true when it succeeds. */
-static bool run_quietly(char **argv, const char *log)
-{
-    RunSpec spec = {.log = log, .time_limit = 600};
-    RunResult r = run_program(argv, &spec);
-    return run_succeeded(&r);
-}
-
-/* Makes OUT and an empty OUT/work, an absolute path as students' programs run elsewhere,
- * removing only a work folder that holds the mark an earlier run wrote; false (reported)
- * on trouble. */
+/* Makes OUT (grading-PART by default) and OUT/work anew, an absolute path as students'
+ * programs run elsewhere, removing only a work folder that an earlier run marked. */
 static bool prepare_work(Grading *g)
 {
     char real[PATH_MAX];
-    if (!grade_make_folder(g->out, false))
+    g->out = g->out != NULL ? g->out : grade_format("grading-%s", g->part);
+    if ((grade_kind(g->out) != S_IFDIR && !grade_make_folder(g->out)) ||
+        realpath(g->out, real) == NULL)
         return false;
-    if (realpath(g->out, real) == NULL) {
-        fprintf(stderr, "grade: cannot find %s: %s\n", g->out, strerror(errno));
-        return false;
-    }
     g->work = grade_format("%s/work", real);
-    char *mark = grade_format("%s/.made-by-grade", g->work);
+    if (grade_kind(g->work) != 0 && grade_kind(grade_format("%s/.made-by-grade", g->work)) == 0)
+        return grade_fail("%s exists and was not made by grade: choose another --out", g->work);
     /* chmod first: a student's build may have left folders read-only. */
-    char *rm[] = {"sh", "-c", "chmod -R u+rwX -- \"$1\"; rm -rf -- \"$1\"", "sh", g->work, NULL};
-    if (grade_kind(g->work) == S_IFDIR && grade_kind(mark) != S_IFREG) {
-        fprintf(stderr, "grade: %s exists and was not made by grade: choose another --out\n",
-                g->work);
-        return false;
-    }
-    if (grade_kind(g->work) == S_IFDIR && !run_quietly(rm, NULL)) {
-        fprintf(stderr, "grade: cannot remove the old work folder %s\n", g->work);
-        return false;
-    }
-    FILE *f = grade_make_folder(g->work, false) ? fopen(mark, "w") : NULL;
-    if (f != NULL)
-        fprintf(f, "grade's work folder: each run of grade with this --out removes it and "
-                   "makes it anew.\n");
-    return f != NULL && fclose(f) == 0 &&
-           grade_make_folder(grade_format("%s/references", g->work), false);
+    char *anew[] = {"sh", "-c",
+                    "chmod -R u+rwX -- \"$1\"; rm -rf -- \"$1\" && mkdir -- \"$1\" "
+                    "\"$1/references\" && echo \"grade's work folder: each run of grade with this "
+                    "--out removes it and makes it anew.\" >\"$1/.made-by-grade\"",
+                    "sh", g->work, NULL};
+    return run_program(anew, NULL, NULL, 600, 0).ok ||
+           grade_fail("cannot make the work folder %s anew", g->work);
 }
 
-/* Has imgdiff compare each reference image with itself, with the tolerances, before any
- * work: so it takes them, reads the image, and makes its thumbnail for the report. False
- * (reported, in imgdiff's words) when it cannot. */
+/* Has imgdiff compare each reference with itself before any work, which checks both the
+ * image and the tolerances and makes the report's thumbnail; false (reported) on trouble. */
 static bool show_references(Grading *g)
 {
     for (int k = 0; k < g->render_count; k++) {
@@ -236,73 +215,33 @@ static bool show_references(Grading *g)
         char *argv[] = {g->imgdiff, "-q", "--threshold", (char *)g->threshold, "--allow",
                         (char *)g->allow, "--thumb", r->reference_show, "--", r->reference,
                         r->reference, NULL};
-        if (run_quietly(argv, log))
-            continue;
-        char *said = run_log_tail(log);
-        if (!stop_requested())
-            fprintf(stderr, "grade: %s\n", said != NULL ? said : "imgdiff could not run");
-        return false;
+        if (!run_program(argv, NULL, log, 600, 0).ok) {
+            char *said = run_log_tail(log);
+            return !stop_requested() && grade_fail("%s", said ? said : "imgdiff could not run");
+        }
     }
     return true;
 }
 
-/* Returns the top of the repository, two folders above the grader's program
- * (tools/build/grade), or NULL (reported) when it is not there; *tools_build gets the
- * program's folder. */
-static char *find_top(char **tools_build)
+/* Finds the top of the repository, g->top, two folders above the grader's program
+ * (tools/build/grade), and imgdiff beside the grader; false (reported) when it is not there. */
+static bool find_top(Grading *g)
 {
     char exe[PATH_MAX] = "", real[PATH_MAX];
     if (realpath("/proc/self/exe", exe) != NULL)
         *strrchr(exe, '/') = '\0';
-    *tools_build = grade_format("%s", exe);
-    if (realpath(grade_format("%s/../../milestones", exe), real) != NULL &&
-        grade_kind(real) == S_IFDIR)
-        return grade_format("%.*s", (int)(strrchr(real, '/') - real), real);
-    fprintf(stderr, "grade: cannot find the raytra repository: the grader must stay in "
-                    "tools/build/ of its checkout\n");
-    return NULL;
+    g->imgdiff = grade_format("%s/imgdiff", exe);
+    if (realpath(grade_format("%s/../../milestones", exe), real) == NULL ||
+        grade_kind(real) != S_IFDIR)
+        return grade_fail("cannot find the raytra repository: the grader must stay in "
+                          "tools/build/ of its checkout");
+    g->top = grade_format("%.*s", (int)(strrchr(real, '/') - real), real);
+    return access(g->imgdiff, X_OK) == 0 ||
+           grade_fail("no imgdiff at %s (make -C tools builds it)", g->imgdiff);
 }
 
-/* Does all the grading but reading the command line, for part `part`; returns the exit
- * status: 0 when the report was written (with --self, 1 when a scene failed), 2 when it
- * could not be. */
-static int grade(Grading *g, const char *part)
-{
-    char *tools_build = NULL;
-    char *top = find_top(&tools_build);
-    char *part_dir = top != NULL ? part_find(top, part) : NULL;
-    if (part_dir == NULL)
-        return EXIT_TROUBLE;
-    g->part = strrchr(part_dir, '/') + 1;
-    g->references = grade_format("%s/references", part_dir);
-    g->imgdiff = grade_format("%s/imgdiff", tools_build);
-    if (g->out == NULL)
-        g->out = grade_format("grading-%s", g->part);
-    time_t now = time(NULL);
-    strftime(g->started, sizeof g->started, "%Y-%m-%d %H:%M", localtime(&now));
-    if (access(g->imgdiff, X_OK) != 0) {
-        fprintf(stderr, "grade: no imgdiff at %s (make -C tools builds it)\n", g->imgdiff);
-        return EXIT_TROUBLE;
-    }
-    if (grade_kind(g->submissions) != S_IFDIR) {
-        fprintf(stderr, "grade: no folder %s\n", g->submissions);
-        return EXIT_TROUBLE;
-    }
-    if (!part_read_renders(g, top) || !prepare_work(g) || !show_references(g) ||
-        !submission_list(g))
-        return EXIT_TROUBLE;
-    if (!g->quiet)
-        fprintf(stderr, "grade: part %s, %d scene%s, %d submission%s\n", g->part, g->render_count,
-                g->render_count == 1 ? "" : "s", g->sub_count, g->sub_count == 1 ? "" : "s");
-    if (!g->quiet && g->illustrations != NULL)
-        fprintf(stderr, "grade: not graded (illustrations): %s\n", g->illustrations);
-    if (!submission_grade_all(g) || !report_write(g))
-        return EXIT_TROUBLE;
-    return g->self ? report_print_self(g) : EXIT_REPORTED;
-}
-
-/* Runs the grader: exit status 0 when the report was written, 2 when it could not be,
- * 130 when interrupted. Options may follow the words (getopt_long). */
+/* Runs the grader: exit status 0 when the report was written (with --self, 1 when a scene
+ * did not pass), 2 when it could not be, 130 when interrupted. */
 int main(int argc, char **argv)
 {
     static Grading g;
@@ -321,10 +260,21 @@ int main(int argc, char **argv)
         return EXIT_TROUBLE;
     }
     g.submissions = argv[optind + 1];
+    FILE *none = g.quiet ? fopen("/dev/null", "w") : NULL;
+    g.progress = none != NULL ? none : stderr;
+    time_t now = time(NULL);
+    strftime(g.started, sizeof g.started, "%Y-%m-%d %H:%M", localtime(&now));
     run_init();
-    int status = grade(&g, argv[optind]);
-    if (!stop_requested())
-        return status;
-    fprintf(stderr, "grade: interrupted: no report written\n");
-    return EXIT_INTERRUPTED;
+    bool ok = find_top(&g) && part_find(&g, argv[optind]) &&
+              (grade_kind(g.submissions) == S_IFDIR ||
+               grade_fail("no folder %s", g.submissions)) &&
+              part_read_renders(&g) && prepare_work(&g) && show_references(&g) &&
+              submission_list(&g) && submission_grade_all(&g) && report_write(&g);
+    if (stop_requested()) {
+        fprintf(stderr, "grade: interrupted: no report written\n");
+        return EXIT_INTERRUPTED;
+    }
+    if (!ok)
+        return EXIT_TROUBLE;
+    return g.self ? report_print_self(&g) : EXIT_REPORTED;
 }

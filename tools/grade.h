@@ -27,14 +27,13 @@ typedef struct {
 
 extern const VerdictInfo verdict_info[VERDICT_COUNT];
 
-/* imgdiff's figures for an image against its reference (imgdiff --machine). */
+/* imgdiff's figures for an image against its reference: its --machine lines. */
 typedef struct {
     double threshold, allow; /* the tolerances imgdiff used */
     double max[3];           /* the largest difference in R, G and B, from 0 to 1 */
     double mean, rmse, psnr; /* psnr in dB; infinite for equal images */
     long differing, pixels;  /* differing: pixels with a channel difference above threshold */
-    bool has_box;
-    int box[4];        /* x0, y0, x1, y1 around the differing pixels, y from the top */
+    int box[4];        /* x0, y0, x1, y1 around the differing pixels (when some differ) */
     double heat_scale; /* the difference the heat map shows white */
 } Figures;
 
@@ -43,8 +42,8 @@ typedef struct {
     char *image;          /* the reference's file name: spheres-three.png */
     char *name;           /* the same without the extension: the scene's name in the report */
     char *scene;          /* the scene file as renders.txt gives it, from the repository's top */
-    char *scene_path;     /* its absolute path, given to students' programs */
-    char **args;          /* the positional extra words for students' programs, NULL-ended */
+    char **argv;          /* a student's command line: the program and the output image are
+                           * set for each run; then the scene's path and positional words */
     char *reference;      /* the reference image's path */
     char *reference_show; /* its thumbnail for the report */
 } Render;
@@ -64,19 +63,20 @@ typedef struct {
 
 /* One student's submission: a folder of images, or of sources whose make builds raytra. */
 typedef struct {
-    char *name;              /* the folder's name, as it is (it may hold any character) */
-    char *path;              /* the folder */
-    char *work;              /* its work folder, named safely: OUT/work/03-alice */
-    bool program;            /* it has a Makefile: built and run rather than read */
-    char *link;              /* the folder is a symbolic link to this: not graded; or NULL */
-    char *build_message;     /* why the build failed; NULL when it did not */
-    char *build_log_tail;    /* the end of make's output, or NULL */
-    SceneResult *results;    /* one a render */
+    char *name;           /* the folder's name, as it is (it may hold any character) */
+    char *path;           /* the folder */
+    char *work;           /* its work folder, named safely: OUT/work/03-alice */
+    bool program;         /* it has a Makefile: built and run rather than read */
+    char *link;           /* the folder is a symbolic link to this: not graded; or NULL */
+    char *build_message;  /* why the build failed; NULL when it did not */
+    char *build_log_tail; /* the end of make's output, or NULL */
+    SceneResult *results; /* one a render */
     int tally[TALLY_COUNT];
 } Submission;
 
 /* Everything a grading run knows: what was asked, what was found, what came out. */
 typedef struct {
+    char *top;        /* the repository's top folder */
     const char *part; /* the part's folder name: 1.1-spheres-red */
     char *references; /* its references folder */
     Render *renders;
@@ -94,25 +94,19 @@ typedef struct {
     double build_time_limit; /* seconds for make */
     long long memory_limit;  /* bytes of address space; 0: none */
     bool quiet, self, help;  /* self: submissions is one student's folder */
+    FILE *progress;          /* where progress lines and notes go: stderr, or with quiet none */
     char started[32];        /* when grading began, for the report */
 } Grading;
 
-/* Where and how long a child may run: dir NULL is the grader's; log NULL is /dev/null; a
- * limit of 0 is none. */
-typedef struct {
-    const char *dir, *log;
-    double time_limit;      /* seconds of wall-clock time */
-    long long memory_limit; /* bytes of address space */
-} RunSpec;
-
 /* How a child ended: status is the exit status (RUN_EXITED), the signal (RUN_KILLED) or the
- * errno (RUN_NOT_RUN: fork failed). */
+ * errno (RUN_NOT_RUN: fork failed); ok when it exited with status 0. */
 typedef enum { RUN_EXITED, RUN_KILLED, RUN_TIMED_OUT, RUN_NOT_RUN, RUN_INTERRUPTED } RunEnd;
 
 typedef struct {
     RunEnd end;
     int status;
     double seconds;
+    bool ok;
 } RunResult;
 
 /* The memory limit of imgdiff, which reads students' files: none under AddressSanitizer,
@@ -126,14 +120,15 @@ typedef struct {
 /* grade.c */
 void *grade_alloc(size_t size);
 char *grade_format(const char *fmt, ...) DIAG_PRINTF(1, 2);
+bool grade_fail(const char *fmt, ...) DIAG_PRINTF(1, 2);
 char *grade_size_text(long long bytes);
 int grade_kind(const char *path);
-bool grade_make_folder(const char *path, bool anew);
+bool grade_make_folder(const char *path);
 char **grade_list_folders(const char *folder, int *count);
 
 /* grade_part.c */
-char *part_find(const char *top, const char *part);
-bool part_read_renders(Grading *g, const char *top);
+bool part_find(Grading *g, const char *part);
+bool part_read_renders(Grading *g);
 
 /* grade_submission.c */
 bool submission_list(Grading *g);
@@ -141,8 +136,8 @@ bool submission_grade_all(Grading *g);
 
 /* grade_run.c */
 void run_init(void);
-RunResult run_program(char *const argv[], const RunSpec *spec);
-bool run_succeeded(const RunResult *r);
+RunResult run_program(char *const argv[], const char *dir, const char *log, double time_limit,
+                      long long memory_limit);
 char *run_describe(const RunResult *r);
 char *run_log_tail(const char *path);
 

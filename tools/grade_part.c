@@ -8,25 +8,31 @@
 
 #include "array.h"
 #include "cli.h"
+#include "image.h"
+#include "lex.h"
 
-/* Returns the folder of part `part`, NULL (reported) when there is none: a path, or the
- * folder of milestones/ named so or whose name starts with "PART-" (the first, in the
- * order of their names, so that an exact name wins). */
-char *part_find(const char *top, const char *part)
+/* Finds the folder of part `part`, g->part, and its references: a path, or the folder of
+ * milestones/ named so or whose name starts with "PART-" (the first in the order of their
+ * names, so that an exact name wins); false (reported) when there is none. */
+bool part_find(Grading *g, const char *part)
 {
-    char real[PATH_MAX], *milestones = grade_format("%s/milestones", top), *all = "";
+    char real[PATH_MAX], *milestones = grade_format("%s/milestones", g->top), *all = "";
+    char *found = NULL;
     if (strchr(part, '/') != NULL && realpath(part, real) != NULL && grade_kind(real) == S_IFDIR)
-        return grade_format("%s", real);
+        found = grade_format("%s", real);
     int count = 0;
     char **names = grade_list_folders(milestones, &count);
     size_t len = strlen(part);
-    for (int k = 0; k < count; k++) {
+    for (int k = 0; found == NULL && k < count; k++) {
         if (strncmp(names[k], part, len) == 0 && (names[k][len] == '\0' || names[k][len] == '-'))
-            return grade_format("%s/%s", milestones, names[k]);
+            found = grade_format("%s/%s", milestones, names[k]);
         all = grade_format("%s %s", all, names[k]);
     }
-    fprintf(stderr, "grade: no part '%s' in %s; the parts are:%s\n", part, milestones, all);
-    return NULL;
+    if (found == NULL)
+        return grade_fail("no part '%s' in %s; the parts are:%s", part, milestones, all);
+    g->part = strrchr(found, '/') + 1;
+    g->references = grade_format("%s/references", found);
+    return true;
 }
 
 /* Returns raytra's option that `word` names (--name, --name=VALUE or -L), from the one
@@ -41,26 +47,27 @@ static const CliOption *option_of(const char *word)
     return NULL;
 }
 
-/* Fills r->args with the words of a renders.txt line (words[0..n)) that students' programs
- * get: the positional words, and the value of an option the course gives as a positional
- * argument (1.4's MODE); raytra's own options are left out, with a note. */
-static void keep_positional(Render *r, char **words, int n, int part, bool quiet)
+/* Makes r->argv, a student's command line, of the scene's path and the words of its
+ * renders.txt line (words[0..n)) that students' programs get: the positional words, and
+ * the value of an option the course gives as a positional argument (1.4's MODE); raytra's
+ * own options are left out, with a note on `notes`. */
+static void make_argv(Render *r, char *scene_path, char **words, int n, int part, FILE *notes)
 {
-    r->args = grade_alloc(((size_t)n + 1) * sizeof *r->args);
-    int kept = 0;
+    r->argv = grade_alloc(((size_t)n + 4) * sizeof *r->argv);
+    r->argv[1] = scene_path;
+    int kept = 3;
     for (int k = 0; k < n; k++) {
         const CliOption *o = words[k][0] == '-' ? option_of(words[k]) : NULL;
         const char *eq = strchr(words[k], '=');
         bool next = o != NULL && o->kind != OPTION_FLAG && eq == NULL && k + 1 < n;
         const char *value = eq != NULL ? eq + 1 : next ? words[k + 1] : NULL;
         if (words[k][0] != '-' || words[k][1] == '\0')
-            r->args[kept++] = grade_format("%s", words[k]);
+            r->argv[kept++] = grade_format("%s", words[k]);
         else if (o != NULL && o->argument != NULL && value != NULL && cli_option_accepted(o, part))
-            r->args[kept++] = grade_format("%s", value);
-        else if (!quiet)
-            fprintf(stderr,
-                    "grade: note: %s: raytra's option %s%s%s is not given to students' "
-                    "programs\n",
+            r->argv[kept++] = grade_format("%s", value);
+        else
+            fprintf(notes, "grade: note: %s: raytra's option %s%s%s is not given to students' "
+                           "programs\n",
                     r->image, words[k], next ? " " : "", next ? words[k + 1] : "");
         k += next;
     }
@@ -69,7 +76,7 @@ static void keep_positional(Render *r, char **words, int n, int part, bool quiet
 /* Adds the render of a renders.txt line (its words) to g, or its name to the illustrations
  * (marked '!': raytra's own pictures, graded on no student); false (reported) when the line
  * is not a valid one or names a file that is not there. */
-static bool add_render(Grading *g, const char *top, char **words, int n, const char *where)
+static bool add_render(Grading *g, char **words, int n, const char *where)
 {
     const char *image = words[0], *dot = strrchr(image, '.');
     int stem = dot != NULL ? (int)(dot - image) : (int)strlen(image);
@@ -78,56 +85,42 @@ static bool add_render(Grading *g, const char *top, char **words, int n, const c
                                         g->illustrations ? ", " : "", stem - 1, image + 1);
         return true;
     }
-    if (n < 2 || strchr(image, '/') != NULL || dot == NULL ||
-        (strcmp(dot, ".png") != 0 && strcmp(dot, ".pfm") != 0 && strcmp(dot, ".exr") != 0)) {
-        fprintf(stderr,
-                "grade: %s: expected IMAGE SCENE [options], IMAGE a .png, .pfm or .exr name\n",
-                where);
-        return false;
-    }
+    if (n < 2 || strchr(image, '/') != NULL || image_format_for_path(image) == IMAGE_FORMAT_UNKNOWN)
+        return grade_fail("%s: expected IMAGE SCENE [options], IMAGE a .png, .pfm or .exr name",
+                          where);
     Render *r = &g->renders[g->render_count++];
     *r = (Render){.image = grade_format("%s", image), .scene = grade_format("%s", words[1])};
     r->name = grade_format("%.*s", stem, image);
-    r->scene_path = words[1][0] == '/' ? r->scene : grade_format("%s/%s", top, words[1]);
     r->reference = grade_format("%s/%s", g->references, image);
-    keep_positional(r, words + 2, n - 2, cli_part_number(g->part), g->quiet);
-    if (grade_kind(r->scene_path) != S_IFREG)
-        fprintf(stderr, "grade: %s: no scene file %s\n", where, r->scene_path);
-    else if (grade_kind(r->reference) != S_IFREG)
-        fprintf(stderr, "grade: %s: no reference image %s (make references makes it)\n", where,
-                r->reference);
-    return grade_kind(r->scene_path) == S_IFREG && grade_kind(r->reference) == S_IFREG;
+    char *scene_path = words[1][0] == '/' ? r->scene : grade_format("%s/%s", g->top, words[1]);
+    make_argv(r, scene_path, words + 2, n - 2, cli_part_number(g->part), g->progress);
+    if (grade_kind(scene_path) != S_IFREG)
+        return grade_fail("%s: no scene file %s", where, scene_path);
+    return grade_kind(r->reference) == S_IFREG ||
+           grade_fail("%s: no reference image %s (make references makes it)", where, r->reference);
 }
 
 /* Reads references/renders.txt into g->renders; false (reported) when it cannot. */
-bool part_read_renders(Grading *g, const char *top)
+bool part_read_renders(Grading *g)
 {
     char *path = grade_format("%s/renders.txt", g->references), *line = NULL;
     FILE *f = fopen(path, "r");
     size_t size = 0;
     int line_number = 0, capacity = 0;
-    bool ok = f != NULL;
-    if (f == NULL)
-        fprintf(stderr, "grade: cannot read %s: %s\n", path, strerror(errno));
+    bool ok = f != NULL || grade_fail("cannot read %s: %s", path, strerror(errno));
     while (ok && getline(&line, &size, f) >= 0) {
         line_number++;
-        char *words[64], *save = NULL;
-        int n = 0;
-        for (char *w = strtok_r(line, " \t\r\n", &save); w != NULL && n < 64;
-             w = strtok_r(NULL, " \t\r\n", &save))
-            words[n++] = w;
-        if (n == 0 || words[0][0] == '#')
+        Words w;
+        lex_split(line, &w);
+        int n = w.count < LEX_MAX_WORDS ? w.count : LEX_MAX_WORDS;
+        if (n == 0 || w.word[0][0] == '#')
             continue;
         char *where = grade_format("%s:%d", path, line_number);
-        ok = array_grow(&g->renders, &capacity, g->render_count, sizeof *g->renders);
-        if (!ok)
-            fprintf(stderr, "grade: %s: out of memory\n", where);
-        ok = ok && add_render(g, top, words, n, where);
+        ok = (array_grow(&g->renders, &capacity, g->render_count, sizeof *g->renders) ||
+              grade_fail("%s: out of memory", where)) &&
+             add_render(g, w.word, n, where);
     }
-    if (ok && g->render_count == 0) {
-        fprintf(stderr, "grade: %s lists no images\n", path);
-        ok = false;
-    }
+    ok = ok && (g->render_count > 0 || grade_fail("%s lists no images", path));
     free(line);
     if (f != NULL)
         fclose(f);

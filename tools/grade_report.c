@@ -1,8 +1,7 @@
-/* grade_report.c: report.html, one self-contained page, and grades.csv, each written whole; --self's lines. */
+/* grade_report.c: the self-contained report.html and grades.csv, written whole; --self's lines. */
 #include "grade.h"
 
 #include <math.h>
-#include <stdlib.h>
 #include <string.h>
 #include <unistd.h>
 
@@ -55,52 +54,44 @@ static const char *plural(int n)
     return n == 1 ? "" : "s";
 }
 
-/* Returns a verdict's badge: its name in its column's colour. */
-static char *badge(const VerdictInfo *v)
+/* Returns the badge of a submission's overall verdict, in its column's colour: PASS when
+ * every scene passes, BUILD FAILED, or FAIL; or with k >= 0 that of scene k. */
+static char *badge(const Grading *g, const Submission *s, int k)
 {
+    Verdict overall = s->build_message != NULL                ? VERDICT_BUILD_FAILED
+                      : s->tally[TALLY_PASS] == g->render_count ? VERDICT_PASS
+                                                                : VERDICT_FAIL;
+    const VerdictInfo *v = &verdict_info[k >= 0 ? s->results[k].verdict : overall];
     return grade_format("<span class=\"badge %s\">%s</span>", tally_class[v->tally], v->name);
 }
 
-/* Returns the thumbnail at path, a PNG imgdiff made, as a data: URI (base64) for the caller
- * to free, with its size in pixels; NULL when there is none or it cannot be read. */
-static char *picture_uri(const char *path, int *width, int *height)
+/* Tells whether the thumbnail at path, made by imgdiff, can be embedded (a PNG of a sane
+ * size, in pixels and in bytes), and sets its size in pixels. */
+static bool picture_size(const char *path, int *width, int *height)
 {
-    static const char digits[] = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
     ImgFileKind kind;
     Error err;
     struct stat st;
-    if (path == NULL || !imgfile_header(path, &kind, width, height, &err) || kind != IMGFILE_PNG)
-        return NULL;
+    return path != NULL && imgfile_header(path, &kind, width, height, &err) &&
+           kind == IMGFILE_PNG && lstat(path, &st) == 0 && st.st_size <= EMBED_MAX_BYTES;
+}
+
+/* Writes the PNG at path as a data: URI, in base64. */
+static void put_picture(FILE *f, const char *path)
+{
+    static const char digits[] = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
     FILE *in = imgfile_fopen(path);
-    bool ok = in != NULL && fstat(fileno(in), &st) == 0 && st.st_size <= EMBED_MAX_BYTES;
-    size_t size = ok ? (size_t)st.st_size : 0;
-    unsigned char *d = calloc(1, size + 2); /* two bytes more, zeroed, for base64's last group */
-    char *uri = malloc(size / 3 * 4 + 32), *u = uri;
-    ok = ok && d != NULL && uri != NULL && fread(d, 1, size, in) == size;
-    u += ok ? sprintf(uri, "data:image/png;base64,") : 0;
-    for (size_t i = 0; ok && i < size; i += 3, u += 4) {
-        unsigned long bits = (unsigned long)d[i] << 16 | (unsigned long)d[i + 1] << 8 | d[i + 2];
-        u[0] = digits[(bits >> 18) & 63];
-        u[1] = digits[(bits >> 12) & 63];
-        u[2] = i + 1 < size ? digits[(bits >> 6) & 63] : '=';
-        u[3] = i + 2 < size ? digits[bits & 63] : '=';
-        u[4] = '\0';
+    unsigned char d[3];
+    size_t n;
+    fputs("data:image/png;base64,", f);
+    while (in != NULL && (n = fread(memset(d, 0, sizeof d), 1, sizeof d, in)) > 0) {
+        /* Three bytes make four digits; a '=' stands for each digit of a missing byte. */
+        unsigned long bits = (unsigned long)d[0] << 16 | (unsigned long)d[1] << 8 | d[2];
+        for (size_t j = 0; j < 4; j++)
+            fputc(j <= n ? digits[(bits >> (18 - 6 * j)) & 63] : '=', f);
     }
     if (in != NULL)
         fclose(in);
-    free(d);
-    if (!ok)
-        free(uri);
-    return ok ? uri : NULL;
-}
-
-/* Returns a submission's overall verdict: PASS when every scene passes, BUILD FAILED, or
- * FAIL. */
-static const VerdictInfo *overall(const Grading *g, const Submission *s)
-{
-    return &verdict_info[s->build_message != NULL                   ? VERDICT_BUILD_FAILED
-                         : s->tally[TALLY_PASS] == g->render_count ? VERDICT_PASS
-                                                                   : VERDICT_FAIL];
 }
 
 /* Writes the page's head, with a style rule a reference picture, each embedded once and
@@ -108,17 +99,16 @@ static const VerdictInfo *overall(const Grading *g, const Submission *s)
  * summary: a row a submission, linking to its details. */
 static void write_heading(FILE *f, const Grading *g)
 {
-    int passed = 0;
+    int passed = 0, w, h;
     fprintf(f, "<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n"
                "<meta name=\"viewport\" content=\"width=device-width, initial-scale=1\">\n"
                "<title>%s: grading report</title>\n<style>\n%s", html(g->part), style);
-    for (int k = 0; k < g->render_count; k++) {
-        int w, h;
-        char *uri = picture_uri(g->renders[k].reference_show, &w, &h);
-        if (uri != NULL)
-            fprintf(f, ".ref%d{aspect-ratio:%d/%d;background-image:url(%s)}\n", k, w, h, uri);
-        free(uri);
-    }
+    for (int k = 0; k < g->render_count; k++)
+        if (picture_size(g->renders[k].reference_show, &w, &h)) {
+            fprintf(f, ".ref%d{aspect-ratio:%d/%d;background-image:url(", k, w, h);
+            put_picture(f, g->renders[k].reference_show);
+            fputs(")}\n", f);
+        }
     fprintf(f, "</style>\n</head>\n<body>\n<header class=\"page\"><div>\n<h1>Grading report: "
                "part %s</h1>\n<p class=\"meta\">%d submission%s from <code>%s</code>, %d scene%s "
                "each, graded %s.</p>\n<p class=\"meta\">A pixel differs when one of its channels "
@@ -152,17 +142,9 @@ static void write_heading(FILE *f, const Grading *g)
             fprintf(f, "<span class=\"dot %s\" title=\"%s: %s\"></span>", tally_class[v->tally],
                     html(g->renders[k].name), v->name);
         }
-        fprintf(f, "</td><td>%s</td></tr>\n", badge(overall(g, s)));
+        fprintf(f, "</td><td>%s</td></tr>\n", badge(g, s, -1));
     }
     fputs("</tbody>\n</table>\n</section>\n", f);
-}
-
-/* Writes a block of a program's output, or nothing when there is none. */
-static void write_log(FILE *f, const char *title, const char *log, bool open)
-{
-    if (log != NULL)
-        fprintf(f, "<details class=\"log\"%s><summary>%s</summary><pre>%s</pre></details>\n",
-                open ? " open" : "", title, html(log));
 }
 
 /* Writes a figure of scene k: the reference's picture with classes `same` when it stands
@@ -173,19 +155,17 @@ static void write_figure(FILE *f, const char *same, const char *path, double wid
                          const char *alt, const char *caption, const char *none)
 {
     int w, h;
-    char *uri = same == NULL ? picture_uri(path, &w, &h) : NULL;
     fputs("<figure>", f);
     if (same != NULL)
         fprintf(f, "<div class=\"pic %s%d\" role=\"img\" aria-label=\"%s\"></div>", same, k, alt);
-    else if (uri != NULL)
-        fprintf(f,
-                "<img class=\"pic%s\" width=\"%d\" height=\"%d\" style=\"width:%.1f%%\" "
-                "alt=\"%s\" src=\"%s\">",
-                w <= PIXELATED_WIDTH ? " px" : "", w, h, 100 * width, alt, uri);
-    else /* the reference's rule gives the box its shape; .pic.none wins its background */
+    else if (picture_size(path, &w, &h)) {
+        fprintf(f, "<img class=\"pic%s\" width=\"%d\" height=\"%d\" style=\"width:%.1f%%\" "
+                   "alt=\"%s\" src=\"", w <= PIXELATED_WIDTH ? " px" : "", w, h, 100 * width, alt);
+        put_picture(f, path);
+        fputs("\">", f);
+    } else /* the reference's rule gives the box its shape; .pic.none wins its background */
         fprintf(f, "<div class=\"pic none ref%d\">%s</div>", k, none);
     fprintf(f, "<figcaption>%s</figcaption></figure>\n", caption);
-    free(uri);
 }
 
 /* Writes the pictures of a scene side by side, the reference, the submitted image and the
@@ -216,12 +196,20 @@ static void write_pictures(FILE *f, const SceneResult *res, int k)
                 fig->max[0] * 255, fig->max[1] * 255, fig->max[2] * 255, fig->mean * 255,
                 fig->rmse,
                 isinf(fig->psnr) ? "&infin; (equal)" : grade_format("%.2f dB", fig->psnr),
-                fig->differing, fig->pixels > 0 ? 100.0 * fig->differing / fig->pixels : 0.0,
-                fig->has_box
+                fig->differing, 100.0 * fig->differing / fig->pixels,
+                fig->differing > 0
                     ? grade_format("<tr><th>Region</th><td>(%d,%d)&ndash;(%d,%d)</td></tr>",
                                    fig->box[0], fig->box[1], fig->box[2], fig->box[3])
                     : "");
     fputs("</div>\n", f);
+}
+
+/* Writes a block of a program's output, or nothing when there is none. */
+static void write_log(FILE *f, const char *title, const char *log, bool open)
+{
+    if (log != NULL)
+        fprintf(f, "<details class=\"log\"%s><summary>%s</summary><pre>%s</pre></details>\n",
+                open ? " open" : "", title, html(log));
 }
 
 /* Writes the whole page: the heading and summary, then a section a submission with its
@@ -235,7 +223,7 @@ static void write_html(FILE *f, const Grading *g)
         bool broken = s->build_message != NULL;
         fprintf(f, "<section id=\"s%d\">\n<h2><span class=\"name\">%s</span><span class=\"kind\">"
                    "%s</span>%s<a class=\"back\" href=\"#summary\">&uarr; summary</a></h2>\n",
-                i + 1, html(s->name), s->program ? "program" : "images", badge(overall(g, s)));
+                i + 1, html(s->name), s->program ? "program" : "images", badge(g, s, -1));
         if (broken)
             fprintf(f, "<div class=\"broken\"><strong>The build failed:</strong> %s. No scene "
                        "could be rendered.", html(s->build_message));
@@ -246,22 +234,22 @@ static void write_html(FILE *f, const Grading *g)
         for (int k = 0; k < g->render_count && !broken; k++) {
             const Render *r = &g->renders[k];
             const SceneResult *res = &s->results[k];
-            const VerdictInfo *v = &verdict_info[res->verdict];
             fprintf(f, "<details class=\"scene\"%s>\n<summary><span class=\"scene-name\">%s</span>"
                        "%s<span class=\"message\">%s</span>%s</summary>\n<div class=\"scene-body\">"
                        "\n<p class=\"file\">Scene <code>%s",
-                    res->verdict == VERDICT_PASS ? "" : " open", html(r->name), badge(v),
+                    res->verdict == VERDICT_PASS ? "" : " open", html(r->name), badge(g, s, k),
                     html(res->message),
                     res->seconds > 0
                         ? grade_format("<span class=\"time\">%.2f s</span>", res->seconds)
                         : "",
                     html(r->scene));
-            for (char **a = r->args; *a != NULL; a++)
+            for (char **a = r->argv + 3; *a != NULL; a++)
                 fprintf(f, " %s", html(*a));
             fputs("</code></p>\n", f);
             if (res->compared || res->relative_width > 0)
                 write_pictures(f, res, k);
-            write_log(f, "Program output (the last lines)", res->log_tail, v->tally == TALLY_ERROR);
+            write_log(f, "Program output (the last lines)", res->log_tail,
+                      verdict_info[res->verdict].tally == TALLY_ERROR);
             fputs("</div>\n</details>\n", f);
         }
         fputs(broken ? "</div>\n</section>\n" : "</section>\n", f);
@@ -272,27 +260,28 @@ static void write_html(FILE *f, const Grading *g)
             html(g->work));
 }
 
-/* Writes text as one CSV field and a comma: quoted, its quotes doubled (RFC 4180), when it
- * holds a comma, a quote or a line break, or starts or ends with a space. A text that a
- * spreadsheet would take for a formula, starting with =, +, -, @, a tab or a carriage
- * return, gets a quote ' first, and quotes around. */
-static void csv_field(FILE *f, const char *text)
+/* Returns text as a CSV field: quoted, its quotes doubled (RFC 4180), when it holds a
+ * comma, a quote or a line break, or starts or ends with a space; a text that a spreadsheet
+ * would take for a formula (=, +, -, @, a tab or a carriage return first) gets a quote '
+ * first, and quotes around. */
+static char *csv(const char *text)
 {
     size_t len = strlen(text);
     bool formula = len > 0 && strchr("=+-@\t\r", text[0]) != NULL;
     bool quote = formula || strpbrk(text, ",\"\r\n") != NULL ||
                  (len > 0 && (text[0] == ' ' || text[len - 1] == ' '));
-    fputs(formula ? "\"'" : quote ? "\"" : "", f);
-    for (const char *p = text; *p != '\0'; p++) {
-        if (*p == '"')
-            fputc('"', f);
-        fputc(*p, f);
+    char *out = grade_alloc(2 * len + 4), *o = stpcpy(out, formula ? "\"'" : quote ? "\"" : "");
+    for (const char *t = text; *t != '\0'; t++) {
+        if (*t == '"')
+            *o++ = '"';
+        *o++ = *t;
     }
-    fputs(quote ? "\"," : ",", f);
+    strcpy(o, quote ? "\"" : "");
+    return out;
 }
 
 /* Writes the CSV: a header line, then one line a submission and scene; the figures, which
- * need no quoting, are empty when no comparison was made. */
+ * need no quoting but the box, are empty when no comparison was made. */
 static void write_csv(FILE *f, const Grading *g)
 {
     fputs("submission,scene,verdict,max_diff_r,max_diff_g,max_diff_b,mean_abs_diff,rmse,"
@@ -301,53 +290,41 @@ static void write_csv(FILE *f, const Grading *g)
         for (int k = 0; k < g->render_count; k++) {
             const SceneResult *res = &g->subs[i].results[k];
             const Figures *fig = &res->figures;
-            csv_field(f, g->subs[i].name);
-            csv_field(f, g->renders[k].name);
-            csv_field(f, verdict_info[res->verdict].name);
-            if (res->compared)
-                fprintf(f, "%.6g,%.6g,%.6g,%.6g,%.6g,%s,%ld,%.6g,", fig->max[0], fig->max[1],
-                        fig->max[2], fig->mean, fig->rmse,
-                        isinf(fig->psnr) ? "inf" : grade_format("%.2f", fig->psnr), fig->differing,
-                        fig->pixels > 0 ? (double)fig->differing / fig->pixels : 0.0);
-            else
-                fputs(",,,,,,,,", f);
-            if (res->compared && fig->has_box)
-                fprintf(f, "\"(%d,%d)-(%d,%d)\"", fig->box[0], fig->box[1], fig->box[2],
-                        fig->box[3]);
-            fputc(',', f);
-            csv_field(f, res->message);
-            if (res->seconds > 0)
-                fprintf(f, "%.3f", res->seconds);
-            fputc('\n', f);
+            /* glibc prints an infinite PSNR as "inf" */
+            char *figures = !res->compared ? ",,,,,,,,," : grade_format(
+                "%.6g,%.6g,%.6g,%.6g,%.6g,%.2f,%ld,%.6g,%s,", fig->max[0], fig->max[1],
+                fig->max[2], fig->mean, fig->rmse, fig->psnr, fig->differing,
+                (double)fig->differing / fig->pixels,
+                fig->differing == 0 ? "" : grade_format("\"(%d,%d)-(%d,%d)\"", fig->box[0],
+                                                        fig->box[1], fig->box[2], fig->box[3]));
+            fprintf(f, "%s,%s,%s,%s%s,%s\n", csv(g->subs[i].name), csv(g->renders[k].name),
+                    verdict_info[res->verdict].name, figures, csv(res->message),
+                    res->seconds > 0 ? grade_format("%.3f", res->seconds) : "");
         }
 }
 
-/* Writes g->out/name with write, through a temporary renamed onto it so that it appears
- * only complete; returns its path, or NULL (reported) on any failure. */
-static char *write_whole(const Grading *g, const char *name, void (*write)(FILE *, const Grading *))
+/* Writes the file at path with write, through a temporary renamed onto it so that it
+ * appears only complete (outfile_commit fails on a write error too); false (reported) on
+ * any failure. */
+static bool write_whole(const char *path, const Grading *g, void (*write)(FILE *, const Grading *))
 {
-    char *path = grade_format("%s/%s", g->out, name);
     OutFile out;
     Error err;
     bool ok = outfile_open(&out, path, &err);
     if (ok)
         write(out.file, g);
-    /* outfile_commit fails on a write error too. */
-    if (!ok || !outfile_commit(&out, &err)) {
-        fprintf(stderr, "grade: cannot write %s: %s\n", path, err.text);
-        return NULL;
-    }
-    return path;
+    return (ok && outfile_commit(&out, &err)) || grade_fail("cannot write %s: %s", path, err.text);
 }
 
 /* Writes grades.csv and report.html into g->out; false (reported) when it cannot. */
 bool report_write(const Grading *g)
 {
-    char *csv = write_whole(g, "grades.csv", write_csv);
-    char *html = csv != NULL ? write_whole(g, "report.html", write_html) : NULL;
-    if (html != NULL && !g->quiet)
-        fprintf(stderr, "grade: wrote %s and %s\n", html, csv);
-    return html != NULL;
+    char *csv = grade_format("%s/grades.csv", g->out);
+    char *page = grade_format("%s/report.html", g->out);
+    if (!write_whole(csv, g, write_csv) || !write_whole(page, g, write_html))
+        return false;
+    fprintf(g->progress, "grade: wrote %s and %s\n", page, csv);
+    return true;
 }
 
 /* Prints, for a student checking their own work, each scene's verdict and reason, and the

@@ -29,6 +29,9 @@
 /* The end of a program's output that the report shows. */
 #define TAIL_BYTES 2048
 
+/* SIGCHLD alone: held back by the grader, for the wait loop to wait for. */
+static sigset_t sigchld;
+
 /* Makes SIGINT, SIGTERM and SIGHUP (the terminal going away) requests to stop, which the
  * wait loop polls; holds SIGCHLD back for it to wait for; and makes the grader the parent
  * of any process a child leaves behind (a subreaper), so that it can end those too. */
@@ -38,10 +41,9 @@ void run_init(void)
     signal(SIGHUP, stop_request);
     /* With its output piped into head, the grader must not die before ending a child. */
     signal(SIGPIPE, SIG_IGN);
-    sigset_t child;
-    sigemptyset(&child);
-    sigaddset(&child, SIGCHLD);
-    sigprocmask(SIG_BLOCK, &child, NULL);
+    sigemptyset(&sigchld);
+    sigaddset(&sigchld, SIGCHLD);
+    sigprocmask(SIG_BLOCK, &sigchld, NULL);
 #ifdef __linux__
     prctl(PR_SET_CHILD_SUBREAPER, 1, 0, 0, 0);
 #endif
@@ -50,49 +52,14 @@ void run_init(void)
 /* Waits until a child ends (SIGCHLD), a signal asks to stop, or `seconds` pass. */
 static void wait_for_signal(double seconds)
 {
-    sigset_t child;
-    sigemptyset(&child);
-    sigaddset(&child, SIGCHLD);
     struct timespec t = {(time_t)seconds, (long)((seconds - (double)(time_t)seconds) * 1e9)};
-    sigtimedwait(&child, NULL, &t);
+    sigtimedwait(&sigchld, NULL, &t);
 }
 
-/* Closes every file descriptor above stderr, so that a child holds none of the grader's
- * files, nor the jobserver pipes of a make that runs the grader. */
-static void close_other_files(void)
-{
-    DIR *d = opendir("/proc/self/fd");
-    if (d == NULL) {
-        for (int fd = 3; fd < 1024; fd++)
-            close(fd);
-        return;
-    }
-    struct dirent *e;
-    while ((e = readdir(d)) != NULL) {
-        int fd = atoi(e->d_name);
-        if (fd > 2 && fd != dirfd(d))
-            close(fd);
-    }
-    closedir(d);
-}
-
-/* Sets a resource limit, soft and hard, so that the child cannot raise it again; a lower
- * hard limit already set stays, as only root may raise one. */
-static void set_limit(int resource, long long value)
-{
-    struct rlimit r;
-    rlim_t v = (rlim_t)value;
-    if (getrlimit(resource, &r) != 0)
-        return;
-    r.rlim_cur = r.rlim_max = r.rlim_max != RLIM_INFINITY && v > r.rlim_max ? r.rlim_max : v;
-    setrlimit(resource, &r);
-}
-
-/* Prepares a new child: its own process group, stdin from /dev/null, output to the log,
- * the limits, the folder; exits with EXEC_FAILED (why, in the log) when it cannot. The
- * signals the grader catches go back to their defaults at exec; the one it ignores and
- * the one it holds back are given back here. */
-static void child_setup(const RunSpec *spec)
+/* Prepares a new child: its own process group, the signals as they were (those caught go
+ * back to their defaults at exec), stdin from /dev/null, output to the log (NULL: /dev/null),
+ * the limits, the folder (NULL: the grader's); exits with EXEC_FAILED when it cannot. */
+static void child_setup(const char *dir, const char *log, long long memory_limit)
 {
     setpgid(0, 0);
 #ifdef __linux__
@@ -107,89 +74,102 @@ static void child_setup(const RunSpec *spec)
     /* A link or a FIFO a student's program left at the log's path is neither followed
      * nor waited on: the open fails, and the child with it. */
     int flags = O_WRONLY | O_CREAT | O_TRUNC | O_NOFOLLOW | O_NONBLOCK;
-    int out = spec->log != NULL ? open(spec->log, flags, 0644) : open("/dev/null", O_WRONLY);
+    int out = log != NULL ? open(log, flags, 0644) : open("/dev/null", O_WRONLY);
     if (in < 0 || out < 0 || dup2(in, 0) < 0 || dup2(out, 1) < 0 || dup2(out, 2) < 0)
         _exit(EXEC_FAILED);
-    close_other_files();
-    set_limit(RLIMIT_CORE, 0);
-    set_limit(RLIMIT_FSIZE, FILE_LIMIT);
-    if (spec->memory_limit > 0)
-        set_limit(RLIMIT_AS, spec->memory_limit);
+    /* Nor does the child keep the grader's files, or the jobserver pipes of a make that
+     * runs the grader: every descriptor above stderr is closed. */
+    DIR *fds = opendir("/proc/self/fd");
+    for (struct dirent *e; fds != NULL && (e = readdir(fds)) != NULL;)
+        if (atoi(e->d_name) > 2 && atoi(e->d_name) != dirfd(fds))
+            close(atoi(e->d_name));
+    if (fds == NULL || closedir(fds) != 0)
+        _exit(EXEC_FAILED);
+    /* Soft and hard, so that the child cannot raise them again; should the grader's own hard
+     * limit be lower, setrlimit fails and that one stays. */
+    setrlimit(RLIMIT_CORE, &(struct rlimit){0, 0});
+    setrlimit(RLIMIT_FSIZE, &(struct rlimit){FILE_LIMIT, FILE_LIMIT});
+    if (memory_limit > 0)
+        setrlimit(RLIMIT_AS, &(struct rlimit){(rlim_t)memory_limit, (rlim_t)memory_limit});
     /* make hands its flags and jobserver to sub-makes through these: a student's make is
      * not a sub-make of the one that may be running the grader. */
     static const char *const make_vars[] = {"MAKEFLAGS", "MFLAGS",    "GNUMAKEFLAGS",
                                             "MAKELEVEL", "MAKEFILES", "MAKEOVERRIDES"};
     for (size_t k = 0; k < sizeof make_vars / sizeof make_vars[0]; k++)
         unsetenv(make_vars[k]);
-    if (spec->dir != NULL && chdir(spec->dir) != 0) {
-        fprintf(stderr, "grade: cannot enter '%s': %s\n", spec->dir, strerror(errno));
+    if (dir != NULL && chdir(dir) != 0) {
+        fprintf(stderr, "grade: cannot enter '%s': %s\n", dir, strerror(errno));
         _exit(EXEC_FAILED);
     }
 }
 
-/* Kills every process whose parent is the grader: while no child runs, these are what a
- * child left behind, handed over by the subreaper; an unreaped pid is never reused. */
-static void kill_children(void)
-{
-    DIR *d = opendir("/proc");
-    struct dirent *e;
-    char path[300], text[512];
-    while (d != NULL && (e = readdir(d)) != NULL) {
-        snprintf(path, sizeof path, "/proc/%s/stat", e->d_name);
-        FILE *f = isdigit((unsigned char)e->d_name[0]) ? fopen(path, "r") : NULL;
-        size_t n = f != NULL ? fread(text, 1, sizeof text - 1, f) : 0;
-        if (f != NULL)
-            fclose(f);
-        text[n] = '\0';
-        /* "pid (name) state ppid ...": the name may hold spaces and parentheses. */
-        char *name_end = strrchr(text, ')');
-        long ppid;
-        if (name_end != NULL && sscanf(name_end + 1, " %*c %ld", &ppid) == 1 &&
-            ppid == (long)getpid())
-            kill((pid_t)atol(e->d_name), SIGKILL);
-    }
-    if (d != NULL)
-        closedir(d);
-}
-
-/* Ends and reaps whatever the last child left running outside its process group, giving
- * up (with a warning) after two seconds of a fork bomb. */
+/* Ends and reaps what the last child left running outside its group, which the subreaper
+ * made the grader's children (an unreaped pid is never reused); gives up, warning, after
+ * two seconds of a fork bomb. */
 static void end_stragglers(void)
 {
+    char path[300], text[512];
     double give_up = clock_now() + 2;
     for (;;) {
         pid_t p;
         while ((p = waitpid(-1, NULL, WNOHANG)) > 0)
             continue;
-        if (p < 0 && errno == ECHILD)
+        if (p < 0) /* ECHILD: no process is left */
             return;
         if (clock_now() > give_up) {
             fprintf(stderr, "grade: warning: some processes a submission started would not end\n");
             return;
         }
-        kill_children();
+        DIR *d = opendir("/proc");
+        for (struct dirent *e; d != NULL && (e = readdir(d)) != NULL;) {
+            snprintf(path, sizeof path, "/proc/%s/stat", e->d_name);
+            FILE *f = isdigit((unsigned char)e->d_name[0]) ? fopen(path, "r") : NULL;
+            size_t n = f != NULL ? fread(text, 1, sizeof text - 1, f) : 0;
+            if (f != NULL)
+                fclose(f);
+            text[n] = '\0';
+            /* "pid (name) state ppid ...": the name may hold spaces and parentheses. */
+            const char *name_end = strrchr(text, ')');
+            long ppid;
+            if (name_end != NULL && sscanf(name_end + 1, " %*c %ld", &ppid) == 1 &&
+                ppid == (long)getpid())
+                kill((pid_t)atol(e->d_name), SIGKILL);
+        }
+        if (d != NULL)
+            closedir(d);
         wait_for_signal(0.005);
     }
 }
 
-/* Waits for child pid, killing its group at the time limit or on a stop request; then
- * reaps it and everything it left behind. */
-static RunResult wait_child(pid_t pid, const RunSpec *spec, double start)
+/* Runs argv (a program found on PATH) in a child as child_setup prepares it, with at most
+ * time_limit seconds and memory_limit bytes (0: no limit), killing its group at the limit
+ * or on a stop request; then reaps it and everything it left behind. */
+RunResult run_program(char *const argv[], const char *dir, const char *log, double time_limit,
+                      long long memory_limit)
 {
+    double start = clock_now();
+    pid_t pid = fork();
+    if (pid < 0)
+        return (RunResult){.end = RUN_NOT_RUN, .status = errno};
+    if (pid == 0) {
+        child_setup(dir, log, memory_limit);
+        execvp(argv[0], argv);
+        fprintf(stderr, "grade: cannot run '%s': %s\n", argv[0], strerror(errno));
+        _exit(EXEC_FAILED);
+    }
+    /* Also here, so that the group exists before any kill, whichever runs first. */
+    setpgid(pid, pid);
     RunResult r = {.end = RUN_EXITED};
-    for (;;) {
-        /* WNOWAIT leaves the child a zombie: its pid, its group's id, stays reserved. */
-        siginfo_t info = {0};
-        int got = waitid(P_PID, (id_t)pid, &info, WEXITED | WNOHANG | WNOWAIT);
-        if ((got == 0 && info.si_pid == pid) || (got < 0 && errno != EINTR))
-            break;
-        double left = spec->time_limit - (clock_now() - start);
-        if (stop_requested() || (spec->time_limit > 0 && left <= 0)) {
+    siginfo_t info = {0};
+    /* WNOWAIT leaves the child a zombie: its pid, its group's id, stays reserved. */
+    while (waitid(P_PID, (id_t)pid, &info, WEXITED | WNOHANG | WNOWAIT) == 0 && info.si_pid == 0) {
+        double left = time_limit - (clock_now() - start);
+        if (stop_requested() || (time_limit > 0 && left <= 0)) {
             r.end = stop_requested() ? RUN_INTERRUPTED : RUN_TIMED_OUT;
             break;
         }
         /* A stray SIGCHLD (of a process left behind) only makes the loop look again. */
-        wait_for_signal(spec->time_limit > 0 && left < 0.1 ? left : 0.1);
+        wait_for_signal(time_limit > 0 && left < 0.1 ? left : 0.1);
     }
     r.seconds = clock_now() - start;
     /* Whatever else of the group still runs (a forked child of the program) ends now. */
@@ -201,37 +181,9 @@ static RunResult wait_child(pid_t pid, const RunSpec *spec, double start)
         r.end = WIFSIGNALED(status) ? RUN_KILLED : RUN_EXITED;
         r.status = WIFSIGNALED(status) ? WTERMSIG(status) : WEXITSTATUS(status);
     }
+    r.ok = r.end == RUN_EXITED && r.status == 0;
     end_stragglers();
     return r;
-}
-
-/* Runs argv (a program found on PATH, with its arguments) in a child under spec's
- * limits; waits for it and all it started. */
-RunResult run_program(char *const argv[], const RunSpec *spec)
-{
-    if (stop_requested())
-        return (RunResult){.end = RUN_INTERRUPTED};
-    double start = clock_now();
-    /* What the grader has buffered must not be written twice, by it and by the child. */
-    fflush(NULL);
-    pid_t pid = fork();
-    if (pid < 0)
-        return (RunResult){.end = RUN_NOT_RUN, .status = errno};
-    if (pid == 0) {
-        child_setup(spec);
-        execvp(argv[0], argv);
-        fprintf(stderr, "grade: cannot run '%s': %s\n", argv[0], strerror(errno));
-        _exit(EXEC_FAILED);
-    }
-    /* Also here, so that the group exists before any kill, whichever runs first. */
-    setpgid(pid, pid);
-    return wait_child(pid, spec, start);
-}
-
-/* Tells whether a run ended with exit status 0. */
-bool run_succeeded(const RunResult *r)
-{
-    return r->end == RUN_EXITED && r->status == 0;
 }
 
 /* Returns how a run ended: "exit status 2", "killed by signal 11 (Segmentation fault)". */

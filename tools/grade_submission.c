@@ -1,4 +1,4 @@
-/* grade_submission.c: the class's submissions: listed, built and run or their images found, judged through imgdiff. */
+/* grade_submission.c: the class's submissions, listed, built and run or read, judged by imgdiff. */
 #include "grade.h"
 
 #include <ctype.h>
@@ -15,14 +15,6 @@
 #include "imgfile.h"
 #include "stop.h"
 
-/* What imgdiff --machine said about an image against its reference. */
-typedef struct {
-    Figures figures;
-    bool has_verdict, pass, has_sizes;
-    int sizes[4];     /* the reference's width and height, then the image's */
-    char reason[400]; /* imgdiff's complaint, when it made one */
-} DiffAnswer;
-
 /* Sets the verdict of res and its reason, made as printf makes it. */
 static void DIAG_PRINTF(3, 4) set_verdict(SceneResult *res, Verdict v, const char *fmt, ...)
 {
@@ -33,52 +25,14 @@ static void DIAG_PRINTF(3, 4) set_verdict(SceneResult *res, Verdict v, const cha
     res->verdict = v;
 }
 
-/* Reads what imgdiff --machine wrote (its log, stdout and stderr) into a; of imgdiff's
- * first complaint, the reason keeps what follows the file's name. */
-static void read_answer(const char *log, DiffAnswer *a)
-{
-    *a = (DiffAnswer){0};
-    FILE *f = imgfile_fopen(log);
-    Figures *fig = &a->figures;
-    char line[1024], word[16];
-    while (f != NULL && fgets(line, sizeof line, f) != NULL) {
-        line[strcspn(line, "\n")] = '\0';
-        const char *named = strstr(line, "': "); /* imgdiff: cannot read 'FILE': REASON */
-        if (sscanf(line, "verdict %15s", word) == 1) {
-            a->has_verdict = true;
-            a->pass = strcmp(word, "PASS") == 0;
-        } else if (sscanf(line, "sizes %d %d %d %d", &a->sizes[0], &a->sizes[1], &a->sizes[2],
-                          &a->sizes[3]) == 4) {
-            a->has_sizes = true;
-        } else if (sscanf(line, "box %d %d %d %d", &fig->box[0], &fig->box[1], &fig->box[2],
-                          &fig->box[3]) == 4) {
-            fig->has_box = true;
-        } else if (strncmp(line, "imgdiff: ", 9) == 0 && a->reason[0] == '\0') {
-            snprintf(a->reason, sizeof a->reason, "%.*s", (int)sizeof a->reason - 1,
-                     named != NULL ? named + 3 : line + 9);
-        } else {
-            /* || stops at the first pattern that fits the line. */
-            (void)(sscanf(line, "threshold %lf", &fig->threshold) == 1 ||
-                   sscanf(line, "allow %lf", &fig->allow) == 1 ||
-                   sscanf(line, "max %lf %lf %lf", &fig->max[0], &fig->max[1], &fig->max[2]) == 3 ||
-                   sscanf(line, "mean %lf", &fig->mean) == 1 ||
-                   sscanf(line, "rmse %lf", &fig->rmse) == 1 ||
-                   sscanf(line, "psnr %lf", &fig->psnr) == 1 ||
-                   sscanf(line, "differing %ld %ld", &fig->differing, &fig->pixels) == 2 ||
-                   sscanf(line, "heat_scale %lf", &fig->heat_scale) == 1);
-        }
-    }
-    if (f != NULL)
-        fclose(f);
-}
-
 /* Compares image, submitted for render k, with the reference through imgdiff, which also
  * writes the full-size heat map and the thumbnails the report shows; sets the verdict from
- * its answer, with the reason in words. */
+ * its --machine lines (docs/grading.md lists them), with the reason in words. */
 static void compare_image(const Grading *g, const Submission *s, int k, const char *image)
 {
     const Render *r = &g->renders[k];
     SceneResult *res = &s->results[k];
+    Figures *f = &res->figures;
     char *log = grade_format("%s/%s.diff.txt", s->work, r->name);
     res->image_show = grade_format("%s/%s.show.png", s->work, r->name);
     res->heat_show = grade_format("%s/%s.heat-show.png", s->work, r->name);
@@ -86,15 +40,32 @@ static void compare_image(const Grading *g, const Submission *s, int k, const ch
                     (char *)g->allow, "--diff", grade_format("%s/%s.heat.png", s->work, r->name),
                     "--thumb", res->image_show, "--diff-thumb", res->heat_show, "--",
                     r->reference, (char *)image, NULL};
-    RunSpec spec = {.log = log, .time_limit = 600, .memory_limit = RUN_OWN_MEMORY(g->memory_limit)};
-    RunResult run = run_program(argv, &spec);
-    bool exited = run.end == RUN_EXITED;
-    DiffAnswer a;
-    read_answer(log, &a);
-    const Figures *f = &a.figures;
-    Verdict v = a.pass ? VERDICT_PASS : VERDICT_FAIL;
-    res->compared = exited && run.status <= 1 && a.has_verdict;
-    res->figures = *f;
+    RunResult run = run_program(argv, NULL, log, 600, RUN_OWN_MEMORY(g->memory_limit));
+    FILE *in = imgfile_fopen(log);
+    char line[1024], *reason = NULL;
+    int size[4] = {0}; /* the reference's width and height, then the image's, when they differ */
+    while (in != NULL && fgets(line, sizeof line, in) != NULL) {
+        line[strcspn(line, "\n")] = '\0';
+        const char *named = strstr(line, "': "); /* imgdiff: cannot read 'FILE': REASON */
+        if (reason == NULL && strncmp(line, "imgdiff: ", 9) == 0)
+            reason = grade_format("%s", named != NULL ? named + 3 : line + 9);
+        /* || stops at the first pattern that fits the line. */
+        (void)(sscanf(line, "sizes %d %d %d %d", size, size + 1, size + 2, size + 3) == 4 ||
+               sscanf(line, "box %d %d %d %d", f->box, f->box + 1, f->box + 2, f->box + 3) == 4 ||
+               sscanf(line, "threshold %lf", &f->threshold) == 1 ||
+               sscanf(line, "allow %lf", &f->allow) == 1 ||
+               sscanf(line, "max %lf %lf %lf", &f->max[0], &f->max[1], &f->max[2]) == 3 ||
+               sscanf(line, "mean %lf", &f->mean) == 1 ||
+               sscanf(line, "rmse %lf", &f->rmse) == 1 ||
+               sscanf(line, "psnr %lf", &f->psnr) == 1 ||
+               sscanf(line, "differing %ld %ld", &f->differing, &f->pixels) == 2 ||
+               sscanf(line, "heat_scale %lf", &f->heat_scale) == 1);
+    }
+    if (in != NULL)
+        fclose(in);
+    /* imgdiff's exit status: 0 when the images match, 1 when not, 2 on trouble */
+    Verdict v = run.ok ? VERDICT_PASS : VERDICT_FAIL;
+    res->compared = run.end == RUN_EXITED && run.status <= 1;
     res->identical = res->compared && f->max[0] == 0 && f->max[1] == 0 && f->max[2] == 0;
     if (res->identical)
         set_verdict(res, v, "identical to the reference");
@@ -104,60 +75,53 @@ static void compare_image(const Grading *g, const Submission *s, int k, const ch
         set_verdict(res, v,
                     "%.3g%% of the pixels differ by more than %.3g/255, %s the %.3g%% allowed",
                     100.0 * f->differing / f->pixels, f->threshold * 255,
-                    a.pass ? "within" : "more than", f->allow * 100);
-    else if (exited && a.has_sizes) {
+                    v == VERDICT_PASS ? "within" : "more than", f->allow * 100);
+    else if (size[0] > 0) {
         set_verdict(res, VERDICT_WRONG_SIZE, "the image is %d x %d pixels, the reference %d x %d",
-                    a.sizes[2], a.sizes[3], a.sizes[0], a.sizes[1]);
-        res->relative_width = a.sizes[0] > 0 ? (double)a.sizes[2] / a.sizes[0] : 0;
-    } else if (exited && a.reason[0] != '\0')
-        set_verdict(res, VERDICT_UNREADABLE, "the file cannot be read as an image: %s", a.reason);
+                    size[2], size[3], size[0], size[1]);
+        res->relative_width = (double)size[2] / size[0];
+    } else if (reason != NULL)
+        set_verdict(res, VERDICT_UNREADABLE, "the file cannot be read as an image: %s", reason);
     else if (run.end != RUN_INTERRUPTED)
         set_verdict(res, VERDICT_UNREADABLE, "imgdiff could not compare the file (%s)",
                     run_describe(&run));
 }
 
-/* Tells whether the file at path, found for render r, is an image handed in: a regular
- * file, not a symbolic link nor the reference itself under another name; else sets the
- * verdict, LINK or UNREADABLE. lstat only: a FIFO or a device is never opened. */
-static bool handed_in(const Render *r, SceneResult *res, const char *path)
+/* Judges the file at path as the image of render k, with lstat first so that a FIFO or a
+ * device is never opened: MISSING (saying `missing`), LINK, UNREADABLE, or compared. */
+static void judge_file(const Grading *g, const Submission *s, int k, const char *path,
+                       const char *missing)
 {
+    SceneResult *res = &s->results[k];
     struct stat st, ref;
     const char *name = strrchr(path, '/') + 1;
     char target[256] = "";
-    if (lstat(path, &st) != 0) {
-        set_verdict(res, VERDICT_UNREADABLE, "%s cannot be read: %s", name, strerror(errno));
-    } else if (S_ISLNK(st.st_mode)) {
-        ssize_t n = readlink(path, target, sizeof target - 1);
-        target[n > 0 ? n : 0] = '\0';
+    if (lstat(path, &st) != 0)
+        set_verdict(res, VERDICT_MISSING, "%s", missing);
+    else if (S_ISLNK(st.st_mode) && readlink(path, target, sizeof target - 1) >= 0)
         set_verdict(res, VERDICT_LINK, "%s is a symbolic link to %s: not an image handed in", name,
                     target);
-    } else if (!S_ISREG(st.st_mode)) {
+    else if (!S_ISREG(st.st_mode))
         set_verdict(res, VERDICT_UNREADABLE, "%s is not a regular file (%s)", name,
                     imgfile_kind_text(st.st_mode));
-    } else if (stat(r->reference, &ref) == 0 && ref.st_dev == st.st_dev &&
-               ref.st_ino == st.st_ino) {
+    else if (stat(g->renders[k].reference, &ref) == 0 && ref.st_dev == st.st_dev &&
+             ref.st_ino == st.st_ino)
         set_verdict(res, VERDICT_LINK, "%s is a hard link to the reference image", name);
-    } else {
-        return true;
-    }
-    return false;
+    else
+        compare_image(g, s, k, path);
 }
 
 /* Grades render k of a submission of images: finds the image, by the reference's name or
- * with another of .png, .pfm and .exr, and compares it. */
+ * with another of .png, .pfm and .exr, and judges it. */
 static void grade_image(const Grading *g, Submission *s, int k)
 {
-    const Render *r = &g->renders[k];
     static const char *const endings[] = {".png", ".pfm", ".exr"};
+    const Render *r = &g->renders[k];
     char *found = grade_format("%s/%s", s->path, r->image);
     struct stat st;
     for (size_t e = 0; e < sizeof endings / sizeof *endings && lstat(found, &st) != 0; e++)
         found = grade_format("%s/%s%s", s->path, r->name, endings[e]);
-    if (lstat(found, &st) != 0)
-        set_verdict(&s->results[k], VERDICT_MISSING, "no %s.png, .pfm or .exr in the submission",
-                    r->name);
-    else if (handed_in(r, &s->results[k], found))
-        compare_image(g, s, k, found);
+    judge_file(g, s, k, found, grade_format("no %s.png, .pfm or .exr in the submission", r->name));
 }
 
 /* Copies submission s into its work folder (cp -P: a link stays a link, never followed out
@@ -169,21 +133,17 @@ static char *build(const Grading *g, Submission *s)
     char *program = grade_format("%s/raytra", copy);
     char *cp[] = {"cp", "-R", "-P", "--", grade_format("%s/.", s->path), copy, NULL};
     char *make[] = {"make", NULL};
-    RunSpec spec = {.log = log, .time_limit = 600};
-    RunResult r = run_program(cp, &spec);
-    if (!run_succeeded(&r)) {
+    RunResult r = run_program(cp, NULL, log, 600, 0);
+    if (!r.ok)
         s->build_message = grade_format("the submission could not be copied to build it (cp: %s)",
                                         run_describe(&r));
-    } else {
-        spec = (RunSpec){copy, log, g->build_time_limit, g->memory_limit};
-        r = run_program(make, &spec);
-        if (r.end == RUN_TIMED_OUT)
-            s->build_message = grade_format("make did not finish within %g s", g->build_time_limit);
-        else if (!run_succeeded(&r))
-            s->build_message = grade_format("make failed (%s)", run_describe(&r));
-        else if (grade_kind(program) != S_IFREG || access(program, X_OK) != 0)
-            s->build_message = "make succeeded but made no executable raytra beside the Makefile";
-    }
+    else if ((r = run_program(make, copy, log, g->build_time_limit, g->memory_limit)).end ==
+             RUN_TIMED_OUT)
+        s->build_message = grade_format("make did not finish within %g s", g->build_time_limit);
+    else if (!r.ok)
+        s->build_message = grade_format("make failed (%s)", run_describe(&r));
+    else if (grade_kind(program) != S_IFREG || access(program, X_OK) != 0)
+        s->build_message = "make succeeded but made no executable raytra beside the Makefile";
     s->build_log_tail = run_log_tail(log);
     return s->build_message != NULL || r.end == RUN_INTERRUPTED ? NULL : program;
 }
@@ -205,22 +165,16 @@ static bool says_out_of_memory(const char *output)
 
 /* Grades render k of a submission that is a program: runs it on the scene under the
  * limits, in a scratch folder, and judges how it ended and what it wrote. */
-static void run_scene(const Grading *g, Submission *s, int k, const char *program)
+static void run_scene(const Grading *g, Submission *s, int k, char *program)
 {
     const Render *r = &g->renders[k];
     SceneResult *res = &s->results[k];
-    char *image = grade_format("%s/images/%s", s->work, r->image);
     char *log = grade_format("%s/%s.log", s->work, r->name);
-    int n = 0;
-    while (r->args[n] != NULL)
-        n++;
-    char **argv = grade_alloc(((size_t)n + 4) * sizeof *argv);
-    argv[0] = (char *)program;
-    argv[1] = r->scene_path;
-    argv[2] = image;
-    memcpy(argv + 3, r->args, ((size_t)n + 1) * sizeof *argv);
-    RunSpec spec = {grade_format("%s/run", s->work), log, g->time_limit, g->memory_limit};
-    RunResult run = run_program(argv, &spec);
+    char *image = grade_format("%s/images/%s", s->work, r->image);
+    r->argv[0] = program;
+    r->argv[2] = image;
+    RunResult run = run_program(r->argv, grade_format("%s/run", s->work), log, g->time_limit,
+                                g->memory_limit);
     res->seconds = run.seconds;
     res->log_tail = run_log_tail(log);
     char *how = run_describe(&run);
@@ -238,29 +192,27 @@ static void run_scene(const Grading *g, Submission *s, int k, const char *progra
         set_verdict(res, VERDICT_CRASHED, "%s", how);
     else if (run.end == RUN_NOT_RUN)
         set_verdict(res, VERDICT_ERROR, "the grader could not start the program (%s)", how);
-    else if (exited && !wrote && failed)
+    else if (!wrote && failed)
         set_verdict(res, VERDICT_ERROR, "ended with %s and wrote no image", how);
-    else if (exited && !wrote)
-        set_verdict(res, VERDICT_MISSING, "ended normally but wrote no %s", r->image);
-    else if (exited && handed_in(r, res, image))
-        compare_image(g, s, k, image);
+    else if (exited)
+        judge_file(g, s, k, image, grade_format("ended normally but wrote no %s", r->image));
     /* An image written before a failure exit is graded; the failure is told. */
-    if (exited && wrote && failed && res->verdict != VERDICT_OUT_OF_MEMORY) {
+    if (wrote && failed && exited && res->verdict != VERDICT_OUT_OF_MEMORY) {
         size_t len = strlen(res->message);
         snprintf(res->message + len, sizeof res->message - len, "; the program ended with %s", how);
     }
 }
 
-/* Grades every render of submission s into s->results and counts the verdicts; false
- * when grading must stop (interrupted, or the grader's own trouble, reported). */
-static bool grade_one(const Grading *g, Submission *s)
+/* Grades every render of submission s, counts the verdicts and tells them on f ("5 scenes:
+ * 4 pass, 1 timeout"); false when grading must stop (interrupted, or trouble, reported). */
+static bool grade_one(const Grading *g, Submission *s, FILE *f)
 {
     s->results = grade_alloc((size_t)g->render_count * sizeof *s->results);
     /* A program is built and run, in folders of its own; a folder of images is read. */
     bool runs = s->program && s->link == NULL;
-    bool ok = grade_make_folder(s->work, true) &&
-              (!runs || (grade_make_folder(grade_format("%s/images", s->work), true) &&
-                         grade_make_folder(grade_format("%s/run", s->work), true)));
+    bool ok = grade_make_folder(s->work) &&
+              (!runs || (grade_make_folder(grade_format("%s/images", s->work)) &&
+                         grade_make_folder(grade_format("%s/run", s->work))));
     char *program = ok && runs ? build(g, s) : NULL;
     for (int k = 0; ok && k < g->render_count && !stop_requested(); k++) {
         /* A folder that is a link (to a classmate's) is not a submission of its own. */
@@ -274,110 +226,92 @@ static bool grade_one(const Grading *g, Submission *s)
         else
             set_verdict(&s->results[k], VERDICT_BUILD_FAILED, "%s", s->build_message);
     }
-    for (int k = 0; k < g->render_count; k++)
-        s->tally[verdict_info[s->results[k].verdict].tally]++;
-    return ok && !stop_requested();
-}
-
-/* Prints how the scenes of s went: "5 scenes: 4 pass, 1 timeout". */
-static void print_tally(const Grading *g, const Submission *s)
-{
-    if (s->build_message != NULL) {
-        fprintf(stderr, "BUILD FAILED: %s\n", s->build_message);
-        return;
+    if (!ok || stop_requested()) {
+        fputc('\n', f);
+        return false;
     }
-    fprintf(stderr, "%d scene%s:", g->render_count, g->render_count == 1 ? "" : "s");
+    int count[VERDICT_COUNT] = {0};
+    for (int k = 0; k < g->render_count; k++) {
+        count[s->results[k].verdict]++;
+        s->tally[verdict_info[s->results[k].verdict].tally]++;
+    }
+    if (s->build_message != NULL) {
+        fprintf(f, "BUILD FAILED: %s\n", s->build_message);
+        return true;
+    }
+    fprintf(f, "%d scene%s:", g->render_count, g->render_count == 1 ? "" : "s");
     const char *sep = " ";
     for (int v = 0; v < VERDICT_COUNT; v++) {
-        int count = 0;
-        for (int k = 0; k < g->render_count; k++)
-            count += s->results[k].verdict == (Verdict)v;
-        if (count == 0)
+        if (count[v] == 0)
             continue;
-        fprintf(stderr, "%s%d ", sep, count);
+        fprintf(f, "%s%d ", sep, count[v]);
         for (const char *p = verdict_info[v].name; *p != '\0'; p++)
-            fputc(tolower((unsigned char)*p), stderr);
+            fputc(tolower((unsigned char)*p), f);
         sep = ", ";
     }
-    fputc('\n', stderr);
+    fputc('\n', f);
+    return true;
 }
 
-/* Grades every submission, telling the progress unless g->quiet; false when interrupted
- * or when the grader itself failed (reported). */
+/* Grades every submission, telling the progress on g->progress; false when interrupted or
+ * when the grader itself failed (reported). */
 bool submission_grade_all(Grading *g)
 {
+    FILE *f = g->progress;
+    fprintf(f, "grade: part %s, %d scene%s, %d submission%s\n", g->part, g->render_count,
+            g->render_count == 1 ? "" : "s", g->sub_count, g->sub_count == 1 ? "" : "s");
+    if (g->illustrations != NULL)
+        fprintf(f, "grade: not graded (illustrations): %s\n", g->illustrations);
     for (int k = 0; k < g->sub_count; k++) {
         Submission *s = &g->subs[k];
-        if (!g->quiet) {
-            /* Control characters made '?': a folder's name cannot play tricks on the terminal. */
-            fprintf(stderr, "grading ");
-            for (const char *p = s->name; *p != '\0'; p++)
-                fputc((unsigned char)*p < 0x20 || *p == 0x7F ? '?' : *p, stderr);
-            fprintf(stderr, " (%s): %s", s->program ? "program" : "images",
-                    s->program ? "building... " : "");
-        }
-        bool ok = grade_one(g, s);
-        if (!g->quiet && ok)
-            print_tally(g, s);
-        else if (!g->quiet)
-            fputc('\n', stderr);
-        if (!ok)
+        /* Control characters made '?': a folder's name cannot play tricks on the terminal. */
+        fprintf(f, "grading ");
+        for (const char *p = s->name; *p != '\0'; p++)
+            fputc((unsigned char)*p < 0x20 || *p == 0x7F ? '?' : *p, f);
+        fprintf(f, " (%s): %s", s->program ? "program" : "images",
+                s->program ? "building... " : "");
+        if (!grade_one(g, s, f))
             return false;
     }
     return true;
 }
 
-/* Adds the submission in the folder path, named name, with its work folder, to g; takes
- * path and work. It is a program when it holds a Makefile, as make looks for one. */
-static void add_submission(Grading *g, const char *name, char *path, char *work)
-{
-    static const char *const makefiles[] = {"GNUmakefile", "makefile", "Makefile"};
-    Submission *s = &g->subs[g->sub_count++];
-    *s = (Submission){.name = grade_format("%s", name), .path = path, .work = work};
-    for (size_t k = 0; k < sizeof makefiles / sizeof makefiles[0]; k++)
-        s->program |= grade_kind(grade_format("%s/%s", path, makefiles[k])) == S_IFREG;
-    /* A folder of the class that is a link (to a classmate's) is not graded as one. */
-    char target[PATH_MAX];
-    ssize_t n = g->self ? -1 : readlink(path, target, sizeof target - 1);
-    if (n >= 0)
-        s->link = grade_format("%.*s", (int)n, target);
-}
-
-/* Lists the submissions: the folders in g->submissions but hidden ones and the output
- * folder, in the order of their names, each with a work folder named safely for scripts
- * (03-alice); or with --self the one folder. False (reported) when there are none. */
+/* Lists the submissions, each with a work folder named safely for scripts (03-alice): the
+ * folders in g->submissions by name, but hidden ones and the output folder, or with --self
+ * the one folder; false (reported) when there are none. */
 bool submission_list(Grading *g)
 {
-    if (g->self) {
-        char *path = grade_format("%s", g->submissions);
-        g->subs = grade_alloc(sizeof *g->subs);
-        add_submission(g, basename(grade_format("%s", path)), path,
-                       grade_format("%s/1-self", g->work));
-        return true;
-    }
-    int count = 0;
-    char **names = grade_list_folders(g->submissions, &count);
-    if (names == NULL) {
-        fprintf(stderr, "grade: cannot read the folder %s: %s\n", g->submissions, strerror(errno));
-        return false;
-    }
-    char out_real[PATH_MAX] = "", real[PATH_MAX];
-    if (realpath(g->out, out_real) == NULL)
-        out_real[0] = '\0';
+    static const char *const makefiles[] = {"GNUmakefile", "makefile", "Makefile"};
+    int count = 1;
+    char *self[] = {basename(grade_format("%s", g->submissions))}, real[PATH_MAX];
+    char **names = g->self ? self : grade_list_folders(g->submissions, &count);
+    if (names == NULL)
+        return grade_fail("cannot read the folder %s: %s", g->submissions, strerror(errno));
     g->subs = grade_alloc((size_t)count * sizeof *g->subs);
     int digits = count < 100 ? 2 : count < 1000 ? 3 : 6;
     for (int k = 0; k < count; k++) {
-        char *path = grade_format("%s/%s", g->submissions, names[k]);
-        if (realpath(path, real) != NULL && strcmp(real, out_real) == 0)
+        char *path = g->self ? grade_format("%s", g->submissions)
+                             : grade_format("%s/%s", g->submissions, names[k]);
+        /* The output folder is the one whose work folder is g->work. */
+        if (!g->self && realpath(path, real) != NULL &&
+            strcmp(grade_format("%s/work", real), g->work) == 0)
             continue;
-        char *work = grade_format("%s/%0*d-%.40s", g->work, digits, g->sub_count + 1, names[k]);
+        Submission *s = &g->subs[g->sub_count++];
+        char *work = g->self ? grade_format("%s/1-self", g->work)
+                             : grade_format("%s/%0*d-%.40s", g->work, digits, g->sub_count,
+                                            names[k]);
         for (char *p = strrchr(work, '/') + 1; *p != '\0'; p++)
             if (!isalnum((unsigned char)*p) && *p != '.' && *p != '_' && *p != '-')
                 *p = '_';
-        add_submission(g, names[k], path, work);
+        *s = (Submission){.name = grade_format("%s", names[k]), .path = path, .work = work};
+        /* A program holds a Makefile, as make looks for one. */
+        for (size_t m = 0; m < sizeof makefiles / sizeof makefiles[0]; m++)
+            s->program |= grade_kind(grade_format("%s/%s", path, makefiles[m])) == S_IFREG;
+        /* A folder of the class that is a link (to a classmate's) is not graded as one. */
+        ssize_t n = g->self ? -1 : readlink(path, real, sizeof real - 1);
+        if (n >= 0)
+            s->link = grade_format("%.*s", (int)n, real);
     }
-    if (g->sub_count == 0)
-        fprintf(stderr, "grade: no submissions in %s: it should hold a folder a student\n",
-                g->submissions);
-    return g->sub_count > 0;
+    return g->sub_count > 0 ||
+           grade_fail("no submissions in %s: it should hold a folder a student", g->submissions);
 }
