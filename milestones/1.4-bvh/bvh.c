@@ -354,8 +354,9 @@ static inline Float4 float4(float a, float b, float c, float d)
  * 1 - epsilon in the near lanes more than undoes, and 1 + epsilon in the far lanes,
  * negated, likewise; rounding the origin to float moves
  * t by (o - o_float) / d, the slack. So no entry comes out later than the exact one
- * plus the slack, and no -exit larger than the exact one plus the slack (an exit just
- * below 0 too, once the slack is grown by 2^-16). FLT_MIN covers t so small that
+ * plus the slack (an entry below 0, pulled towards 0, stays below the slack, and the
+ * max with tmin >= 0 outweighs it), and no -exit larger than the exact one plus the
+ * slack (an exit just below 0 too, once the slack is grown by 2^-16). FLT_MIN covers t so small that
  * their floats have fewer than 24 digits.
  * A zero component of d makes that slab a test of the origin alone: 1/d = +inf, the
  * near face is lo and the far one hi, and the origin is rounded down for lo and up for
