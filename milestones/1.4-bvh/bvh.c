@@ -352,11 +352,11 @@ static inline Float4 float4(float a, float b, float c, float d)
  * a t computed in float may be from the exact one. Its roundings (see
  * FLOAT_TEST_EPSILON) move t by less than 4 parts in 2^24 of itself, which the factor
  * 1 - epsilon in the near lanes more than undoes, and 1 + epsilon in the far lanes,
- * negated, likewise; rounding the origin to float moves
- * t by (o - o_float) / d, the slack. So no entry comes out later than the exact one
- * plus the slack (an entry below 0, pulled towards 0, stays below the slack, and the
- * max with tmin >= 0 outweighs it), and no -exit larger than the exact one plus the
- * slack (an exit just below 0 too, once the slack is grown by 2^-16). FLT_MIN covers t so small that
+ * negated, likewise; rounding the origin to float moves t by (o - o_float) / d, the
+ * slack. So no entry comes out later than the exact one plus the slack (an entry
+ * below 0, pulled towards 0, stays below the slack, and the max with tmin >= 0
+ * outweighs it), and no -exit larger than the exact one plus the slack (an exit just
+ * below 0 too, once the slack is grown by 2^-16). FLT_MIN covers t so small that
  * their floats have fewer than 24 digits.
  * A zero component of d makes that slab a test of the origin alone: 1/d = +inf, the
  * near face is lo and the far one hi, and the origin is rounded down for lo and up for
@@ -445,8 +445,8 @@ static inline Float4 float4_max(Float4 a, Float4 b)
  * be off by the slack (see float_ray), so child k is met when enter k - leave k is at
  * most twice the slack. A NaN lane, (lo - o) * inf for a ray parallel to a slab that
  * starts on its plane, is left out: the max gives its second operand when either is
- * NaN, so x's NaN drops x and y, y's drops both too, and z's drops z, never the
- * limits; dropping a slab only meets more boxes. */
+ * NaN, so x's NaN drops x, y's drops x and y, and z's drops z, never the limits;
+ * dropping a slab only meets more boxes. */
 static inline int node_hit(const BvhNode *node, const FloatRay *fr, Float4 limits, Float4 *lanes)
 {
     const float *bounds = &node->bounds[0][0];
