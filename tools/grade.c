@@ -271,7 +271,7 @@ int main(int argc, char **argv)
               part_read_renders(&g) && prepare_work(&g) && show_references(&g) &&
               submission_list(&g) && submission_grade_all(&g) && report_write(&g);
     if (stop_requested()) {
-        fprintf(stderr, "grade: interrupted: no report written\n");
+        grade_fail("interrupted: no report written");
         return EXIT_INTERRUPTED;
     }
     if (!ok)

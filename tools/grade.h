@@ -37,13 +37,17 @@ typedef struct {
     double heat_scale; /* the difference the heat map shows white */
 } Figures;
 
+/* Where a render's positional words begin in its argv, after program, scene and image. */
+#define RENDER_WORDS 3
+
 /* One line of renders.txt: a reference image and the scene it was rendered from. */
 typedef struct {
     char *image;          /* the reference's file name: spheres-three.png */
     char *name;           /* the same without the extension: the scene's name in the report */
     char *scene;          /* the scene file as renders.txt gives it, from the repository's top */
-    char **argv;          /* a student's command line: the program and the output image are
-                           * set for each run; then the scene's path and positional words */
+    char **argv;          /* a student's command line: the program, the scene's path and the
+                           * output image (the program and the image set for each run), then
+                           * from argv[RENDER_WORDS] on the positional words, NULL-ended */
     char *reference;      /* the reference image's path */
     char *reference_show; /* its thumbnail for the report */
 } Render;

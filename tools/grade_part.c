@@ -53,9 +53,9 @@ static const CliOption *option_of(const char *word)
  * own options are left out, with a note on `notes`. */
 static void make_argv(Render *r, char *scene_path, char **words, int n, int part, FILE *notes)
 {
-    r->argv = grade_alloc(((size_t)n + 4) * sizeof *r->argv);
+    r->argv = grade_alloc(((size_t)n + RENDER_WORDS + 1) * sizeof *r->argv);
     r->argv[1] = scene_path;
-    int kept = 3;
+    int kept = RENDER_WORDS;
     for (int k = 0; k < n; k++) {
         const CliOption *o = words[k][0] == '-' ? option_of(words[k]) : NULL;
         const char *eq = strchr(words[k], '=');

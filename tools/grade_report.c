@@ -243,7 +243,7 @@ static void write_html(FILE *f, const Grading *g)
                         ? grade_format("<span class=\"time\">%.2f s</span>", res->seconds)
                         : "",
                     html(r->scene));
-            for (char **a = r->argv + 3; *a != NULL; a++)
+            for (char **a = r->argv + RENDER_WORDS; *a != NULL; a++)
                 fprintf(f, " %s", html(*a));
             fputs("</code></p>\n", f);
             if (res->compared || res->relative_width > 0)
@@ -319,11 +319,11 @@ static bool write_whole(const char *path, const Grading *g, void (*write)(FILE *
 /* Writes grades.csv and report.html into g->out; false (reported) when it cannot. */
 bool report_write(const Grading *g)
 {
-    char *csv = grade_format("%s/grades.csv", g->out);
+    char *table = grade_format("%s/grades.csv", g->out);
     char *page = grade_format("%s/report.html", g->out);
-    if (!write_whole(csv, g, write_csv) || !write_whole(page, g, write_html))
+    if (!write_whole(table, g, write_csv) || !write_whole(page, g, write_html))
         return false;
-    fprintf(g->progress, "grade: wrote %s and %s\n", page, csv);
+    fprintf(g->progress, "grade: wrote %s and %s\n", page, table);
     return true;
 }
 

@@ -98,7 +98,7 @@ static void child_setup(const char *dir, const char *log, long long memory_limit
     for (size_t k = 0; k < sizeof make_vars / sizeof make_vars[0]; k++)
         unsetenv(make_vars[k]);
     if (dir != NULL && chdir(dir) != 0) {
-        fprintf(stderr, "grade: cannot enter '%s': %s\n", dir, strerror(errno));
+        grade_fail("cannot enter '%s': %s", dir, strerror(errno));
         _exit(EXEC_FAILED);
     }
 }
@@ -154,7 +154,7 @@ RunResult run_program(char *const argv[], const char *dir, const char *log, doub
     if (pid == 0) {
         child_setup(dir, log, memory_limit);
         execvp(argv[0], argv);
-        fprintf(stderr, "grade: cannot run '%s': %s\n", argv[0], strerror(errno));
+        grade_fail("cannot run '%s': %s", argv[0], strerror(errno));
         _exit(EXEC_FAILED);
     }
     /* Also here, so that the group exists before any kill, whichever runs first. */
