@@ -37,21 +37,20 @@ Baseline *baseline_build(const Scene *scene, double *build_ms)
     rtcSetSceneBuildQuality(b->scene, RTC_BUILD_QUALITY_HIGH);
     RTCGeometry g = rtcNewGeometry(b->device, RTC_GEOMETRY_TYPE_TRIANGLE);
     rtcSetGeometryBuildQuality(g, RTC_BUILD_QUALITY_HIGH);
-    int n = scene->triangle_count;
+    /* The same indexed mesh as raytra's, its vertices rounded to float. */
+    int n = scene->triangle_count, nv = scene->vertex_count;
     float *v = rtcSetNewGeometryBuffer(g, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3,
-                                       3 * sizeof(float), (size_t)3 * n);
+                                       3 * sizeof(float), (size_t)nv);
     unsigned *index = rtcSetNewGeometryBuffer(g, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3,
                                               3 * sizeof(unsigned), (size_t)n);
-    for (int k = 0; k < n; k++) {
-        const Triangle *t = &scene->triangles[k];
-        Vec3 p[3] = {t->a, t->b, t->c};
-        for (int c = 0; c < 3; c++) {
-            v[9 * k + 3 * c] = (float)p[c].x;
-            v[9 * k + 3 * c + 1] = (float)p[c].y;
-            v[9 * k + 3 * c + 2] = (float)p[c].z;
-            index[3 * k + c] = (unsigned)(3 * k + c);
-        }
+    for (int k = 0; k < nv; k++) {
+        v[3 * k] = (float)scene->vertices[k].x;
+        v[3 * k + 1] = (float)scene->vertices[k].y;
+        v[3 * k + 2] = (float)scene->vertices[k].z;
     }
+    for (int k = 0; k < n; k++)
+        for (int c = 0; c < 3; c++)
+            index[3 * k + c] = (unsigned)scene->triangles[k].corner[c];
     rtcCommitGeometry(g);
     rtcAttachGeometry(b->scene, g);
     rtcReleaseGeometry(g);

@@ -31,15 +31,17 @@ typedef struct {
     double load_mb_per_s; /* the OBJ reader's speed; 0 for a generated mesh */
 } BenchMesh;
 
-/* Fills scene with the triangles of mesh, all of material 0. */
+/* Fills scene with the vertices and triangles of mesh, all of material 0. */
 static void scene_from_mesh(Scene *scene, const Mesh *mesh)
 {
     *scene = (Scene){0};
+    scene->vertices = malloc((size_t)mesh->vertex_count * sizeof *scene->vertices);
+    memcpy(scene->vertices, mesh->vertices, (size_t)mesh->vertex_count * sizeof *mesh->vertices);
+    scene->vertex_count = mesh->vertex_count;
     scene->triangles = malloc((size_t)mesh->triangle_count * sizeof *scene->triangles);
     for (int k = 0; k < mesh->triangle_count; k++) {
         const int *v = mesh->triangles[k];
-        scene->triangles[k] =
-            (Triangle){mesh->vertices[v[0]], mesh->vertices[v[1]], mesh->vertices[v[2]], 0, 0};
+        scene->triangles[k] = (Face){{v[0], v[1], v[2]}, 0, 0};
     }
     scene->triangle_count = mesh->triangle_count;
     scene->materials = calloc(1, sizeof *scene->materials);
@@ -75,11 +77,16 @@ static bool mesh_load(BenchMesh *m, const char *name, const char *path)
 }
 
 /* Appends the triangle a, b, c (unit vectors) split level times into 4, on the unit
- * sphere, to scene: a geodesic sphere. */
+ * sphere, to scene: a geodesic sphere. Each triangle gets three vertices of its own,
+ * which weld_vertices then merges. */
 static void subdivide(Scene *scene, Vec3 a, Vec3 b, Vec3 c, int level)
 {
     if (level == 0) {
-        scene->triangles[scene->triangle_count++] = (Triangle){a, b, c, 0, 0};
+        int first = scene->vertex_count;
+        scene->vertices[scene->vertex_count++] = a;
+        scene->vertices[scene->vertex_count++] = b;
+        scene->vertices[scene->vertex_count++] = c;
+        scene->triangles[scene->triangle_count++] = (Face){{first, first + 1, first + 2}, 0, 0};
         return;
     }
     Vec3 ab = vec3_normalize(vec3_add(a, b)), bc = vec3_normalize(vec3_add(b, c)),
@@ -88,6 +95,59 @@ static void subdivide(Scene *scene, Vec3 a, Vec3 b, Vec3 c, int level)
     subdivide(scene, ab, b, bc, level - 1);
     subdivide(scene, ca, bc, c, level - 1);
     subdivide(scene, ab, bc, ca, level - 1);
+}
+
+/* The vertices that position_compare looks up: qsort passes it no context. */
+static const Vec3 *sort_vertices;
+
+/* Orders two vertex numbers by the positions of their vertices, x first, then by number. */
+static int position_compare(const void *a, const void *b)
+{
+    int i = *(const int *)a, j = *(const int *)b;
+    Vec3 p = sort_vertices[i], q = sort_vertices[j];
+    return p.x != q.x   ? (p.x > q.x) - (p.x < q.x)
+           : p.y != q.y ? (p.y > q.y) - (p.y < q.y)
+           : p.z != q.z ? (p.z > q.z) - (p.z < q.z)
+                        : (i > j) - (i < j);
+}
+
+/* Merges the vertices of scene that lie at the same point into one, as an OBJ file
+ * lists each vertex once, keeping them in the order of their first use. A vertex on an
+ * edge is computed alike by both triangles (normalize(a + b) = normalize(b + a)), so the
+ * points that should be one are equal. */
+static void weld_vertices(Scene *scene)
+{
+    int n = scene->vertex_count, *order = malloc((size_t)n * sizeof *order),
+        *first = malloc((size_t)n * sizeof *first);
+    for (int k = 0; k < n; k++)
+        order[k] = k;
+    sort_vertices = scene->vertices;
+    qsort(order, (size_t)n, sizeof *order, position_compare);
+    /* first[v]: the lowest-numbered vertex at the point of vertex v, which leads its run. */
+    for (int k = 0, lead = 0; k < n; k++) {
+        Vec3 p = scene->vertices[order[k]], q = scene->vertices[lead];
+        if (k == 0 || p.x != q.x || p.y != q.y || p.z != q.z)
+            lead = order[k];
+        first[order[k]] = lead;
+    }
+    /* The leads are kept in their order, and first[v] becomes the number of v's lead. */
+    int count = 0;
+    for (int v = 0; v < n; v++) {
+        if (first[v] == v) {
+            scene->vertices[count] = scene->vertices[v];
+            first[v] = count++;
+        } else {
+            first[v] = first[first[v]];
+        }
+    }
+    for (int k = 0; k < scene->triangle_count; k++)
+        for (int c = 0; c < 3; c++)
+            scene->triangles[k].corner[c] = first[scene->triangles[k].corner[c]];
+    scene->vertex_count = count;
+    Vec3 *fit = realloc(scene->vertices, (size_t)count * sizeof *fit);
+    scene->vertices = fit != NULL ? fit : scene->vertices;
+    free(order);
+    free(first);
 }
 
 /* Makes a geodesic sphere of radius 1 from an icosahedron split level times:
@@ -106,9 +166,12 @@ static void mesh_sphere(BenchMesh *m, const char *name, int level)
     m->name = name;
     m->load_mb_per_s = 0;
     m->scene = (Scene){0};
-    m->scene.triangles = malloc(((size_t)20 << (2 * level)) * sizeof(Triangle));
+    size_t n = (size_t)20 << (2 * level);
+    m->scene.vertices = malloc(3 * n * sizeof *m->scene.vertices);
+    m->scene.triangles = malloc(n * sizeof *m->scene.triangles);
     for (int k = 0; k < 20; k++)
         subdivide(&m->scene, v[f[k][0]], v[f[k][1]], v[f[k][2]], level);
+    weld_vertices(&m->scene);
     m->scene.materials = calloc(1, sizeof *m->scene.materials);
     m->scene.material_count = 1;
 }
@@ -117,8 +180,10 @@ static void mesh_sphere(BenchMesh *m, const char *name, int level)
 static Box scene_box(const Scene *scene)
 {
     Box b = box_empty();
-    for (int k = 0; k < scene->triangle_count; k++)
-        b = box_union(b, box_of_triangle(&scene->triangles[k]));
+    for (int k = 0; k < scene->triangle_count; k++) {
+        Triangle tri = scene_triangle(scene, k);
+        b = box_union(b, box_of_triangle(&tri));
+    }
     return b;
 }
 
@@ -275,8 +340,11 @@ static void bench_mesh(BenchMesh *m, View v, int res)
     long np = (long)res * res, ns;
     BenchRay *primary = primary_rays(v.eye, v.view, v.fov, res);
     BenchRay *shadow = shadow_rays(&bvh, primary, np, v.light, size, &ns);
-    double bytes = (double)(scene->triangle_count * sizeof(Triangle) + bvh_bytes(&bvh)) /
-                   scene->triangle_count;
+    /* The mesh is its vertices and its triangles' indices; the BVH, its nodes and its
+     * primitive numbers. */
+    double mesh_bytes = (double)scene->vertex_count * sizeof *scene->vertices +
+                        (double)scene->triangle_count * sizeof *scene->triangles;
+    double bytes = (mesh_bytes + (double)bvh_bytes(&bvh)) / scene->triangle_count;
 
     printf("\n== %s: %d triangles; BVH: %d interior nodes, %d leaves, depth %d\n", m->name,
            scene->triangle_count, bvh.node_count, bvh.leaf_count, bvh.depth);
@@ -288,8 +356,8 @@ static void bench_mesh(BenchMesh *m, View v, int res)
     if (base != NULL)
         printf("    Embree HIGH %8.1f ms   ratio raytra/Embree time %.2f", base_ms,
                build_ms / base_ms);
-    printf("\n   bytes/triangle    %8.1f      (triangles %zu + BVH %.1f)\n", bytes,
-           sizeof(Triangle), (double)bvh_bytes(&bvh) / scene->triangle_count);
+    printf("\n   bytes/triangle    %8.1f      (mesh %.1f + BVH %.1f)\n", bytes,
+           mesh_bytes / scene->triangle_count, (double)bvh_bytes(&bvh) / scene->triangle_count);
     const char *names[2] = {"primary", "shadow"};
     for (int s = 0; s < 2; s++) {
         const BenchRay *rays = s == 0 ? primary : shadow;

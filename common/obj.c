@@ -20,14 +20,14 @@
 typedef struct {
     long index[3]; /* 1-based; relative (negative) indices already resolved */
     int line;
-} Face;
+} RawFace;
 
 typedef struct {
     const char *path;
     Diag *diag;
     Mesh *mesh;
     int vertex_capacity;
-    Face *faces;
+    RawFace *faces;
     int face_count, face_capacity;
 } ObjReader;
 
@@ -152,10 +152,10 @@ static bool read_face(ObjReader *r, int line, const Words *w)
         index[k] = v < 0 ? r->mesh->vertex_count + 1 + v : v;
     }
     for (int k = 1; k + 1 < corners; k++) {
-        if (!room_for(r, line, &r->faces, &r->face_capacity, r->face_count, sizeof(Face),
+        if (!room_for(r, line, &r->faces, &r->face_capacity, r->face_count, sizeof(RawFace),
                       "triangles"))
             return false;
-        r->faces[r->face_count++] = (Face){{index[0], index[k], index[k + 1]}, line};
+        r->faces[r->face_count++] = (RawFace){{index[0], index[k], index[k + 1]}, line};
     }
     return true;
 }
@@ -174,7 +174,7 @@ static bool resolve_faces(ObjReader *r)
     for (int f = 0; f < r->face_count && !diag_too_many(r->diag); f++) {
         if (f % POLL_EVERY == 0 && stop_requested())
             return false;
-        const Face *face = &r->faces[f];
+        const RawFace *face = &r->faces[f];
         bool in_range = true;
         for (int k = 0; k < 3; k++)
             if (face->index[k] > m->vertex_count) {

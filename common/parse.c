@@ -41,7 +41,7 @@ struct Parser {
     Convention convention;
     int obj_lines; /* v and f lines: a mesh given where a scene belongs */
     int material_capacity, sphere_capacity, plane_capacity, triangle_capacity, light_capacity;
-    int file_capacity;
+    int vertex_capacity, file_capacity;
     char head[8]; /* the first bytes of the file, to name an image given as a scene */
     bool stopped; /* reading ended early: a stop request, a binary file or a read error */
 };
@@ -168,14 +168,24 @@ static void parse_sphere(Parser *p, const double *v, int n, char *const *words)
         s->spheres[s->sphere_count++] = (Sphere){vec3(v[0], v[1], v[2]), v[3], material, p->line};
 }
 
-/* Appends triangle abc, given on the line being read (a t or w line), in material;
- * false (reported) when there is no room. */
-static bool add_triangle(Parser *p, Vec3 a, Vec3 b, Vec3 c, int material)
+/* Appends vertex v to the scene; false (reported) when there is no room. */
+static bool add_vertex(Parser *p, Vec3 v)
+{
+    Scene *s = p->scene;
+    if (!ROOM_FOR(p, s->vertices, s->vertex_count, p->vertex_capacity, "vertices"))
+        return false;
+    s->vertices[s->vertex_count++] = v;
+    return true;
+}
+
+/* Appends the triangle of vertices a, b and c of the scene, given on the line being read
+ * (a t or w line), in material; false (reported) when there is no room. */
+static bool add_triangle(Parser *p, int a, int b, int c, int material)
 {
     Scene *s = p->scene;
     if (!ROOM_FOR(p, s->triangles, s->triangle_count, p->triangle_capacity, "triangles"))
         return false;
-    s->triangles[s->triangle_count++] = (Triangle){a, b, c, material, p->line};
+    s->triangles[s->triangle_count++] = (Face){{a, b, c}, material, p->line};
     return true;
 }
 
@@ -189,7 +199,9 @@ static void parse_triangle(Parser *p, const double *v, int n, char *const *words
         return;
     }
     int material = current_material(p);
-    add_triangle(p, a, b, c, material);
+    int first = p->scene->vertex_count;
+    if (add_vertex(p, a) && add_vertex(p, b) && add_vertex(p, c))
+        add_triangle(p, first, first + 1, first + 2, material);
 }
 
 /* p nx ny nz d: a plane; its normal and d are put in the lecture's form by finish_planes. */
@@ -526,12 +538,19 @@ static void parse_mesh(Parser *p, const char *name)
         ERROR(p, "mesh '%s' has %d triangles: with the scene's %d, more than %d, the limit",
               name, mesh.triangle_count, s->triangle_count, ARRAY_MAX_ITEMS);
         mesh.triangle_count = 0;
+    } else if (mesh.vertex_count > ARRAY_MAX_ITEMS - s->vertex_count) {
+        ERROR(p, "mesh '%s' has %d vertices: with the scene's %d, more than %d, the limit",
+              name, mesh.vertex_count, s->vertex_count, ARRAY_MAX_ITEMS);
+        mesh.triangle_count = 0;
     }
-    int material = current_material(p);
+    /* The mesh's vertices follow the scene's, its corners' indices shifted by as many. */
+    int first = s->vertex_count, material = current_material(p);
+    for (int k = 0; k < mesh.vertex_count && mesh.triangle_count > 0; k++)
+        if (!add_vertex(p, mesh.vertices[k]))
+            mesh.triangle_count = 0;
     for (int k = 0; k < mesh.triangle_count; k++) {
         const int *t = mesh.triangles[k];
-        if (!add_triangle(p, mesh.vertices[t[0]], mesh.vertices[t[1]], mesh.vertices[t[2]],
-                          material))
+        if (!add_triangle(p, first + t[0], first + t[1], first + t[2], material))
             break;
     }
     s->mesh_count++;

@@ -39,6 +39,7 @@ void scene_free(Scene *scene)
     free(scene->materials);
     free(scene->spheres);
     free(scene->planes);
+    free(scene->vertices);
     free(scene->triangles);
     free(scene->lights);
     for (int k = 0; k < scene->file_count; k++)

@@ -56,12 +56,22 @@ typedef struct {
     int line;
 } Plane;
 
-/* A triangle whose front side sees a, b, c counterclockwise. */
+/* excerpt: scene-triangle */
+/* A triangle whose front side sees a, b, c counterclockwise: the corners themselves,
+ * as the intersection test and the box of a triangle take them. */
 typedef struct {
     Vec3 a, b, c;
+} Triangle;
+
+/* A triangle as the scene keeps it: its corners a, b, c as indices into the scene's
+ * vertices, which the triangles of a mesh share, so that a corner is stored once for
+ * the five or six triangles around it (pbrt's meshes do the same). */
+typedef struct {
+    int corner[3]; /* a, b, c */
     int material;
     int line; /* its t line, or the w line of its mesh */
-} Triangle;
+} Face;
+/* end excerpt: scene-triangle */
 
 typedef enum { LIGHT_POINT, LIGHT_DIRECTIONAL, LIGHT_AREA } LightKind;
 
@@ -86,7 +96,10 @@ typedef struct {
     int sphere_count;
     Plane *planes;
     int plane_count;
-    Triangle *triangles; /* t lines and every triangle of every w mesh */
+    Vec3 *vertices; /* the corners of the triangles: three for each t line, and the
+                       vertices of each w mesh as its OBJ file lists them */
+    int vertex_count;
+    Face *triangles; /* t lines and every triangle of every w mesh */
     int triangle_count;
     int mesh_count;
     Light *lights; /* point, directional and area lights */
@@ -130,6 +143,15 @@ const char *scene_feature_name(unsigned feature);
 bool scene_triangle_is_degenerate(Vec3 a, Vec3 b, Vec3 c);
 const char *convention_name(Convention c);
 bool convention_from_name(const char *name, Convention *c);
+
+/* excerpt: scene-triangle-corners */
+/* Returns the corners of triangle k of scene. */
+static inline Triangle scene_triangle(const Scene *scene, int k)
+{
+    const int *v = scene->triangles[k].corner;
+    return (Triangle){scene->vertices[v[0]], scene->vertices[v[1]], scene->vertices[v[2]]};
+}
+/* end excerpt: scene-triangle-corners */
 
 /* Tells whether point lights fall off with the square of the distance. */
 static inline bool scene_light_falls_off(const Scene *scene)

@@ -26,12 +26,14 @@ bool world_hit(const Scene *scene, Ray r, double tmin, double tmax, Hit *hit)
             found = true;
         }
     TriangleHit th;
-    for (int k = 0; k < scene->triangle_count; k++)
-        if (triangle_intersect(&scene->triangles[k], r, tmin, tmax, &th)) {
+    for (int k = 0; k < scene->triangle_count; k++) {
+        Triangle tri = scene_triangle(scene, k);
+        if (triangle_intersect(&tri, r, tmin, tmax, &th)) {
             *hit = (Hit){.t = th.t, .kind = SURFACE_TRIANGLE, .index = k};
             tmax = th.t;
             found = true;
         }
+    }
     /* The point, normal and material are worked out once, for the winner only. */
     if (found)
         world_complete_hit(scene, r, hit);
@@ -57,10 +59,12 @@ void world_complete_hit(const Scene *scene, Ray r, Hit *hit)
         hit->normal = scene->planes[hit->index].normal;
         hit->material = scene->planes[hit->index].material;
         break;
-    case SURFACE_TRIANGLE:
-        hit->normal = triangle_normal(&scene->triangles[hit->index]);
+    case SURFACE_TRIANGLE: {
+        Triangle tri = scene_triangle(scene, hit->index);
+        hit->normal = triangle_normal(&tri);
         hit->material = scene->triangles[hit->index].material;
         break;
+    }
     }
     /* The ray travels along d: it meets the back when d points the way the normal does. */
     hit->back_face = vec3_dot(r.dir, hit->normal) > 0;

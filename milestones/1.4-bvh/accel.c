@@ -110,13 +110,16 @@ static bool boxed_hit(const void *data, Ray r, double tmin, double tmax, Hit *hi
         }
     const Box *triangle_boxes = accel->boxes + scene->sphere_count;
     TriangleHit th;
-    for (int k = 0; k < scene->triangle_count; k++)
-        if (box_hit(triangle_boxes[k], &br, tmin, tmax, &t_box) &&
-            triangle_intersect(&scene->triangles[k], r, tmin, tmax, &th)) {
+    for (int k = 0; k < scene->triangle_count; k++) {
+        if (!box_hit(triangle_boxes[k], &br, tmin, tmax, &t_box))
+            continue;
+        Triangle tri = scene_triangle(scene, k);
+        if (triangle_intersect(&tri, r, tmin, tmax, &th)) {
             *hit = (Hit){.t = th.t, .kind = SURFACE_TRIANGLE, .index = k};
             tmax = th.t;
             found = true;
         }
+    }
     if (found)
         world_complete_hit(scene, r, hit);
     return found;
@@ -136,10 +139,13 @@ static bool boxed_blocked(const void *data, Ray r, double tmin, double tmax)
             return true;
     const Box *triangle_boxes = accel->boxes + scene->sphere_count;
     TriangleHit th;
-    for (int k = 0; k < scene->triangle_count; k++)
-        if (box_hit(triangle_boxes[k], &br, tmin, tmax, &t_box) &&
-            triangle_intersect(&scene->triangles[k], r, tmin, tmax, &th))
+    for (int k = 0; k < scene->triangle_count; k++) {
+        if (!box_hit(triangle_boxes[k], &br, tmin, tmax, &t_box))
+            continue;
+        Triangle tri = scene_triangle(scene, k);
+        if (triangle_intersect(&tri, r, tmin, tmax, &th))
             return true;
+    }
     return planes_blocked(scene, r, tmin, tmax);
 }
 

@@ -19,7 +19,8 @@ Box bvh_prim_box(const Scene *scene, uint32_t prim)
 {
     if (prim < (uint32_t)scene->sphere_count)
         return box_of_sphere(&scene->spheres[prim]);
-    return box_of_triangle(&scene->triangles[prim - (uint32_t)scene->sphere_count]);
+    Triangle tri = scene_triangle(scene, (int)(prim - (uint32_t)scene->sphere_count));
+    return box_of_triangle(&tri);
 }
 
 /* Returns the float just below x, or x itself when it is one: never above x. */
@@ -590,9 +591,9 @@ static inline bool prim_intersect(const Scene *scene, uint32_t prim, Ray r, doub
 {
     if (prim < (uint32_t)scene->sphere_count)
         return sphere_intersect(&scene->spheres[prim], r, tmin, tmax, t);
+    Triangle tri = scene_triangle(scene, (int)(prim - (uint32_t)scene->sphere_count));
     TriangleHit th;
-    if (!triangle_intersect(&scene->triangles[prim - (uint32_t)scene->sphere_count], r, tmin, tmax,
-                            &th))
+    if (!triangle_intersect(&tri, r, tmin, tmax, &th))
         return false;
     *t = th.t;
     return true;

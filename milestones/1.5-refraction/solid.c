@@ -57,12 +57,13 @@ SolidCheck solid_check(const Scene *scene)
     }
     long n = 0;
     for (int k = 0; k < scene->triangle_count; k++) {
-        const Triangle *t = &scene->triangles[k];
-        if (!refract_is_glass(&scene->materials[t->material]))
+        int material = scene->triangles[k].material;
+        if (!refract_is_glass(&scene->materials[material]))
             continue;
-        edges[n++] = solid_edge(t->material, t->a, t->b);
-        edges[n++] = solid_edge(t->material, t->b, t->c);
-        edges[n++] = solid_edge(t->material, t->c, t->a);
+        Triangle t = scene_triangle(scene, k);
+        edges[n++] = solid_edge(material, t.a, t.b);
+        edges[n++] = solid_edge(material, t.b, t.c);
+        edges[n++] = solid_edge(material, t.c, t.a);
     }
     qsort(edges, (size_t)n, sizeof *edges, solid_edge_compare);
     for (long first = 0, next; first < n; first = next) {

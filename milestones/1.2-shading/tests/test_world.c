@@ -6,11 +6,14 @@
  * z = -3 (counterclockwise from +z) in material 2. */
 static Sphere spheres[] = {{.center = {0, 0, -5}, .radius = 1, .material = 1}};
 static Plane planes[] = {{.normal = {0, 1, 0}, .d = 1, .material = 0}};
-static Triangle triangles[] = {{.a = {2, 0, -3}, .b = {4, 0, -3}, .c = {2, 2, -3}, .material = 2}};
+static Vec3 corners[] = {{2, 0, -3}, {4, 0, -3}, {2, 2, -3}};
+static Face triangles[] = {{.corner = {0, 1, 2}, .material = 2}};
 static const Scene scene = {.spheres = spheres,
                             .sphere_count = 1,
                             .planes = planes,
                             .plane_count = 1,
+                            .vertices = corners,
+                            .vertex_count = 3,
                             .triangles = triangles,
                             .triangle_count = 1};
 

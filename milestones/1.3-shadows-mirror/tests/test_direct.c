@@ -155,10 +155,16 @@ START_TEST(no_light_leaks_through_a_thin_wall)
 {
     /* A wall one millionth thick (two triangles, back to back) stands at x = 1 between a
      * light at x = 10 and the floor point 0.000001 in front of it. */
-    Triangle wall[] = {{.a = {1, -1, -1}, .b = {1, -1, 1}, .c = {1, 5, 0}},
-                       {.a = {1 + 1e-6, -1, -1}, .b = {1 + 1e-6, 5, 0}, .c = {1 + 1e-6, -1, 1}}};
+    Vec3 corners[] = {{1, -1, -1},        {1, -1, 1},       {1, 5, 0},
+                      {1 + 1e-6, -1, -1}, {1 + 1e-6, 5, 0}, {1 + 1e-6, -1, 1}};
+    Face wall[] = {{.corner = {0, 1, 2}}, {.corner = {3, 4, 5}}};
     Light bulb = {.kind = LIGHT_POINT, .position = {10, 0.5, 0}, .color = {1, 1, 1}};
-    Scene scene = {.triangles = wall, .triangle_count = 2, .lights = &bulb, .light_count = 1};
+    Scene scene = {.vertices = corners,
+                   .vertex_count = 6,
+                   .triangles = wall,
+                   .triangle_count = 2,
+                   .lights = &bulb,
+                   .light_count = 1};
     Tracer tr = tracer(&scene);
     Hit behind = floor_hit;
     behind.point = vec3(1 - 1e-6, 0, 0);

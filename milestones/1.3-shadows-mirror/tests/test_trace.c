@@ -85,12 +85,15 @@ START_TEST(back_faces_are_lit_yellow_in_mirrors_too)
     Material materials[] = {{.mirror = {0.5, 0.5, 0.5}}, {.diffuse = {1, 1, 1}}};
     Plane floor = {.normal = {0, 1, 0}, .d = 0, .material = 0};
     /* The triangle in the plane x = 10, counterclockwise seen from +x: its back faces us. */
-    Triangle wall = {.a = {10, 0, -5}, .b = {10, 10, 0}, .c = {10, 0, 5}, .material = 1};
+    Vec3 corners[] = {{10, 0, -5}, {10, 10, 0}, {10, 0, 5}};
+    Face wall = {.corner = {0, 1, 2}, .material = 1};
     Light sun = {.kind = LIGHT_DIRECTIONAL, .direction = {1, 0, 0}, .color = {1, 1, 1}};
     Scene scene = {.materials = materials,
                    .material_count = 2,
                    .planes = &floor,
                    .plane_count = 1,
+                   .vertices = corners,
+                   .vertex_count = 3,
                    .triangles = &wall,
                    .triangle_count = 1,
                    .lights = &sun,

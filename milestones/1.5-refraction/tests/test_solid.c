@@ -63,10 +63,9 @@ START_TEST(a_flipped_face_is_found)
     load(&scene, CAMERA GLASS "w meshes/icosphere.obj\n");
     /* Turning one triangle round makes each of its edges run the same way as its
      * neighbour's. */
-    Triangle *t = &scene.triangles[5];
-    Vec3 b = t->b;
-    t->b = t->c;
-    t->c = b;
+    int *corner = scene.triangles[5].corner, b = corner[1];
+    corner[1] = corner[2];
+    corner[2] = b;
     SolidCheck check = solid_check(&scene);
     ck_assert_int_eq(check.open, 0);
     ck_assert_int_eq(check.miswound, 3);

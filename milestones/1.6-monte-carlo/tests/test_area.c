@@ -49,7 +49,8 @@ END_TEST
 typedef struct {
     Scene scene;
     Light light;
-    Triangle occluder;
+    Vec3 corners[3];
+    Face occluder;
     Material white;
     MonteCarlo mc;
 } Setup;
@@ -59,9 +60,13 @@ static void setup_make(Setup *s, bool occluded)
     s->light = square();
     s->white = (Material){.diffuse = {1, 1, 1}, .phong = 1};
     double h = occluder_height, e = occluder_edge;
-    s->occluder = (Triangle){.a = {e, h, -1000}, .b = {e, h, 1000}, .c = {-1000, h, 0}};
+    s->corners[0] = vec3(e, h, -1000);
+    s->corners[1] = vec3(e, h, 1000);
+    s->corners[2] = vec3(-1000, h, 0);
+    s->occluder = (Face){.corner = {0, 1, 2}};
     s->scene = (Scene){.convention = CONVENTION_FALL2016, .materials = &s->white,
                        .material_count = 1, .lights = &s->light, .light_count = 1,
+                       .vertices = s->corners, .vertex_count = 3,
                        .triangles = &s->occluder, .triangle_count = occluded ? 1 : 0};
     Options opts = {.samples = 1, .light_samples = 1, .max_depth = 20,
                     .ray_offset = SECONDARY_OFFSET};
