@@ -57,10 +57,11 @@ typedef struct {
 } Plane;
 
 /* excerpt: scene-triangle */
-/* A triangle whose front side sees a, b, c counterclockwise: the corners themselves,
- * as the intersection test and the box of a triangle take them. */
+/* A triangle whose front side sees a, b, c counterclockwise, as the intersection test
+ * and the box of a triangle take it: where its corners are, in the scene's vertices or
+ * anywhere else, so that nothing is copied to test it. */
 typedef struct {
-    Vec3 a, b, c;
+    const Vec3 *a, *b, *c;
 } Triangle;
 
 /* A triangle as the scene keeps it: its corners a, b, c as indices into the scene's
@@ -145,11 +146,11 @@ const char *convention_name(Convention c);
 bool convention_from_name(const char *name, Convention *c);
 
 /* excerpt: scene-triangle-corners */
-/* Returns the corners of triangle k of scene. */
+/* Returns where the corners of triangle k of scene are. */
 static inline Triangle scene_triangle(const Scene *scene, int k)
 {
     const int *v = scene->triangles[k].corner;
-    return (Triangle){scene->vertices[v[0]], scene->vertices[v[1]], scene->vertices[v[2]]};
+    return (Triangle){&scene->vertices[v[0]], &scene->vertices[v[1]], &scene->vertices[v[2]]};
 }
 /* end excerpt: scene-triangle-corners */
 

@@ -104,9 +104,9 @@ START_TEST(sphere_triangle_and_material)
     ck_assert_int_eq(l.scene.triangle_count, 1);
     ck_assert_int_eq(l.scene.vertex_count, 3);
     Triangle tri = scene_triangle(&l.scene, 0);
-    ck_assert_vec3_near(tri.a, vec3(0, 0, 0), 0);
-    ck_assert_vec3_near(tri.b, vec3(1, 0, 0), 0);
-    ck_assert_vec3_near(tri.c, vec3(0, 1, 0), 0);
+    ck_assert_vec3_near(*tri.a, vec3(0, 0, 0), 0);
+    ck_assert_vec3_near(*tri.b, vec3(1, 0, 0), 0);
+    ck_assert_vec3_near(*tri.c, vec3(0, 1, 0), 0);
     ck_assert_int_eq(l.scene.material_count, 1);
     const Material *m = &l.scene.materials[l.scene.spheres[0].material];
     ck_assert_color_near(m->diffuse, color(0.1, 0.2, 0.3), 0);
@@ -717,8 +717,8 @@ START_TEST(mesh_beside_the_scene)
     const int *corner = l.scene.triangles[1].corner;
     ck_assert(corner[0] == 0 && corner[1] == 2 && corner[2] == 3);
     Triangle tri = scene_triangle(&l.scene, 1);
-    ck_assert_vec3_near(tri.b, vec3(1, 1, 0), 0);
-    ck_assert_vec3_near(tri.c, vec3(0, 1, 0), 0);
+    ck_assert_vec3_near(*tri.b, vec3(1, 1, 0), 0);
+    ck_assert_vec3_near(*tri.c, vec3(0, 1, 0), 0);
     ck_assert_double_eq(l.scene.materials[l.scene.triangles[0].material].diffuse.g, 1);
     ck_assert_str_eq(l.messages, "");
     done(&l);

@@ -14,9 +14,9 @@ bool triangle_intersect(const Triangle *tri, Ray r, double tmin, double tmax, Tr
      * three equations (x, y, z) in three unknowns. Cramer's rule solves them as
      * ratios of determinants, and a 3 x 3 determinant det[x y z] is the triple
      * product x . (y x z): the textbook's formulas, written with vectors. */
-    Vec3 e1 = vec3_sub(tri->b, tri->a);
-    Vec3 e2 = vec3_sub(tri->c, tri->a);
-    Vec3 s = vec3_sub(r.origin, tri->a);
+    Vec3 e1 = vec3_sub(*tri->b, *tri->a);
+    Vec3 e2 = vec3_sub(*tri->c, *tri->a);
+    Vec3 s = vec3_sub(r.origin, *tri->a);
     Vec3 p = vec3_cross(r.dir, e2);
     double det = vec3_dot(e1, p); /* det[e1 e2 -d] */
     /* Zero: the ray is parallel to the plane, or the triangle has no area. */
@@ -41,5 +41,5 @@ bool triangle_intersect(const Triangle *tri, Ray r, double tmin, double tmax, Tr
  * counterclockwise, the front side. */
 Vec3 triangle_normal(const Triangle *tri)
 {
-    return vec3_normalize(vec3_cross(vec3_sub(tri->b, tri->a), vec3_sub(tri->c, tri->a)));
+    return vec3_normalize(vec3_cross(vec3_sub(*tri->b, *tri->a), vec3_sub(*tri->c, *tri->a)));
 }

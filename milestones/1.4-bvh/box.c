@@ -50,7 +50,7 @@ Box box_of_sphere(const Sphere *s)
 /* Returns the box of triangle tri: the least and greatest coordinates of its corners. */
 Box box_of_triangle(const Triangle *tri)
 {
-    return box_pad(box_add_point(box_add_point((Box){tri->a, tri->a}, tri->b), tri->c));
+    return box_pad(box_add_point(box_add_point((Box){*tri->a, *tri->a}, *tri->b), *tri->c));
 }
 /* end excerpt: box-of-triangle */
 

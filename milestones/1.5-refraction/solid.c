@@ -61,9 +61,9 @@ SolidCheck solid_check(const Scene *scene)
         if (!refract_is_glass(&scene->materials[material]))
             continue;
         Triangle t = scene_triangle(scene, k);
-        edges[n++] = solid_edge(material, t.a, t.b);
-        edges[n++] = solid_edge(material, t.b, t.c);
-        edges[n++] = solid_edge(material, t.c, t.a);
+        edges[n++] = solid_edge(material, *t.a, *t.b);
+        edges[n++] = solid_edge(material, *t.b, *t.c);
+        edges[n++] = solid_edge(material, *t.c, *t.a);
     }
     qsort(edges, (size_t)n, sizeof *edges, solid_edge_compare);
     for (long first = 0, next; first < n; first = next) {

@@ -194,9 +194,9 @@ static void check_geometry(const Scene *s)
         for (int c = 0; c < 3; c++)
             FUZZ_CHECK(corner[c] >= 0 && corner[c] < s->vertex_count);
         Triangle t = scene_triangle(s, k);
-        FUZZ_CHECK(vec3_is_finite(t.a) && vec3_is_finite(t.b) && vec3_is_finite(t.c));
-        FUZZ_CHECK(!scene_triangle_is_degenerate(t.a, t.b, t.c));
-        check_unit(vec3_normalize(vec3_cross(vec3_sub(t.b, t.a), vec3_sub(t.c, t.a))));
+        FUZZ_CHECK(vec3_is_finite(*t.a) && vec3_is_finite(*t.b) && vec3_is_finite(*t.c));
+        FUZZ_CHECK(!scene_triangle_is_degenerate(*t.a, *t.b, *t.c));
+        check_unit(vec3_normalize(vec3_cross(vec3_sub(*t.b, *t.a), vec3_sub(*t.c, *t.a))));
         check_material_index(s, s->triangles[k].material);
     }
 }

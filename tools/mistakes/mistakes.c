@@ -109,6 +109,6 @@ Box __wrap_box_of_triangle(const Triangle *tri);
  * the traversal never reaches the part of the triangle that sticks out of it. */
 Box __wrap_box_of_triangle(const Triangle *tri)
 {
-    return box_add_point(box_add_point(box_empty(), tri->a), tri->b);
+    return box_add_point(box_add_point(box_empty(), *tri->a), *tri->b);
 }
 #endif

@@ -4,7 +4,14 @@
 #include "testing.h"
 
 /* The unit right triangle in the plane z = 0, counterclockwise seen from +z. */
-static const Triangle unit = {.a = {0, 0, 0}, .b = {1, 0, 0}, .c = {0, 1, 0}};
+static const Vec3 unit_corners[] = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}};
+static const Triangle unit = {&unit_corners[0], &unit_corners[1], &unit_corners[2]};
+
+/* Returns the triangle whose corners are p[0], p[1] and p[2]. */
+static Triangle corners(const Vec3 *p)
+{
+    return (Triangle){&p[0], &p[1], &p[2]};
+}
 
 /* Shoots a ray straight down -z at (x, y) from z = 1 against tri. */
 static bool shoot(const Triangle *tri, double x, double y, TriangleHit *hit)
@@ -54,7 +61,8 @@ START_TEST(both_windings_are_hit)
 {
     /* The same triangle clockwise from +z: hit at the same t, beta and gamma swapped,
      * and its normal points the other way. */
-    Triangle cw = {.a = {0, 0, 0}, .b = {0, 1, 0}, .c = {1, 0, 0}};
+    Vec3 p[] = {{0, 0, 0}, {0, 1, 0}, {1, 0, 0}};
+    Triangle cw = corners(p);
     TriangleHit h;
     ck_assert(shoot(&cw, 0.25, 0.5, &h));
     ck_assert_double_eq(h.t, 1);
@@ -76,8 +84,8 @@ END_TEST
 
 START_TEST(degenerate_triangles_never_hit)
 {
-    Triangle line = {.a = {0, 0, 0}, .b = {1, 0, 0}, .c = {2, 0, 0}};
-    Triangle point = {.a = {0, 0, 0}, .b = {0, 0, 0}, .c = {0, 0, 0}};
+    Vec3 on_line[] = {{0, 0, 0}, {1, 0, 0}, {2, 0, 0}}, at_origin[3] = {{0}};
+    Triangle line = corners(on_line), point = corners(at_origin);
     TriangleHit h = {-1, -1, -1};
     ck_assert(!shoot(&line, 0.5, 0, &h));
     ck_assert(!shoot(&point, 0, 0, &h));
@@ -87,13 +95,14 @@ END_TEST
 
 START_TEST(barycentrics_rebuild_the_point)
 {
-    Triangle t = {.a = {1, 2, -7}, .b = {-3, 5, -9}, .c = {4, -1, -12}};
+    Vec3 p[] = {{1, 2, -7}, {-3, 5, -9}, {4, -1, -12}};
+    Triangle t = corners(p);
     Ray r = ray(vec3(0.3, 0.1, 2), vec3_normalize(vec3(0.05, 0.2, -1)));
     TriangleHit h;
     ck_assert(triangle_intersect(&t, r, 0, INFINITY, &h));
-    Vec3 p = vec3_add(t.a, vec3_add(vec3_scale(vec3_sub(t.b, t.a), h.beta),
-                                    vec3_scale(vec3_sub(t.c, t.a), h.gamma)));
-    ck_assert_vec3_near(p, ray_at(r, h.t), 1e-12);
+    Vec3 q = vec3_add(p[0], vec3_add(vec3_scale(vec3_sub(p[1], p[0]), h.beta),
+                                     vec3_scale(vec3_sub(p[2], p[0]), h.gamma)));
+    ck_assert_vec3_near(q, ray_at(r, h.t), 1e-12);
     ck_assert(h.beta >= 0 && h.gamma >= 0 && h.beta + h.gamma <= 1);
 }
 END_TEST

@@ -50,11 +50,11 @@ static Vec3 rnd_dir(void)
 
 /* Sets triangle k of scene to a, b, c in material: its corners are vertices 3k to
  * 3k + 2, its own. */
-static void set_triangle(Scene *scene, int k, Triangle t, int material)
+static void set_triangle(Scene *scene, int k, Vec3 a, Vec3 b, Vec3 c, int material)
 {
-    scene->vertices[3 * k] = t.a;
-    scene->vertices[3 * k + 1] = t.b;
-    scene->vertices[3 * k + 2] = t.c;
+    scene->vertices[3 * k] = a;
+    scene->vertices[3 * k + 1] = b;
+    scene->vertices[3 * k + 2] = c;
     scene->triangles[k] = (Face){{3 * k, 3 * k + 1, 3 * k + 2}, material, 0};
 }
 
@@ -70,15 +70,16 @@ static void random_scene(Scene *scene, int n, double size, int spheres, int plan
     scene->spheres = malloc((size_t)(spheres > 0 ? spheres : 1) * sizeof *scene->spheres);
     scene->planes = malloc((size_t)(planes > 0 ? planes : 1) * sizeof *scene->planes);
     for (int k = 0; k < n; k++) {
-        Vec3 a = rnd_point(0, 1);
-        Triangle t = {a, vec3_add(a, vec3_scale(rnd_point(-1, 1), size)),
-                      vec3_add(a, vec3_scale(rnd_point(-1, 1), size))};
+        Vec3 a = rnd_point(0, 1), b = vec3_add(a, vec3_scale(rnd_point(-1, 1), size)),
+             c = vec3_add(a, vec3_scale(rnd_point(-1, 1), size));
         double u = rnd();
-        if (k > 0 && u < 0.05)
-            t = scene_triangle(scene, (int)(rnd() * k)); /* the same triangle again */
-        else if (u < 0.08)
-            t.c = vec3_add(t.a, vec3_scale(vec3_sub(t.b, t.a), 2)); /* no area */
-        set_triangle(scene, k, t, k % 3);
+        if (k > 0 && u < 0.05) { /* the same triangle again */
+            Triangle t = scene_triangle(scene, (int)(rnd() * k));
+            a = *t.a, b = *t.b, c = *t.c;
+        } else if (u < 0.08) {
+            c = vec3_add(a, vec3_scale(vec3_sub(b, a), 2)); /* no area */
+        }
+        set_triangle(scene, k, a, b, c, k % 3);
     }
     for (int k = 0; k < spheres; k++)
         scene->spheres[k] = (Sphere){rnd_point(0, 1), 0.01 + 0.1 * rnd(), k % 2, 0};
@@ -181,18 +182,18 @@ START_TEST(invariants_of_degenerate_sets)
     check_invariants(&scene);
     /* Triangles without area, all on one line. */
     for (int k = 0; k < 500; k++)
-        set_triangle(&scene, k, (Triangle){vec3(k, 0, 0), vec3(k + 1, 0, 0), vec3(k + 2, 0, 0)}, 0);
+        set_triangle(&scene, k, vec3(k, 0, 0), vec3(k + 1, 0, 0), vec3(k + 2, 0, 0), 0);
     check_invariants(&scene);
     /* Points: triangles whose three corners coincide, some at the same place. */
     for (int k = 0; k < 500; k++) {
         Vec3 p = vec3(k % 7, 0, 0);
-        set_triangle(&scene, k, (Triangle){p, p, p}, 0);
+        set_triangle(&scene, k, p, p, p, 0);
     }
     check_invariants(&scene);
     /* Depth: sizes doubling, each triangle twice as far as the last, a chain for the SAH. */
     for (int k = 0; k < 500; k++) {
         double x = ldexp(1, k % 60);
-        set_triangle(&scene, k, (Triangle){vec3(x, 0, 0), vec3(x, 1, 0), vec3(x, 0, 1)}, 0);
+        set_triangle(&scene, k, vec3(x, 0, 0), vec3(x, 1, 0), vec3(x, 0, 1), 0);
     }
     check_invariants(&scene);
     scene_free(&scene);
@@ -209,7 +210,7 @@ START_TEST(tests_counted_for_the_box_tests_view)
      * the triangle (2); one that misses it tests the root's box only (1). */
     Scene scene;
     random_scene(&scene, 1, 0.05, 0, 0);
-    set_triangle(&scene, 0, (Triangle){vec3(-1, -1, -5), vec3(1, -1, -5), vec3(0, 1, -5)}, 0);
+    set_triangle(&scene, 0, vec3(-1, -1, -5), vec3(1, -1, -5), vec3(0, 1, -5), 0);
     Bvh bvh;
     ck_assert(bvh_build(&bvh, &scene));
     ck_assert_int_eq(bvh_count_tests(&bvh, ray(vec3(0, 0, 0), vec3(0, 0, -1))), 2);
