@@ -100,15 +100,20 @@ static void subdivide(Scene *scene, Vec3 a, Vec3 b, Vec3 c, int level)
 /* The vertices that position_compare looks up: qsort passes it no context. */
 static const Vec3 *sort_vertices;
 
-/* Orders two vertex numbers by the positions of their vertices, x first, then by number. */
+/* Returns -1, 0 or 1 as point p comes before, at or after q, ordered by x, then y, then z. */
+static int point_order(Vec3 p, Vec3 q)
+{
+    return p.x != q.x   ? (p.x > q.x) - (p.x < q.x)
+           : p.y != q.y ? (p.y > q.y) - (p.y < q.y)
+                        : (p.z > q.z) - (p.z < q.z);
+}
+
+/* Orders two vertex numbers by the positions of their vertices, then by number. */
 static int position_compare(const void *a, const void *b)
 {
     int i = *(const int *)a, j = *(const int *)b;
-    Vec3 p = sort_vertices[i], q = sort_vertices[j];
-    return p.x != q.x   ? (p.x > q.x) - (p.x < q.x)
-           : p.y != q.y ? (p.y > q.y) - (p.y < q.y)
-           : p.z != q.z ? (p.z > q.z) - (p.z < q.z)
-                        : (i > j) - (i < j);
+    int order = point_order(sort_vertices[i], sort_vertices[j]);
+    return order != 0 ? order : (i > j) - (i < j);
 }
 
 /* Merges the vertices of scene that lie at the same point into one, as an OBJ file
@@ -125,8 +130,7 @@ static void weld_vertices(Scene *scene)
     qsort(order, (size_t)n, sizeof *order, position_compare);
     /* first[v]: the lowest-numbered vertex at the point of vertex v, which leads its run. */
     for (int k = 0, lead = 0; k < n; k++) {
-        Vec3 p = scene->vertices[order[k]], q = scene->vertices[lead];
-        if (k == 0 || p.x != q.x || p.y != q.y || p.z != q.z)
+        if (k == 0 || point_order(scene->vertices[order[k]], scene->vertices[lead]) != 0)
             lead = order[k];
         first[order[k]] = lead;
     }

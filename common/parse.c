@@ -500,6 +500,17 @@ static bool note_file(Parser *p, FileId id)
     return true;
 }
 
+/* Tells whether a mesh's n items called what fit beside the scene's have of them;
+ * reports it on the w line when they do not. */
+static bool mesh_fits(Parser *p, const char *name, int n, int have, const char *what)
+{
+    if (n <= ARRAY_MAX_ITEMS - have)
+        return true;
+    ERROR(p, "mesh '%s' has %d %s: with the scene's %d, more than %d, the limit", name, n, what,
+          have, ARRAY_MAX_ITEMS);
+    return false;
+}
+
 /* w path: the triangles of an OBJ mesh, in the current material. */
 static void parse_mesh(Parser *p, const char *name)
 {
@@ -534,15 +545,9 @@ static void parse_mesh(Parser *p, const char *name)
         diag_warn(p->diag, path, 0, "mesh has no triangles");
     Scene *s = p->scene;
     /* One message, not one per triangle, when the mesh does not fit. */
-    if (mesh.triangle_count > ARRAY_MAX_ITEMS - s->triangle_count) {
-        ERROR(p, "mesh '%s' has %d triangles: with the scene's %d, more than %d, the limit",
-              name, mesh.triangle_count, s->triangle_count, ARRAY_MAX_ITEMS);
+    if (!mesh_fits(p, name, mesh.triangle_count, s->triangle_count, "triangles") ||
+        !mesh_fits(p, name, mesh.vertex_count, s->vertex_count, "vertices"))
         mesh.triangle_count = 0;
-    } else if (mesh.vertex_count > ARRAY_MAX_ITEMS - s->vertex_count) {
-        ERROR(p, "mesh '%s' has %d vertices: with the scene's %d, more than %d, the limit",
-              name, mesh.vertex_count, s->vertex_count, ARRAY_MAX_ITEMS);
-        mesh.triangle_count = 0;
-    }
     /* The mesh's vertices follow the scene's, its corners' indices shifted by as many. */
     int first = s->vertex_count, material = current_material(p);
     for (int k = 0; k < mesh.vertex_count && mesh.triangle_count > 0; k++)

@@ -14,12 +14,18 @@
 /* Below this depth the SAH chooses splits; deeper, halving the primitives bounds the depth. */
 #define SAH_MAX_DEPTH 32
 
+/* Returns the number of the triangle that primitive prim of scene is, when not a sphere. */
+static inline int prim_triangle(const Scene *scene, uint32_t prim)
+{
+    return (int)(prim - (uint32_t)scene->sphere_count);
+}
+
 /* Returns the box of primitive prim of scene: its sphere's or its triangle's. */
 Box bvh_prim_box(const Scene *scene, uint32_t prim)
 {
     if (prim < (uint32_t)scene->sphere_count)
         return box_of_sphere(&scene->spheres[prim]);
-    Triangle tri = scene_triangle(scene, (int)(prim - (uint32_t)scene->sphere_count));
+    Triangle tri = scene_triangle(scene, prim_triangle(scene, prim));
     return box_of_triangle(&tri);
 }
 
@@ -591,7 +597,7 @@ static inline bool prim_intersect(const Scene *scene, uint32_t prim, Ray r, doub
 {
     if (prim < (uint32_t)scene->sphere_count)
         return sphere_intersect(&scene->spheres[prim], r, tmin, tmax, t);
-    Triangle tri = scene_triangle(scene, (int)(prim - (uint32_t)scene->sphere_count));
+    Triangle tri = scene_triangle(scene, prim_triangle(scene, prim));
     TriangleHit th;
     if (!triangle_intersect(&tri, r, tmin, tmax, &th))
         return false;
@@ -644,7 +650,7 @@ void bvh_prim_surface(const Scene *scene, uint32_t prim, Hit *hit)
         hit->material = scene->spheres[prim].material;
     } else {
         hit->kind = SURFACE_TRIANGLE;
-        hit->index = (int)(prim - (uint32_t)scene->sphere_count);
+        hit->index = prim_triangle(scene, prim);
         hit->material = scene->triangles[hit->index].material;
     }
 }
