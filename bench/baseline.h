@@ -15,8 +15,14 @@ typedef struct {
 
 typedef struct Baseline Baseline;
 
+/* How hard the baseline's build works, as Embree's RTC_BUILD_QUALITY_*: HIGH builds a
+ * spatial split BVH (a triangle may be in several leaves); MEDIUM, Embree's default, an
+ * SAH tree without them that keeps each triangle in one leaf, as raytra's does; LOW, a
+ * two-level structure for scenes that change, quicker to build still. */
+typedef enum { BASELINE_HIGH, BASELINE_MEDIUM, BASELINE_LOW } BaselineQuality;
+
 bool baseline_available(void);
-Baseline *baseline_build(const Scene *scene, double *build_ms);
+Baseline *baseline_build(const Scene *scene, BaselineQuality quality, double *build_ms);
 /* Traces rays[begin, end): closest hits (counting them) or occlusion (counting the blocked). */
 long baseline_trace(const Baseline *b, const BenchRay *rays, long begin, long end, bool shadow);
 void baseline_free(Baseline *b);

@@ -24,9 +24,14 @@ static double now(void)
     return ts.tv_sec + ts.tv_nsec * 1e-9;
 }
 
-/* Builds Embree's BVH of scene's triangles at RTC_BUILD_QUALITY_HIGH on one thread. */
-Baseline *baseline_build(const Scene *scene, double *build_ms)
+/* Builds Embree's BVH of scene's triangles at the given quality on one thread. */
+Baseline *baseline_build(const Scene *scene, BaselineQuality quality, double *build_ms)
 {
+    static const enum RTCBuildQuality embree_quality[] = {
+        [BASELINE_HIGH] = RTC_BUILD_QUALITY_HIGH,
+        [BASELINE_MEDIUM] = RTC_BUILD_QUALITY_MEDIUM,
+        [BASELINE_LOW] = RTC_BUILD_QUALITY_LOW,
+    };
     Baseline *b = malloc(sizeof *b);
     if (b == NULL)
         return NULL;
@@ -34,9 +39,9 @@ Baseline *baseline_build(const Scene *scene, double *build_ms)
     b->device = rtcNewDevice("threads=1");
     double start = now();
     b->scene = rtcNewScene(b->device);
-    rtcSetSceneBuildQuality(b->scene, RTC_BUILD_QUALITY_HIGH);
+    rtcSetSceneBuildQuality(b->scene, embree_quality[quality]);
     RTCGeometry g = rtcNewGeometry(b->device, RTC_GEOMETRY_TYPE_TRIANGLE);
-    rtcSetGeometryBuildQuality(g, RTC_BUILD_QUALITY_HIGH);
+    rtcSetGeometryBuildQuality(g, embree_quality[quality]);
     /* The same indexed mesh as raytra's, its vertices rounded to float. */
     int n = scene->triangle_count, nv = scene->vertex_count;
     float *v = rtcSetNewGeometryBuffer(g, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3,

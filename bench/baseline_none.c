@@ -8,9 +8,9 @@ bool baseline_available(void)
 }
 
 /* Builds nothing. */
-Baseline *baseline_build(const Scene *scene, double *build_ms)
+Baseline *baseline_build(const Scene *scene, BaselineQuality quality, double *build_ms)
 {
-    (void)scene;
+    (void)scene, (void)quality;
     *build_ms = 0;
     return NULL;
 }

@@ -5,6 +5,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <strings.h>
 #include <sys/stat.h>
 #include <time.h>
 
@@ -314,14 +315,30 @@ static void trace_rates(Job **jobs, const int *threads, int n, double *rate, lon
     }
 }
 
+/* The baseline's build qualities by name, as the benchmark's third argument gives them. */
+static const char *const quality_names[] = {
+    [BASELINE_HIGH] = "HIGH", [BASELINE_MEDIUM] = "MEDIUM", [BASELINE_LOW] = "LOW"};
+
+/* Sets *quality to the build quality named name, in any case; false when there is none. */
+static bool quality_parse(const char *name, BaselineQuality *quality)
+{
+    for (int q = 0; q < (int)(sizeof quality_names / sizeof *quality_names); q++)
+        if (strcasecmp(name, quality_names[q]) == 0) {
+            *quality = (BaselineQuality)q;
+            return true;
+        }
+    return false;
+}
+
 /* One view of a mesh: where the camera is and where the light. */
 typedef struct {
     Vec3 eye, view, light;
     double fov;
 } View;
 
-/* Runs every measurement on mesh m seen from view v with res x res primary rays. */
-static void bench_mesh(BenchMesh *m, View v, int res)
+/* Runs every measurement on mesh m seen from view v with res x res primary rays, against
+ * the baseline built at quality. */
+static void bench_mesh(BenchMesh *m, View v, int res, BaselineQuality quality)
 {
     const Scene *scene = &m->scene;
     /* Both builds twice, in turns, keeping the faster of each. */
@@ -336,7 +353,7 @@ static void bench_mesh(BenchMesh *m, View v, int res)
         double start = now(), ms;
         bvh_build(&bvh, scene);
         build_ms = fmin(build_ms, (now() - start) * 1e3);
-        base = baseline_build(scene, &ms);
+        base = baseline_build(scene, quality, &ms);
         base_ms = fmin(base_ms, ms);
     }
     Box box = scene_box(scene);
@@ -358,8 +375,8 @@ static void bench_mesh(BenchMesh *m, View v, int res)
         printf("   OBJ load              (generated, no file)\n");
     printf("   build             %8.1f ms", build_ms);
     if (base != NULL)
-        printf("    Embree HIGH %8.1f ms   ratio raytra/Embree time %.2f", base_ms,
-               build_ms / base_ms);
+        printf("    Embree %-6s %8.1f ms   ratio raytra/Embree time %.2f", quality_names[quality],
+               base_ms, build_ms / base_ms);
     printf("\n   bytes/triangle    %8.1f      (mesh %.1f + BVH %.1f)\n", bytes,
            mesh_bytes / scene->triangle_count, (double)bvh_bytes(&bvh) / scene->triangle_count);
     const char *names[2] = {"primary", "shadow"};
@@ -425,15 +442,24 @@ static void bench_brute_force(void)
     scene_free(&m.scene);
 }
 
-/* Runs the benchmark: meshes from MESH_DIR (argv[1]) when there, and a generated one. */
+/* Runs the benchmark: meshes from MESH_DIR (argv[1]) when there, and a generated one, with
+ * RES x RES primary rays a view (argv[2]) and the baseline built at QUALITY (argv[3]). */
 int main(int argc, char **argv)
 {
     const char *dir = argc > 1 ? argv[1] : "../../shared/meshes";
     int res = argc > 2 ? atoi(argv[2]) : 1024;
+    BaselineQuality quality = BASELINE_HIGH;
+    if (argc > 3 && !quality_parse(argv[3], &quality)) {
+        fprintf(stderr, "bench: unknown Embree build quality '%s' (HIGH, MEDIUM or LOW)\n",
+                argv[3]);
+        return 2;
+    }
+    char baseline[96] = "none (not built with Embree 3)";
+    if (baseline_available())
+        snprintf(baseline, sizeof baseline,
+                 "Embree 3, rtcIntersect1/rtcOccluded1, build quality %s", quality_names[quality]);
     printf("raytra bench: part 1.4's BVH; %d x %d primary rays a view; Embree baseline: %s\n", res,
-           res,
-           baseline_available() ? "Embree 3, rtcIntersect1/rtcOccluded1, build quality HIGH"
-                                : "none (not built with Embree 3)");
+           res, baseline);
     char path[4096];
     BenchMesh m;
     snprintf(path, sizeof path, "%s/bunny.obj", dir);
@@ -444,7 +470,7 @@ int main(int argc, char **argv)
         double s = vec3_length(vec3_sub(b.hi, b.lo));
         View v = {vec3_add(c, vec3(0, 0, 1.2 * s)), vec3(0, 0, -1),
                   vec3_add(c, vec3(0.5 * s, 1.5 * s, 1.0 * s)), 0.7};
-        bench_mesh(&m, v, res);
+        bench_mesh(&m, v, res, quality);
         scene_free(&m.scene);
     }
     snprintf(path, sizeof path, "%s/sponza.obj", dir);
@@ -455,12 +481,12 @@ int main(int argc, char **argv)
         Vec3 c = box_center(b), e = vec3_sub(b.hi, b.lo);
         View v = {vec3(c.x - 0.3 * e.x, b.lo.y + 0.25 * e.y, c.z), vec3(1, -0.1, 0.05),
                   vec3(c.x, b.lo.y + 0.9 * e.y, c.z), 1.4};
-        bench_mesh(&m, v, res);
+        bench_mesh(&m, v, res, quality);
         scene_free(&m.scene);
     }
     mesh_sphere(&m, "sphere", 8);
     View v = {vec3(0, 0, 3), vec3(0, 0, -1), vec3(2, 3, 4), 0.8};
-    bench_mesh(&m, v, res);
+    bench_mesh(&m, v, res, quality);
     scene_free(&m.scene);
     bench_brute_force();
     return 0;
