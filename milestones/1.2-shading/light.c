@@ -1,8 +1,7 @@
-/* light.c: point, directional and (until part 1.6) area lights as seen from a surface point. */
+/* light.c: point and directional lights as seen from a surface point. */
 #include "light.h"
 
 #include <math.h>
-#include <stdio.h>
 
 /* starter: todo */
 /* excerpt: light-incident */
@@ -16,8 +15,7 @@ Incident light_incident(const Light *light, Vec3 point, bool falls_off)
         in.distance = INFINITY;
         return in;
     }
-    /* A point light, or an area light taken as a point at its centre until part 1.6
-     * spreads its light over its square. */
+    /* A point light (part 1.6 makes each sample of an area light one). */
     Vec3 to_light = vec3_sub(light->position, point);
     in.distance = vec3_length(to_light);
     if (in.distance == 0) {
@@ -33,11 +31,3 @@ Incident light_incident(const Light *light, Vec3 point, bool falls_off)
     return in;
 }
 /* end excerpt: light-incident */
-
-/* Tells the user, once, that this part lights with area lights as if they were points. */
-void light_note_area_lights(const Scene *scene)
-{
-    if (scene_features(scene) & FEATURE_AREA_LIGHTS)
-        fprintf(stderr, "raytra: note: area lights are taken as point lights at their centres "
-                        "until part 1.6\n");
-}

@@ -17,6 +17,5 @@ typedef struct {
 /* end excerpt: incident-struct */
 
 Incident light_incident(const Light *light, Vec3 point, bool falls_off);
-void light_note_area_lights(const Scene *scene);
 
 #endif

@@ -23,7 +23,8 @@ static Color shade_pixel(const void *ctx, int i, int j, RayStats *stats)
         return color(0, 0, 0);
     }
     world_explain_hit(explain, 1, &hit);
-    return shade_direct_radiance(view->scene, &hit, r, view->opts->two_sided, explain);
+    shade_explain_lights(explain, view->scene, &hit, r, view->opts->two_sided);
+    return shade_direct_radiance(view->scene, &hit, r, view->opts->two_sided);
 }
 /* end excerpt: shade-pixel */
 
@@ -44,23 +45,16 @@ static void probe_pixel(const void *ctx, int i, int j, Probe *probe)
                      .kd = shade_material(scene, &hit, view->opts->two_sided)->diffuse};
     for (int k = 0; k < scene->light_count; k++) {
         Incident in = light_incident(&scene->lights[k], hit.point, false);
-        probe->lights_visible += vec3_dot(n, in.dir) > 0;
+        probe->lights_visible += scene->lights[k].kind != LIGHT_AREA && vec3_dot(n, in.dir) > 0;
     }
-}
-
-/* Builds the view, saying first how area lights are lit in this part. */
-static bool setup(const Scene *scene, const Options *opts, void **ctx)
-{
-    light_note_area_lights(scene);
-    return view_setup(scene, opts, ctx);
 }
 
 static const Program program = {
     .cli = {.part = "1.2-shading",
             .purpose = "the nearest surface of each pixel, lit by Blinn-Phong shading"},
     .features = FEATURE_SPHERES | FEATURE_PLANES | FEATURE_TRIANGLES | FEATURE_POINT_LIGHTS |
-                FEATURE_DIRECTIONAL_LIGHTS | FEATURE_AREA_LIGHTS | FEATURE_SHADING,
-    .setup = setup,
+                FEATURE_DIRECTIONAL_LIGHTS | FEATURE_SHADING,
+    .setup = view_setup,
     .pixel = shade_pixel,
     .probe = probe_pixel,
     .cleanup = free,

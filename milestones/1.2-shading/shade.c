@@ -49,7 +49,7 @@ void shade_explain_light(const Explain *e, int depth, int k, const Incident *in,
 {
     if (e == NULL)
         return;
-    static const char *const kinds[] = {"point", "directional", "area (as a point)"};
+    static const char *const kinds[] = {"point", "directional", "area"};
     const Light *light = &e->scene->lights[k];
     char where[300], l[96];
     explain_line(e, depth, "light %d, %s%s: towards it %s, arriving (%.6g, %.6g, %.6g)", k,
@@ -96,22 +96,40 @@ const Material *shade_material(const Scene *scene, const Hit *hit, bool two_side
 /* starter: todo */
 /* excerpt: shade-direct-radiance */
 /* Returns the light that hit's surface reflects back along ray r straight from the
- * scene's point, directional and area lights, without shadows; part 1.3's
- * direct_radiance replaces it, with shadows and the ambient light. */
-Color shade_direct_radiance(const Scene *scene, const Hit *hit, Ray r, bool two_sided,
-                            const Explain *explain)
+ * scene's point and directional lights, without shadows; part 1.3's direct_radiance
+ * replaces it, with shadows and the ambient light. Area lights wait for part 1.6. */
+Color shade_direct_radiance(const Scene *scene, const Hit *hit, Ray r, bool two_sided)
 {
     const Material *m = shade_material(scene, hit, two_sided);
-    shade_explain_material(explain, 1, m);
     Vec3 n = shade_normal(hit);
     Vec3 v = vec3_neg(r.dir);
     Color sum = color(0, 0, 0);
     for (int k = 0; k < scene->light_count; k++) {
+        if (scene->lights[k].kind == LIGHT_AREA)
+            continue;
         Incident in = light_incident(&scene->lights[k], hit->point, scene_light_falls_off(scene));
-        BlinnPhong terms = shade_blinn_phong_terms(m, n, v, &in);
-        shade_explain_light(explain, 1, k, &in, terms);
-        sum = color_add(sum, color_add(terms.diffuse, terms.specular));
+        sum = color_add(sum, shade_blinn_phong(m, n, v, &in));
     }
     return sum;
 }
 /* end excerpt: shade-direct-radiance */
+
+/* Prints, for --trace-pixel, how part 1.2 lights hit: its material, and each light's
+ * Blinn-Phong terms, as shade_direct_radiance adds them up. */
+void shade_explain_lights(const Explain *e, const Scene *scene, const Hit *hit, Ray r,
+                          bool two_sided)
+{
+    if (e == NULL)
+        return;
+    const Material *m = shade_material(scene, hit, two_sided);
+    shade_explain_material(e, 1, m);
+    for (int k = 0; k < scene->light_count; k++) {
+        if (scene->lights[k].kind == LIGHT_AREA) {
+            explain_line(e, 1, "light %d: an area light, lit from part 1.6 on", k);
+            continue;
+        }
+        Incident in = light_incident(&scene->lights[k], hit->point, scene_light_falls_off(scene));
+        shade_explain_light(e, 1, k, &in,
+                            shade_blinn_phong_terms(m, shade_normal(hit), vec3_neg(r.dir), &in));
+    }
+}

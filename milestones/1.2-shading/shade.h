@@ -24,8 +24,9 @@ Color shade_blinn_phong(const Material *m, Vec3 n, Vec3 v, const Incident *in);
 Vec3 shade_normal(const Hit *hit);
 bool shade_shows_back_face(const Hit *hit);
 const Material *shade_material(const Scene *scene, const Hit *hit, bool two_sided);
-Color shade_direct_radiance(const Scene *scene, const Hit *hit, Ray r, bool two_sided,
-                            const Explain *explain);
+Color shade_direct_radiance(const Scene *scene, const Hit *hit, Ray r, bool two_sided);
+void shade_explain_lights(const Explain *e, const Scene *scene, const Hit *hit, Ray r,
+                          bool two_sided);
 void shade_explain_material(const Explain *e, int depth, const Material *m);
 void shade_explain_light(const Explain *e, int depth, int k, const Incident *in, BlinnPhong terms);
 

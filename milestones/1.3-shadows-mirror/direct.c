@@ -3,7 +3,6 @@
 
 #include "secondary.h"
 #include "shade.h"
-#include "world.h"
 
 /* starter: todo */
 /* excerpt: direct-in-shadow */
@@ -19,29 +18,56 @@ static Ray shadow_ray(const Tracer *tr, const Hit *hit, Ray r, const Incident *i
 
 /* Tells whether something lies between hit's point and the light in: a shadow ray from
  * the point towards the light, which must not reach as far as the light itself. */
-bool direct_in_shadow(const Tracer *tr, const Hit *hit, Ray r, const Incident *in, Path *path)
+bool direct_in_shadow(const Tracer *tr, const Hit *hit, Ray r, const Incident *in, int depth,
+                      Path *path)
 {
     double tmax = 0;
     Ray shadow = shadow_ray(tr, hit, r, in, &tmax);
-    path->stats->rays[RAY_SHADOW]++;
-    return tr->surfaces.blocked(tr->surfaces.data, shadow, 0, tmax);
+    return tracer_blocked(tr, shadow, tmax, depth, path);
 }
 /* end excerpt: direct-in-shadow */
 
-/* Prints, for --trace-pixel, the shadow ray towards light k and what blocks it. */
-void direct_explain_blocked(const Tracer *tr, int depth, int k, const Hit *hit, Ray r,
-                            const Incident *in)
+/* Part 1.3's through hook: all of the light, or none of it when in shadow. */
+Color direct_through(const void *ctx, const Tracer *tr, const Hit *hit, Ray r, const Incident *in,
+                     int depth, Path *path)
 {
-    if (tr->explain == NULL)
-        return;
-    double tmax = 0;
-    Ray shadow = shadow_ray(tr, hit, r, in, &tmax);
-    explain_line(tr->explain, depth, "light %d: in shadow", k);
-    explain_ray(tr->explain, depth + 1, "shadow", shadow);
-    Hit blocker;
-    if (tr->surfaces.hit(tr->surfaces.data, shadow, 0, tmax, &blocker))
-        world_explain_hit(tr->explain, depth + 2, &blocker);
+    (void)ctx;
+    return direct_in_shadow(tr, hit, r, in, depth, path) ? color(0, 0, 0) : color(1, 1, 1);
 }
+
+/* starter: todo */
+/* excerpt: direct-incident */
+/* Returns the light that hit's surface reflects back along ray r from the beam in:
+ * Blinn-Phong, times the fraction of the beam that reaches the point
+ * (tracer_through: none when a shadow ray finds something in the way). */
+Color direct_incident(const Tracer *tr, const Hit *hit, Ray r, const Incident *in, int depth,
+                      Path *path)
+{
+    Vec3 n = shade_normal(hit);
+    /* No shadow ray for a light behind the surface, or a dark one: it adds nothing anyway. */
+    if (vec3_dot(n, in->dir) <= 0 || color_is_black(in->radiance))
+        return color(0, 0, 0);
+    Color through = tracer_through(tr, hit, r, in, depth, path);
+    if (color_is_black(through))
+        return through;
+    const Material *m = shade_material(tr->scene, hit, tr->two_sided);
+    return color_mul(through, shade_blinn_phong(m, n, vec3_neg(r.dir), in));
+}
+/* end excerpt: direct-incident */
+
+/* excerpt: direct-light */
+/* Part 1.3's light hook: the light of one point or directional light, by direct_incident.
+ * An area light waits for part 1.6, which samples its square: until then it adds nothing. */
+Color direct_light(const void *ctx, const Tracer *tr, const Hit *hit, Ray r, const Light *light,
+                   int depth, Path *path)
+{
+    (void)ctx;
+    if (light->kind == LIGHT_AREA)
+        return color(0, 0, 0);
+    Incident in = light_incident(light, hit->point, scene_light_falls_off(tr->scene));
+    return direct_incident(tr, hit, r, &in, depth, path);
+}
+/* end excerpt: direct-light */
 
 /* excerpt: direct-ambient */
 /* Returns k_d (.) ambient, slide 21 ("+ shadows + ambient"): at every hit by the lecture
@@ -52,6 +78,7 @@ Color direct_ambient(const Tracer *tr, const Material *m, int depth)
     Color ambient = color(0, 0, 0);
     if (depth == 0 || scene->convention != CONVENTION_FALL2016)
         ambient = color_mul(m->diffuse, scene->ambient);
+    shade_explain_material(tr->explain, depth + 1, m);
     explain_color(tr->explain, depth + 1, "ambient, kd (.) ambient light", ambient);
     return ambient;
 }
@@ -60,32 +87,15 @@ Color direct_ambient(const Tracer *tr, const Material *m, int depth)
 /* starter: todo */
 /* excerpt: direct-radiance */
 /* Returns the light that hit's surface reflects back along ray r straight from the
- * lights: k_d (.) ambient, plus Blinn-Phong for each light that is not in shadow.
- * Replaces part 1.2's shade_direct_radiance; depth counts the reflections before r. */
+ * lights: k_d (.) ambient, plus what each light sends (tracer_light: Blinn-Phong, unless
+ * in shadow). Replaces part 1.2's shade_direct_radiance; depth counts the reflections
+ * before r. */
 Color direct_radiance(const Tracer *tr, const Hit *hit, Ray r, int depth, Path *path)
 {
-    const Scene *scene = tr->scene;
-    const Material *m = shade_material(scene, hit, tr->two_sided);
-    shade_explain_material(tr->explain, depth + 1, m);
-    Vec3 n = shade_normal(hit);
-    Vec3 v = vec3_neg(r.dir);
+    const Material *m = shade_material(tr->scene, hit, tr->two_sided);
     Color sum = direct_ambient(tr, m, depth);
-    for (int k = 0; k < scene->light_count; k++) {
-        Incident in = light_incident(&scene->lights[k], hit->point, scene_light_falls_off(scene));
-        /* No shadow ray for a light behind the surface: it adds nothing anyway. */
-        if (vec3_dot(n, in.dir) <= 0) {
-            explain_line(tr->explain, depth + 1, "light %d: behind the surface", k);
-            continue;
-        }
-        if (direct_in_shadow(tr, hit, r, &in, path)) {
-            direct_explain_blocked(tr, depth + 1, k, hit, r, &in);
-            continue;
-        }
-        BlinnPhong terms = shade_blinn_phong_terms(m, n, v, &in);
-        shade_explain_light(tr->explain, depth + 1, k, &in, terms);
-        sum = color_add(sum, color_add(terms.diffuse, terms.specular));
-    }
-    explain_color(tr->explain, depth + 1, "direct light", sum);
+    for (int k = 0; k < tr->scene->light_count; k++)
+        sum = color_add(sum, tracer_light(tr, hit, r, k, depth, path));
     return sum;
 }
 /* end excerpt: direct-radiance */

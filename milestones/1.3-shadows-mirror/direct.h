@@ -10,9 +10,14 @@
 #include "render.h"
 #include "trace.h"
 
-bool direct_in_shadow(const Tracer *tr, const Hit *hit, Ray r, const Incident *in, Path *path);
-void direct_explain_blocked(const Tracer *tr, int depth, int k, const Hit *hit, Ray r,
-                            const Incident *in);
+bool direct_in_shadow(const Tracer *tr, const Hit *hit, Ray r, const Incident *in, int depth,
+                      Path *path);
+Color direct_through(const void *ctx, const Tracer *tr, const Hit *hit, Ray r, const Incident *in,
+                     int depth, Path *path);
+Color direct_incident(const Tracer *tr, const Hit *hit, Ray r, const Incident *in, int depth,
+                      Path *path);
+Color direct_light(const void *ctx, const Tracer *tr, const Hit *hit, Ray r, const Light *light,
+                   int depth, Path *path);
 Color direct_ambient(const Tracer *tr, const Material *m, int depth);
 Color direct_radiance(const Tracer *tr, const Hit *hit, Ray r, int depth, Path *path);
 

@@ -3,7 +3,6 @@
 #include <stdlib.h>
 
 #include "app.h"
-#include "light.h"
 #include "secondary.h"
 #include "trace.h"
 #include "view.h"
@@ -20,7 +19,6 @@ static bool setup(const Scene *scene, const Options *opts, void **ctx)
     Part13 *part = malloc(sizeof *part);
     if (part == NULL)
         return false;
-    light_note_area_lights(scene);
     part->view = (View){camera_make(&scene->camera), scene, opts};
     part->tracer = tracer_make(scene, surfaces_brute_force(scene), opts);
     *ctx = part;

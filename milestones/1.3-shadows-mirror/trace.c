@@ -1,4 +1,4 @@
-/* trace.c: the function that returns the radiance along a ray, and calls itself for mirrors. */
+/* trace.c: the radiance along a ray, and the seams through which every ray is traced and told. */
 #include "trace.h"
 
 #include "direct.h"
@@ -6,7 +6,8 @@
 #include "shade.h"
 #include "world.h"
 
-/* Returns the tracer of scene, finding hits with surfaces, set up by the command line. */
+/* Returns the tracer of scene, finding hits with surfaces, set up by the command line;
+ * its hooks are part 1.3's own. */
 Tracer tracer_make(const Scene *scene, Surfaces surfaces, const Options *opts)
 {
     return (Tracer){.scene = scene,
@@ -14,7 +15,6 @@ Tracer tracer_make(const Scene *scene, Surfaces surfaces, const Options *opts)
                     .max_depth = opts->max_depth,
                     .two_sided = opts->two_sided,
                     .offset = opts->ray_offset,
-                    .direct = direct_radiance,
                     .explain = opts->explain};
 }
 
@@ -26,12 +26,9 @@ Tracer tracer_make(const Scene *scene, Surfaces surfaces, const Options *opts)
 Color trace_radiance(const Tracer *tr, Ray r, int depth, Path *path)
 {
     Hit hit;
-    if (!tr->surfaces.hit(tr->surfaces.data, r, 0, INFINITY, &hit)) {
-        explain_line(tr->explain, depth + 1, "hits nothing: the black background");
-        return color(0, 0, 0);
-    }
-    world_explain_hit(tr->explain, depth + 1, &hit);
-    Color radiance = tr->direct(tr, &hit, r, depth, path);
+    if (!tracer_hit(tr, r, depth, &hit))
+        return color(0, 0, 0); /* the black background */
+    Color radiance = direct_radiance(tr, &hit, r, depth, path);
 
     /* An ideal mirror sends back k_m of what arrives from the mirror direction, which is
      * what a ray traced in that direction finds: the same question, one bounce later. */
@@ -39,19 +36,119 @@ Color trace_radiance(const Tracer *tr, Ray r, int depth, Path *path)
     if (!color_is_black(km) && depth < tr->max_depth) {
         Vec3 dir = secondary_reflect(r.dir, shade_normal(&hit));
         Ray reflected = secondary_ray(&hit, r, dir, tr->offset);
-        path->stats->rays[RAY_REFLECTED]++;
-        explain_ray(tr->explain, depth + 1, "mirror", reflected);
-        Color mirrored = trace_radiance(tr, reflected, depth + 1, path);
-        explain_color(tr->explain, depth + 1, "times km", km);
+        Color mirrored = tracer_trace(tr, reflected, RAY_REFLECTED, depth + 1, path);
         radiance = color_add(radiance, color_mul(km, mirrored));
     }
-    explain_color(tr->explain, depth + 1, "radiance", radiance);
     return radiance;
 }
 /* end excerpt: trace-radiance */
 
+/* excerpt: tracer-seams */
+/* Finds the closest surface along r (t > 0) with the tracer's Surfaces, and tells it. */
+bool tracer_hit(const Tracer *tr, Ray r, int depth, Hit *hit)
+{
+    if (!tr->surfaces.hit(tr->surfaces.data, r, 0, INFINITY, hit)) {
+        explain_line(tr->explain, depth + 1, "hits nothing: the black background");
+        return false;
+    }
+    world_explain_hit(tr->explain, depth + 1, hit);
+    return true;
+}
+
+/* Tells whether anything lies on the shadow ray with 0 < t < tmax, counting it; when
+ * something does, tells the ray and the first thing on it. */
+bool tracer_blocked(const Tracer *tr, Ray shadow, double tmax, int depth, Path *path)
+{
+    path->stats->rays[RAY_SHADOW]++;
+    if (!tr->surfaces.blocked(tr->surfaces.data, shadow, 0, tmax))
+        return false;
+    if (tr->explain != NULL) {
+        Hit blocker;
+        explain_ray(tr->explain, depth + 2, "shadow", shadow);
+        if (tr->surfaces.hit(tr->surfaces.data, shadow, 0, tmax, &blocker))
+            world_explain_hit(tr->explain, depth + 3, &blocker);
+    }
+    return true;
+}
+
+/* Returns the radiance along a ray that a hit sends on (or the camera's, at depth 0),
+ * counting it as kind: the tracer's radiance hook, told with its ray and its result. */
+Color tracer_trace(const Tracer *tr, Ray r, RayKind kind, int depth, Path *path)
+{
+    path->stats->rays[kind]++;
+    explain_ray(tr->explain, depth, kind == RAY_PRIMARY ? "camera" : render_ray_kind_name(kind), r);
+    const TracerHooks *h = &tr->hooks;
+    Color c = h->radiance != NULL ? h->radiance(h->radiance_ctx, tr, r, depth, path)
+                                  : trace_radiance(tr, r, depth, path);
+    explain_color(tr->explain, depth + 1, "radiance", c);
+    return c;
+}
+
+/* Prints, for --trace-pixel, which light k is and, when it can add nothing, why. */
+static void explain_light(const Tracer *tr, const Hit *hit, int k, int depth)
+{
+    static const char *const kinds[] = {"point", "directional", "area"};
+    const Light *light = &tr->scene->lights[k];
+    char where[300];
+    explain_line(tr->explain, depth + 1, "light %d, %s%s", k, kinds[light->kind],
+                 explain_where(tr->explain, light->line, where, sizeof where));
+    if (light->kind == LIGHT_AREA && tr->hooks.light == NULL)
+        explain_line(tr->explain, depth + 2,
+                     "an area light: part 1.6 samples it; until then "
+                     "it adds nothing");
+    else if (light->kind != LIGHT_AREA &&
+             vec3_dot(shade_normal(hit), light_incident(light, hit->point, false).dir) <= 0)
+        explain_line(tr->explain, depth + 2, "behind the surface");
+}
+
+/* Returns the light that light k sends back along r from hit: the tracer's light hook,
+ * told with the light and what it adds. */
+Color tracer_light(const Tracer *tr, const Hit *hit, Ray r, int k, int depth, Path *path)
+{
+    if (tr->explain != NULL)
+        explain_light(tr, hit, k, depth);
+    const Light *light = &tr->scene->lights[k];
+    const TracerHooks *h = &tr->hooks;
+    Color c = h->light != NULL ? h->light(h->light_ctx, tr, hit, r, light, depth, path)
+                               : direct_light(NULL, tr, hit, r, light, depth, path);
+    explain_color(tr->explain, depth + 2, "adds", c);
+    return c;
+}
+
+/* Returns the fraction of the light in that reaches hit's point: the tracer's through
+ * hook, told with where the light comes from and, when some of it arrives, its
+ * Blinn-Phong terms. */
+Color tracer_through(const Tracer *tr, const Hit *hit, Ray r, const Incident *in, int depth,
+                     Path *path)
+{
+    const Explain *e = tr->explain;
+    if (e != NULL) {
+        char l[96];
+        explain_line(e, depth + 2, "towards it %s, arriving (%.6g, %.6g, %.6g)",
+                     explain_vec3(in->dir, l, sizeof l), in->radiance.r, in->radiance.g,
+                     in->radiance.b);
+    }
+    const TracerHooks *h = &tr->hooks;
+    Color through = h->through != NULL ? h->through(h->through_ctx, tr, hit, r, in, depth, path)
+                                       : direct_through(NULL, tr, hit, r, in, depth, path);
+    if (e != NULL) {
+        if (color_is_black(through)) {
+            explain_line(e, depth + 2, "in shadow");
+            return through;
+        }
+        if (through.r < 1 || through.g < 1 || through.b < 1)
+            explain_color(e, depth + 2, "what gets through", through);
+        const Material *m = shade_material(tr->scene, hit, tr->two_sided);
+        BlinnPhong terms = shade_blinn_phong_terms(m, shade_normal(hit), vec3_neg(r.dir), in);
+        explain_color(e, depth + 2, "diffuse", color_mul(through, terms.diffuse));
+        explain_color(e, depth + 2, "specular", color_mul(through, terms.specular));
+    }
+    return through;
+}
+/* end excerpt: tracer-seams */
+
 /* Tells --view what ray r meets first, and how many lights reach the point: in front of
- * the surface and not in shadow. */
+ * the surface and not in shadow (part 1.6's area lights as points at their centres). */
 void trace_probe(const Tracer *tr, Ray r, Probe *probe)
 {
     Hit hit;
@@ -65,11 +162,14 @@ void trace_probe(const Tracer *tr, Ray r, Probe *probe)
                      .surface = world_surface_id(scene, &hit),
                      .kd = shade_material(scene, &hit, tr->two_sided)->diffuse};
     RayStats stats = {{0}};
-    Path path = {.stats = &stats};
+    Path path = {.stats = &stats, .weight = 1};
     for (int k = 0; k < scene->light_count; k++) {
+        /* Part 1.3's lights: area lights only from part 1.6 on, which hooks in its own. */
+        if (scene->lights[k].kind == LIGHT_AREA && tr->hooks.light == NULL)
+            continue;
         Incident in = light_incident(&scene->lights[k], hit.point, false);
         probe->lights_visible +=
-            vec3_dot(n, in.dir) > 0 && !direct_in_shadow(tr, &hit, r, &in, &path);
+            vec3_dot(n, in.dir) > 0 && !direct_in_shadow(tr, &hit, r, &in, 0, &path);
     }
 }
 
@@ -78,10 +178,7 @@ void trace_probe(const Tracer *tr, Ray r, Probe *probe)
  * pixel of part 1.3, and of every later part that traces with its Tracer. */
 Color trace_camera_pixel(const Tracer *tr, const Camera *cam, int i, int j, RayStats *stats)
 {
-    Ray r = camera_ray(cam, i + 0.5, j + 0.5);
-    stats->rays[RAY_PRIMARY]++;
-    explain_ray(tr->explain, 0, "camera", r);
-    Path path = {.stats = stats};
-    return trace_radiance(tr, r, 0, &path);
+    Path path = {.stats = stats, .weight = 1};
+    return tracer_trace(tr, camera_ray(cam, i + 0.5, j + 0.5), RAY_PRIMARY, 0, &path);
 }
 /* end excerpt: trace-pixel */

@@ -10,29 +10,55 @@
 #include "color.h"
 #include "debugview.h"
 #include "explain.h"
+#include "hit.h"
+#include "light.h"
 #include "ray.h"
 #include "render.h"
 #include "scene.h"
 #include "surfaces.h"
 
-/* What one path carries down its bounces: its ray counts and, from part 1.6 on,
- * the random numbers of its pixel sample (NULL before). */
+/* What one path carries down its bounces: its ray counts; from part 1.5 on, its share
+ * of the pixel (weight, 1 for a camera ray); from part 1.6 on, the random numbers of its
+ * pixel sample (NULL before). */
 typedef struct {
     RayStats *stats;
+    double weight;
     const void *sample;
 } Path;
 
 typedef struct Tracer Tracer;
 
-/* What of a scene the tracer renders, for the note on what a part ignores; part 1.5
- * adds refraction. */
+/* What of a scene the tracer renders, for the note on what a part ignores: area lights
+ * wait for part 1.6, and part 1.5 adds refraction. */
 #define TRACER_FEATURES                                                                            \
     (FEATURE_SPHERES | FEATURE_PLANES | FEATURE_TRIANGLES | FEATURE_POINT_LIGHTS |                 \
-     FEATURE_DIRECTIONAL_LIGHTS | FEATURE_AREA_LIGHTS | FEATURE_AMBIENT_LIGHT | FEATURE_MIRRORS |  \
-     FEATURE_SHADING)
+     FEATURE_DIRECTIONAL_LIGHTS | FEATURE_AMBIENT_LIGHT | FEATURE_MIRRORS | FEATURE_SHADING)
 
-/* The light a hit receives straight from the lights; depth counts the bounces before r. */
-typedef Color (*DirectFn)(const Tracer *tr, const Hit *hit, Ray r, int depth, Path *path);
+/* excerpt: tracer-hooks */
+/* The three seams a later part plugs into, each a function and the context it is handed
+ * (its part's own state; NULL for part 1.3's). Where a hook is NULL, part 1.3's is used. */
+
+/* The radiance arriving along ray r, depth bounces after the camera ray: part 1.3's
+ * trace_radiance; part 1.5 traces glass. */
+typedef Color (*RadianceFn)(const void *ctx, const Tracer *tr, Ray r, int depth, Path *path);
+/* The light that one light sends back along r from hit, shadows included: part 1.3's
+ * direct_light; part 1.6 samples area lights. */
+typedef Color (*LightFn)(const void *ctx, const Tracer *tr, const Hit *hit, Ray r,
+                         const Light *light, int depth, Path *path);
+/* The fraction of the light in that reaches hit's point, per channel: part 1.3's
+ * direct_through, all or nothing by a shadow ray; part 1.5 lets some through glass. */
+typedef Color (*ThroughFn)(const void *ctx, const Tracer *tr, const Hit *hit, Ray r,
+                           const Incident *in, int depth, Path *path);
+
+typedef struct {
+    RadianceFn radiance;
+    const void *radiance_ctx;
+    LightFn light;
+    const void *light_ctx;
+    ThroughFn through;
+    const void *through_ctx;
+} TracerHooks;
+/* end excerpt: tracer-hooks */
 
 /* excerpt: tracer-struct */
 /* Everything a traced ray needs besides the ray, shared by every thread: read only. */
@@ -42,13 +68,19 @@ struct Tracer {
     int max_depth;     /* reflected rays a path may take */
     bool two_sided;    /* shade back faces with their own material, not yellow */
     double offset;     /* where secondary rays start: see secondary_ray */
-    DirectFn direct;   /* direct_radiance; part 1.6 plugs in area-light sampling */
-    const Explain *explain; /* --trace-pixel: where each step is told; NULL when not */
+    TracerHooks hooks; /* what later parts plug in; all NULL in part 1.3 */
+    const Explain *explain; /* --trace-pixel: where the seams tell each step; NULL when not */
 };
 /* end excerpt: tracer-struct */
 
 Tracer tracer_make(const Scene *scene, Surfaces surfaces, const Options *opts);
 Color trace_radiance(const Tracer *tr, Ray r, int depth, Path *path);
+bool tracer_hit(const Tracer *tr, Ray r, int depth, Hit *hit);
+bool tracer_blocked(const Tracer *tr, Ray shadow, double tmax, int depth, Path *path);
+Color tracer_trace(const Tracer *tr, Ray r, RayKind kind, int depth, Path *path);
+Color tracer_light(const Tracer *tr, const Hit *hit, Ray r, int k, int depth, Path *path);
+Color tracer_through(const Tracer *tr, const Hit *hit, Ray r, const Incident *in, int depth,
+                     Path *path);
 void trace_probe(const Tracer *tr, Ray r, Probe *probe);
 Color trace_camera_pixel(const Tracer *tr, const Camera *cam, int i, int j, RayStats *stats);
 

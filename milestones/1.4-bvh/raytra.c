@@ -5,7 +5,6 @@
 
 #include "accel.h"
 #include "app.h"
-#include "light.h"
 #include "trace.h"
 #include "view.h"
 
@@ -28,7 +27,6 @@ static bool setup(const Scene *scene, const Options *opts, void **ctx)
         free(part);
         return false;
     }
-    light_note_area_lights(scene);
     part->view = (View){camera_make(&scene->camera), scene, opts};
     part->tracer = tracer_make(scene, accel_surfaces(&part->accel), opts);
     *ctx = part;

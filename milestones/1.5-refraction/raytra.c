@@ -4,7 +4,6 @@
 
 #include "accel.h"
 #include "app.h"
-#include "light.h"
 #include "refract.h"
 #include "solid.h"
 #include "view.h"
@@ -32,24 +31,20 @@ static bool setup(const Scene *scene, const Options *opts, void **ctx)
         free(part);
         return false;
     }
-    light_note_area_lights(scene);
     solid_warn(scene, stderr);
     part->view = (View){camera_make(&scene->camera), scene, opts};
-    part->refractor = refract_make(scene, accel_surfaces(&part->accel), fresnel, opts);
+    refract_init(&part->refractor, scene, accel_surfaces(&part->accel), fresnel, opts);
     *ctx = part;
     return true;
 }
 
 /* excerpt: refract-pixel */
-/* Part 1.5's pixel: the radiance along the primary ray through its centre. */
+/* Part 1.5's pixel: part 1.3's, the radiance along the primary ray through its centre,
+ * with the Refractor's hooks in the tracer. */
 static Color refract_pixel(const void *ctx, int i, int j, RayStats *stats)
 {
     const Part15 *part = ctx;
-    Ray r = camera_ray(&part->view.camera, i + 0.5, j + 0.5);
-    stats->rays[RAY_PRIMARY]++;
-    explain_ray(part->refractor.tracer.explain, 0, "camera", r);
-    Path path = {.stats = stats};
-    return refract_radiance(&part->refractor, r, 0, &path);
+    return trace_camera_pixel(&part->refractor.tracer, &part->view.camera, i, j, stats);
 }
 /* end excerpt: refract-pixel */
 

@@ -3,23 +3,26 @@
 
 #include <math.h>
 
+#include "direct.h"
 #include "secondary.h"
 #include "shade.h"
 #include "transmit.h"
-#include "world.h"
 
-/* Returns the tracer of scene with glass, finding hits with surfaces, set up by the
- * command line; its direct light lets shadow rays through glass (transmit.c). */
-Refractor refract_make(const Scene *scene, Surfaces surfaces, FresnelModel fresnel,
-                       const Options *opts)
+/* Sets rf up as the tracer of scene with glass, finding hits with surfaces, set up by the
+ * command line: its radiance follows glass (refract_radiance), and its shadow rays
+ * pass through glass (transmit_light). rf is the hooks' context: it stays where it is. */
+void refract_init(Refractor *rf, const Scene *scene, Surfaces surfaces, FresnelModel fresnel,
+                  const Options *opts)
 {
-    Refractor rf = {.tracer = tracer_make(scene, surfaces, opts),
-                    .fresnel = fresnel,
-                    .min_weight = opts->min_weight};
-    rf.tracer.direct = transmit_direct_radiance;
+    *rf = (Refractor){.tracer = tracer_make(scene, surfaces, opts),
+                      .fresnel = fresnel,
+                      .min_weight = opts->min_weight};
+    rf->tracer.hooks.radiance = refract_radiance;
+    rf->tracer.hooks.radiance_ctx = rf;
+    rf->tracer.hooks.through = transmit_light;
+    rf->tracer.hooks.through_ctx = rf;
     for (int k = 0; k < scene->material_count; k++)
-        rf.has_glass |= refract_is_glass(&scene->materials[k]);
-    return rf;
+        rf->has_glass |= refract_is_glass(&scene->materials[k]);
 }
 
 /* excerpt: refract-glass-hit */
@@ -43,8 +46,6 @@ static double color_max(Color c)
     return fmax(c.r, fmax(c.g, c.b));
 }
 
-static Color radiance(const Refractor *rf, Ray r, int depth, double weight, Path *path);
-
 /* excerpt: refract-follow */
 /* Returns the radiance along the ray that leaves hit in direction dir, counted as kind,
  * or black when its share of the pixel, weight, is too small to see (--min-weight):
@@ -52,17 +53,16 @@ static Color radiance(const Refractor *rf, Ray r, int depth, double weight, Path
 static Color follow(const Refractor *rf, const Hit *hit, Ray r, Vec3 dir, RayKind kind, int depth,
                     double weight, Path *path)
 {
-    const char *name = render_ray_kind_name(kind);
     if (weight <= 0 || weight < rf->min_weight) {
         explain_line(rf->tracer.explain, depth + 1, "%s ray not followed: it would count %.3g",
-                     name, weight);
+                     render_ray_kind_name(kind), weight);
         return color(0, 0, 0);
     }
     /* secondary_ray starts it on the side it goes to: inside when it enters glass. */
     Ray next = secondary_ray(hit, r, dir, rf->tracer.offset);
-    path->stats->rays[kind]++;
-    explain_ray(rf->tracer.explain, depth + 1, name, next);
-    return radiance(rf, next, depth + 1, weight, path);
+    Path branch = *path;
+    branch.weight = weight;
+    return tracer_trace(&rf->tracer, next, kind, depth + 1, &branch);
 }
 /* end excerpt: refract-follow */
 
@@ -107,22 +107,15 @@ static Color glass_radiance(const Refractor *rf, const Hit *hit, const Material 
  * straight from the lights, plus k_m times the radiance along the mirror-reflected ray,
  * plus, for glass, the Fresnel-weighted radiance along the reflected and refracted rays;
  * all of it dimmed by Beer's law when r travelled inside glass. Replaces part 1.3's
- * trace_radiance; depth counts the reflections and refractions before r. */
-Color refract_radiance(const Refractor *rf, Ray r, int depth, Path *path)
+ * trace_radiance as the tracer's radiance hook (ctx is the Refractor); depth counts the
+ * reflections and refractions before r, and path->weight is r's share of its pixel. */
+Color refract_radiance(const void *ctx, const Tracer *tr, Ray r, int depth, Path *path)
 {
-    return radiance(rf, r, depth, 1, path);
-}
-
-/* The same, for a ray whose radiance counts weight times in its pixel. */
-static Color radiance(const Refractor *rf, Ray r, int depth, double weight, Path *path)
-{
-    const Tracer *tr = &rf->tracer;
+    const Refractor *rf = ctx;
+    double weight = path->weight;
     Hit found;
-    if (!tr->surfaces.hit(tr->surfaces.data, r, 0, INFINITY, &found)) {
-        explain_line(tr->explain, depth + 1, "hits nothing: the black background");
+    if (!tracer_hit(tr, r, depth, &found))
         return color(0, 0, 0);
-    }
-    world_explain_hit(tr->explain, depth + 1, &found);
     Hit hit = refract_glass_hit(tr->scene, &found);
     const Material *m = shade_material(tr->scene, &hit, tr->two_sided);
     /* A ray that meets glass from behind travelled inside it, all the way from its
@@ -132,7 +125,7 @@ static Color radiance(const Refractor *rf, Ray r, int depth, double weight, Path
         absorbed = dielectric_beer(m->attenuation, found.t);
     weight *= color_max(absorbed);
 
-    Color radiance = tr->direct(tr, &hit, r, depth, path);
+    Color radiance = direct_radiance(tr, &hit, r, depth, path);
     /* Mirror, reflected and refracted rays share one budget: at its end, a branch
      * adds nothing more. */
     if (depth < tr->max_depth) {
@@ -148,8 +141,6 @@ static Color radiance(const Refractor *rf, Ray r, int depth, double weight, Path
     }
     if (found.back_face && refract_is_glass(m))
         explain_color(tr->explain, depth + 1, "times a^t, absorbed inside", absorbed);
-    radiance = color_mul(radiance, absorbed);
-    explain_color(tr->explain, depth + 1, "radiance", radiance);
-    return radiance;
+    return color_mul(radiance, absorbed);
 }
 /* end excerpt: refract-radiance */

@@ -11,21 +11,15 @@
 #include "trace.h"
 
 /* excerpt: refractor-struct */
-/* Part 1.5's tracer: part 1.3's Tracer, which it begins with, and how glass reflects.
- * The direct-light hook receives the Tracer; refractor_of gets the whole back. */
+/* Part 1.5's tracer: part 1.3's Tracer, whose radiance and through hooks it takes over
+ * (with this Refractor as their context), and how glass reflects. */
 typedef struct {
-    Tracer tracer;        /* first: a pointer to it is a pointer to the Refractor */
+    Tracer tracer;
     FresnelModel fresnel; /* --fresnel: Schlick's approximation or the exact equations */
     double min_weight;    /* --min-weight: rays that count less in their pixel are not traced */
     bool has_glass;       /* some material has an index of refraction */
 } Refractor;
 /* end excerpt: refractor-struct */
-
-/* Returns the Refractor that tr begins; tr must be the tracer of a Refractor. */
-static inline const Refractor *refractor_of(const Tracer *tr)
-{
-    return (const Refractor *)tr;
-}
 
 /* Tells whether material m is glass: it has an index of refraction. */
 static inline bool refract_is_glass(const Material *m)
@@ -33,9 +27,9 @@ static inline bool refract_is_glass(const Material *m)
     return m->ior > 0;
 }
 
-Refractor refract_make(const Scene *scene, Surfaces surfaces, FresnelModel fresnel,
-                       const Options *opts);
+void refract_init(Refractor *rf, const Scene *scene, Surfaces surfaces, FresnelModel fresnel,
+                  const Options *opts);
 Hit refract_glass_hit(const Scene *scene, const Hit *hit);
-Color refract_radiance(const Refractor *rf, Ray r, int depth, Path *path);
+Color refract_radiance(const void *ctx, const Tracer *tr, Ray r, int depth, Path *path);
 
 #endif

@@ -1,9 +1,7 @@
 /* transmit.c: shadow rays that pass through glass, dimmed by Fresnel and Beer but not bent. */
 #include "transmit.h"
 
-#include "direct.h"
 #include "secondary.h"
-#include "shade.h"
 
 /* starter: todo */
 /* excerpt: transmit-light */
@@ -12,15 +10,16 @@
  * the product over the glass surfaces crossed of (1 - R), R taken at the shadow ray's
  * angle as if on the air side, and over the stretches inside glass of Beer's a^s.
  * The shadow ray is not bent: light that glass focuses or deflects onto the point
- * (caustics) is beyond a ray tracer that follows rays from the eye. */
-Color transmit_light(const Refractor *rf, const Hit *hit, Ray r, const Incident *in, Path *path)
+ * (caustics) is beyond a ray tracer that follows rays from the eye. Part 1.5's through
+ * hook, in place of part 1.3's all or nothing; ctx is the Refractor. */
+Color transmit_light(const void *ctx, const Tracer *tr, const Hit *hit, Ray r, const Incident *in,
+                     int depth, Path *path)
 {
-    const Tracer *tr = &rf->tracer;
+    const Refractor *rf = ctx;
     Ray shadow = secondary_ray(hit, r, in->dir, tr->offset);
-    path->stats->rays[RAY_SHADOW]++;
     /* As in part 1.3: only what lies before the light counts, from the shadow ray's origin. */
     double tmax = in->distance - vec3_dot(vec3_sub(shadow.origin, hit->point), in->dir);
-    if (!tr->surfaces.blocked(tr->surfaces.data, shadow, 0, tmax))
+    if (!tracer_blocked(tr, shadow, tmax, depth, path))
         return color(1, 1, 1);
     if (!rf->has_glass)
         return color(0, 0, 0);
@@ -46,38 +45,3 @@ Color transmit_light(const Refractor *rf, const Hit *hit, Ray r, const Incident 
     return color(0, 0, 0);
 }
 /* end excerpt: transmit-light */
-
-/* excerpt: transmit-direct-radiance */
-/* Returns the light that hit's surface reflects back along ray r straight from the
- * lights: k_d (.) ambient, plus Blinn-Phong for each light, times the fraction of it
- * that gets through (transmit_light). Replaces part 1.3's direct_radiance, whose
- * shadow rays stop at glass; tr is the tracer of a Refractor. */
-Color transmit_direct_radiance(const Tracer *tr, const Hit *hit, Ray r, int depth, Path *path)
-{
-    const Scene *scene = tr->scene;
-    const Material *m = shade_material(scene, hit, tr->two_sided);
-    shade_explain_material(tr->explain, depth + 1, m);
-    Vec3 n = shade_normal(hit);
-    Vec3 v = vec3_neg(r.dir);
-    Color sum = direct_ambient(tr, m, depth); /* as in part 1.3 */
-    for (int k = 0; k < scene->light_count; k++) {
-        Incident in = light_incident(&scene->lights[k], hit->point, scene_light_falls_off(scene));
-        if (vec3_dot(n, in.dir) <= 0) { /* it adds nothing, and needs no shadow ray */
-            explain_line(tr->explain, depth + 1, "light %d: behind the surface", k);
-            continue;
-        }
-        Color through = transmit_light(refractor_of(tr), hit, r, &in, path);
-        if (color_is_black(through)) {
-            explain_line(tr->explain, depth + 1, "light %d: in shadow", k);
-            continue;
-        }
-        BlinnPhong terms = shade_blinn_phong_terms(m, n, v, &in);
-        shade_explain_light(tr->explain, depth + 1, k, &in, terms);
-        if (through.r < 1 || through.g < 1 || through.b < 1)
-            explain_color(tr->explain, depth + 2, "times what gets through glass", through);
-        sum = color_add(sum, color_mul(through, color_add(terms.diffuse, terms.specular)));
-    }
-    explain_color(tr->explain, depth + 1, "direct light", sum);
-    return sum;
-}
-/* end excerpt: transmit-direct-radiance */

@@ -1,4 +1,4 @@
-/* transmit.h: how much of a light reaches a point through glass, and the direct light with it. */
+/* transmit.h: how much of a light reaches a point through glass. */
 #ifndef RAYTRA_TRANSMIT_H
 #define RAYTRA_TRANSMIT_H
 
@@ -10,7 +10,7 @@
 /* A shadow ray crosses at most this many glass surfaces; beyond, the light counts as blocked. */
 #define TRANSMIT_MAX_CROSSINGS 64
 
-Color transmit_light(const Refractor *rf, const Hit *hit, Ray r, const Incident *in, Path *path);
-Color transmit_direct_radiance(const Tracer *tr, const Hit *hit, Ray r, int depth, Path *path);
+Color transmit_light(const void *ctx, const Tracer *tr, const Hit *hit, Ray r, const Incident *in,
+                     int depth, Path *path);
 
 #endif

@@ -2,13 +2,13 @@
 #include "montecarlo.h"
 
 #include <stdio.h>
-#include <stdlib.h>
 
 #include "area.h"
-#include "shade.h"
+#include "direct.h"
 
-/* Sets up mc to render scene: the camera, the tracer with its hook, the sampling options.
- * False (reported) on a bad option or no memory. */
+/* Sets up mc to render scene: the camera, part 1.5's tracer with this part's light hook,
+ * the sampling options. mc is the hook's context: it stays where it is. False
+ * (reported) on a bad option. */
 bool montecarlo_init(MonteCarlo *mc, const Scene *scene, Surfaces surfaces, const Options *opts)
 {
     *mc = (MonteCarlo){.camera = camera_make(&scene->camera),
@@ -25,48 +25,31 @@ bool montecarlo_init(MonteCarlo *mc, const Scene *scene, Surfaces surfaces, cons
         fprintf(stderr, "raytra: P and S must be from 1 to %d\n", MONTECARLO_MAX_SIDE);
         return false;
     }
-    /* The point and directional lights, and the ambient light, are 1.3's business: a
-     * copy of the scene that shares everything but its list of lights. */
-    mc->point_scene = *scene;
-    mc->point_scene.lights = malloc(sizeof(Light) * (size_t)(scene->light_count + 1));
-    if (mc->point_scene.lights == NULL)
-        return false;
-    mc->point_scene.light_count = 0;
-    for (int k = 0; k < scene->light_count; k++)
-        if (scene->lights[k].kind != LIGHT_AREA)
-            mc->point_scene.lights[mc->point_scene.light_count++] = scene->lights[k];
-    mc->below = below_make(scene, surfaces, opts);
-    below_tracer(&mc->below)->direct = montecarlo_direct_radiance;
-    mc->point_lights = below_make(&mc->point_scene, surfaces, opts);
+    FresnelModel fresnel = FRESNEL_SCHLICK; /* --fresnel is checked in setup */
+    if (opts->fresnel_name != NULL)
+        dielectric_fresnel_from_name(opts->fresnel_name, &fresnel);
+    refract_init(&mc->below, scene, surfaces, fresnel, opts);
+    mc->below.tracer.hooks.light = montecarlo_light;
+    mc->below.tracer.hooks.light_ctx = mc;
     return true;
 }
 
 /* Tells --view what the camera ray through the centre of pixel (i, j) meets first. */
 void montecarlo_probe(const MonteCarlo *mc, int i, int j, Probe *probe)
 {
-    trace_probe(below_tracer(&mc->below), camera_ray(&mc->camera, i + 0.5, j + 0.5), probe);
-}
-
-/* Frees what montecarlo_init allocated. */
-void montecarlo_free(MonteCarlo *mc)
-{
-    free(mc->point_scene.lights);
-    mc->point_scene.lights = NULL;
+    trace_probe(&mc->below.tracer, camera_ray(&mc->camera, i + 0.5, j + 0.5), probe);
 }
 
 /* starter: todo */
 /* excerpt: area-radiance */
 /* Returns the light that hit's surface reflects along r from the square light: S x S
- * shadow rays to points spread over it, each a point light of 1/S^2 of its colour. */
+ * shadow rays to points spread over it, each a point light of 1/S^2 of its colour,
+ * lit as part 1.3 lights a point light (direct_incident). */
 Color montecarlo_area_radiance(const MonteCarlo *mc, const Light *light, const Hit *hit, Ray r,
                                 int depth, Path *path)
 {
     const Sample *sample = path->sample;
-    const Tracer *tr = below_tracer(&mc->below);
-    const Scene *scene = tr->scene;
-    const Material *m = shade_material(scene, hit, tr->two_sided);
-    Vec3 n = shade_normal(hit);
-    Vec3 v = vec3_neg(r.dir);
+    const Tracer *tr = &mc->below.tracer;
     int side = mc->light_side, count = side * side;
     /* Correlated strata: with one shadow ray per hit, the shadow ray of the pixel's
      * sub-pixel k goes to light stratum pi(k), so the pixel's P^2 rays cover the light. */
@@ -80,60 +63,67 @@ Color montecarlo_area_radiance(const MonteCarlo *mc, const Light *light, const H
         else
             strata_point(mc->sampling, sample->rng, q, side, &ru, &rv);
         Incident in = area_incident(light, area_point(light, ru, rv), hit->point, count,
-                                    scene_light_falls_off(scene));
-        /* As for a point light: no shadow ray where the light adds nothing anyway. */
-        if (color_is_black(in.radiance) || vec3_dot(n, in.dir) <= 0) {
-            explain_line(tr->explain, depth + 1, "area light sample %d of 0 to %d: faces away", q,
-                         count - 1);
-            continue;
-        }
-        Color through = below_light_through(&mc->below, hit, r, &in, path);
-        if (color_is_black(through)) {
-            explain_line(tr->explain, depth + 1, "area light sample %d of 0 to %d: in shadow", q,
-                         count - 1);
-            continue;
-        }
-        Color c = color_mul(shade_blinn_phong(m, n, v, &in), through);
-        explain_line(tr->explain, depth + 1,
-                     "area light sample %d of 0 to %d: Blinn-Phong = (%.6g, %.6g, %.6g)", q,
-                     count - 1, c.r, c.g, c.b);
-        sum = color_add(sum, c);
+                                    scene_light_falls_off(tr->scene));
+        sum = color_add(sum, direct_incident(tr, hit, r, &in, depth, path));
     }
-    explain_color(tr->explain, depth + 1, "area light", sum);
     return sum;
 }
 /* end excerpt: area-radiance */
 
-/* starter: todo */
-/* excerpt: montecarlo-direct-radiance */
-/* Returns the light that hit's surface reflects along r straight from the lights: the
- * part below's direct light for the ambient, point and directional lights, plus every
- * area light sampled. Replaces 1.3's direct_radiance as the tracer's direct hook. */
-Color montecarlo_direct_radiance(const Tracer *tr, const Hit *hit, Ray r, int depth, Path *path)
+/* excerpt: montecarlo-light */
+/* Part 1.6's light hook: an area light sampled by S x S shadow rays; a point or
+ * directional light as part 1.3 lights it. ctx is the MonteCarlo. */
+Color montecarlo_light(const void *ctx, const Tracer *tr, const Hit *hit, Ray r,
+                       const Light *light, int depth, Path *path)
 {
-    /* tr begins a MonteCarlo (montecarlo_init plugs this hook in there alone). */
-    const MonteCarlo *mc = (const MonteCarlo *)tr;
-    Color sum = BELOW_DIRECT(below_tracer(&mc->point_lights), hit, r, depth, path);
-    const Scene *scene = tr->scene;
-    for (int k = 0; k < scene->light_count; k++)
-        if (scene->lights[k].kind == LIGHT_AREA)
-            sum = color_add(sum,
-                            montecarlo_area_radiance(mc, &scene->lights[k], hit, r, depth, path));
-    return sum;
+    if (light->kind == LIGHT_AREA)
+        return montecarlo_area_radiance(ctx, light, hit, r, depth, path);
+    return direct_light(NULL, tr, hit, r, light, depth, path);
 }
-/* end excerpt: montecarlo-direct-radiance */
+/* end excerpt: montecarlo-light */
 
 /* starter: todo */
-/* excerpt: montecarlo-pixel */
-/* Returns the summed radiance of samples first to last - 1 of the P x P rays through
- * pixel (i, j): ray k through a random point of sub-square k (jittered; k counts the
- * sub-squares row by row from the pixel's bottom left), or through its centre when P = 1.
+/* excerpt: montecarlo-point */
+/* Returns in (*x, *y) the image point of ray k of the P x P rays through pixel (i, j):
+ * a random point of sub-square k (jittered; k counts the sub-squares row by row from
+ * the pixel's bottom left), drawn from rng, or the pixel's centre when P = 1.
  * The lecture's one ray per pixel, at u = l + (r - l)(i + 0.5)/n_x, samples the image at
  * a point: slide 38 ("relationship of (i, j) th pixel in image plane to u, v").
  * One point a pixel aliases: slide 75 ("note aliasing"). P x P points average the
- * pixel's area. Each ray has its own random numbers, from (seed, pixel, k) alone, so
- * that no pixel depends on which thread renders it, or when, and ray k is the same
- * whether it is traced with the others or alone (--trace-pixel X,Y@k). */
+ * pixel's area. */
+void montecarlo_point(const MonteCarlo *mc, Rng *rng, int i, int j, int k, double *x, double *y)
+{
+    *x = i + 0.5;
+    *y = j + 0.5;
+    if (mc->pixel_side > 1) {
+        double du, dv;
+        strata_point(mc->sampling, rng, k, mc->pixel_side, &du, &dv);
+        *x = i + du;
+        *y = j + dv;
+    }
+}
+/* end excerpt: montecarlo-point */
+
+/* Prints, for --trace-pixel, which of the pixel's samples k is and where it goes. */
+static void explain_sample(const Explain *e, const MonteCarlo *mc, int k, double x, double y)
+{
+    int side = mc->pixel_side, count = side * side;
+    if (side > 1 && mc->sampling != SAMPLING_RANDOM)
+        explain_line(e, 0,
+                     "sample %d of 0 to %d: in sub-square %d from the left, %d from the "
+                     "bottom, at image point (%.6f, %.6f)",
+                     k, count - 1, k % side, k / side, x, y);
+    else
+        explain_line(e, 0, "sample %d of 0 to %d: at image point (%.6f, %.6f)", k, count - 1, x,
+                     y);
+}
+
+/* excerpt: montecarlo-pixel */
+/* Returns the summed radiance of samples first to last - 1 of the P x P rays through
+ * pixel (i, j), each through its own point (montecarlo_point). Each ray has its own
+ * random numbers, from (seed, pixel, k) alone, so that no pixel depends on which thread
+ * renders it, or when, and ray k is the same whether it is traced with the others or
+ * alone (--trace-pixel X,Y@k). */
 static Color sum_samples(const MonteCarlo *mc, int i, int j, int first, int last, RayStats *stats)
 {
     int side = mc->pixel_side, count = side * side;
@@ -145,38 +135,25 @@ static Color sum_samples(const MonteCarlo *mc, int i, int j, int first, int last
         Rng shuffle = rng_make(key, 0);
         strata_shuffle(&shuffle, perm, count);
     }
-    const Explain *explain = below_tracer(&mc->below)->explain;
+    const Tracer *tr = &mc->below.tracer;
     Color sum = color(0, 0, 0);
     for (int k = first; k < last; k++) {
         Rng rng = rng_make(key, (uint64_t)k + 1);
-        double x = i + 0.5, y = j + 0.5;
-        if (side > 1) {
-            double du, dv;
-            strata_point(mc->sampling, &rng, k, side, &du, &dv);
-            x = i + du;
-            y = j + dv;
-        }
+        double x, y;
+        montecarlo_point(mc, &rng, i, j, k, &x, &y);
+        explain_sample(tr->explain, mc, k, x, y);
         Sample sample = {.rng = &rng,
                          .stratum = correlated ? perm[k] : 0,
                          .strata_side = correlated ? side : 0};
-        Path path = {.stats = stats, .sample = &sample};
+        Path path = {.stats = stats, .weight = 1, .sample = &sample};
         Ray r = camera_ray(&mc->camera, x, y);
-        stats->rays[RAY_PRIMARY]++;
-        if (side > 1 && mc->sampling != SAMPLING_RANDOM)
-            explain_line(explain, 0,
-                         "sample %d of 0 to %d: in sub-square %d from the left, %d from the "
-                         "bottom, at image point (%.6f, %.6f)",
-                         k, count - 1, k % side, k / side, x, y);
-        else
-            explain_line(explain, 0, "sample %d of 0 to %d: at image point (%.6f, %.6f)", k,
-                         count - 1, x, y);
-        explain_ray(explain, 0, "camera", r);
-        sum = color_add(sum, below_radiance(&mc->below, r, 0, &path));
+        sum = color_add(sum, tracer_trace(tr, r, RAY_PRIMARY, 0, &path));
     }
     return sum;
 }
 /* end excerpt: montecarlo-pixel */
 
+/* starter: todo */
 /* excerpt: montecarlo-mean */
 /* Returns the colour of pixel (i, j): the mean radiance of its P x P rays. The box
  * filter: every ray through the pixel counts 1/P^2. */

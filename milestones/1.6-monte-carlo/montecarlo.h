@@ -8,7 +8,7 @@
 #include "camera.h"
 #include "cli.h"
 #include "rng.h"
-#include "below.h"
+#include "refract.h"
 #include "strata.h"
 
 /* The largest P and S: the command line's limit (--samples, --light-samples). */
@@ -26,12 +26,10 @@ typedef struct {
 /* end excerpt: sample-struct */
 
 /* excerpt: montecarlo-struct */
-/* Everything the pixels read. below comes first, and begins with 1.3's Tracer: the
- * tracer's direct hook receives a pointer to it and finds the rest of the struct. */
+/* Everything the pixels read: part 1.5's tracer, whose light hook this part takes over
+ * to sample area lights (with this MonteCarlo as its context), and the sampling. */
 typedef struct {
-    Below below;        /* the part below's tracer, its direct hook montecarlo_direct_radiance */
-    Below point_lights; /* the same over point_scene, with the part below's direct light */
-    Scene point_scene;  /* the scene without its area lights */
+    Refractor below; /* part 1.5's tracer: glass, shadows through glass, the BVH */
     Camera camera;
     Sampling sampling;
     int pixel_side; /* P */
@@ -41,10 +39,11 @@ typedef struct {
 /* end excerpt: montecarlo-struct */
 
 bool montecarlo_init(MonteCarlo *mc, const Scene *scene, Surfaces surfaces, const Options *opts);
-void montecarlo_free(MonteCarlo *mc);
 Color montecarlo_area_radiance(const MonteCarlo *mc, const Light *light, const Hit *hit, Ray r,
-                                int depth, Path *path);
-Color montecarlo_direct_radiance(const Tracer *tr, const Hit *hit, Ray r, int depth, Path *path);
+                               int depth, Path *path);
+Color montecarlo_light(const void *ctx, const Tracer *tr, const Hit *hit, Ray r, const Light *light,
+                       int depth, Path *path);
+void montecarlo_point(const MonteCarlo *mc, Rng *rng, int i, int j, int k, double *x, double *y);
 Color montecarlo_pixel(const MonteCarlo *mc, int i, int j, RayStats *stats);
 Color montecarlo_sample(const MonteCarlo *mc, int i, int j, int k, RayStats *stats);
 void montecarlo_probe(const MonteCarlo *mc, int i, int j, Probe *probe);

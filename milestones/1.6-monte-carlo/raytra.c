@@ -13,9 +13,8 @@ typedef struct {
 } Part16;
 
 /* excerpt: setup */
-/* Builds the camera, the tracer and the sampling of the scene. The geometry comes from
- * the parts below (1.3's brute force; 1.4's BVH, accel_surfaces, once merged), and the
- * tracing itself from below.h. */
+/* Builds the camera, the tracer and the sampling of the scene: part 1.4's BVH behind
+ * part 1.5's tracer, with this part's light hook (montecarlo_init). */
 static bool setup(const Scene *scene, const Options *opts, void **ctx)
 {
     Part16 *part = malloc(sizeof *part);
@@ -64,7 +63,6 @@ static void probe_pixel(const void *ctx, int i, int j, Probe *probe)
 static void cleanup(void *ctx)
 {
     Part16 *part = ctx;
-    montecarlo_free(&part->mc);
     accel_free(&part->accel);
     free(part);
 }

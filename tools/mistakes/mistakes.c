@@ -51,13 +51,11 @@ bool __wrap_world_hit(const Scene *scene, Ray r, double tmin, double tmax, Hit *
 #endif
 
 #ifdef WRAP_shade_direct_radiance
-Color __wrap_shade_direct_radiance(const Scene *scene, const Hit *hit, Ray r, bool two_sided,
-                                   const Explain *explain);
+Color __wrap_shade_direct_radiance(const Scene *scene, const Hit *hit, Ray r, bool two_sided);
 
 /* Specular behind the surface: the highlight added even for a light behind it, where
  * n.l < 0 but n.h may still be positive. Part 1.2's sum, with that mistake. */
-Color __wrap_shade_direct_radiance(const Scene *scene, const Hit *hit, Ray r, bool two_sided,
-                                   const Explain *explain)
+Color __wrap_shade_direct_radiance(const Scene *scene, const Hit *hit, Ray r, bool two_sided)
 {
     const Material *m = shade_material(scene, hit, two_sided);
     Vec3 n = shade_normal(hit), v = vec3_neg(r.dir);
@@ -70,7 +68,6 @@ Color __wrap_shade_direct_radiance(const Scene *scene, const Hit *hit, Ray r, bo
             terms.specular =
                 color_mul(in.radiance, color_scale(m->specular, pow(n_dot_h, m->phong)));
         }
-        shade_explain_light(explain, 1, k, &in, terms);
         sum = color_add(sum, color_add(terms.diffuse, terms.specular));
     }
     return sum;

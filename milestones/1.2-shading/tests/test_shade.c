@@ -119,7 +119,7 @@ START_TEST(lights_add_up)
     Material matte = {.diffuse = {0.25, 0.5, 0.75}};
     Scene scene = {.materials = &matte, .material_count = 1, .lights = lights, .light_count = 2};
     Hit hit = {.t = 1, .point = {0, 0, 0}, .normal = {0, 1, 0}, .kind = SURFACE_PLANE};
-    Color c = shade_direct_radiance(&scene, &hit, ray(vec3(0, 1, 0), vec3(0, -1, 0)), false, NULL);
+    Color c = shade_direct_radiance(&scene, &hit, ray(vec3(0, 1, 0), vec3(0, -1, 0)), false);
     ck_assert_color_near(c, color(0.5, 1, 1.5), 1e-15);
 }
 END_TEST
@@ -147,10 +147,10 @@ START_TEST(back_faces_are_lit_yellow)
         .materials = &glossy_red, .material_count = 1, .lights = &below, .light_count = 1};
     Hit back = {.t = 1, .normal = {0, 1, 0}, .back_face = true, .kind = SURFACE_TRIANGLE};
     Ray from_below = ray(vec3(0, -1, 0), vec3(0, 1, 0));
-    ck_assert_color_near(shade_direct_radiance(&scene, &back, from_below, false, NULL),
+    ck_assert_color_near(shade_direct_radiance(&scene, &back, from_below, false),
                          color(1, 1, 0), 1e-15);
     /* --two-sided: the triangle's own material, highlight included (n.h = 1). */
-    ck_assert_color_near(shade_direct_radiance(&scene, &back, from_below, true, NULL),
+    ck_assert_color_near(shade_direct_radiance(&scene, &back, from_below, true),
                          color(2, 1, 1), 1e-15);
 }
 END_TEST

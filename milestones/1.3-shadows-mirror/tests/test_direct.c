@@ -13,8 +13,7 @@ static Tracer tracer(Scene *scene)
     return (Tracer){.scene = scene,
                     .surfaces = surfaces_brute_force(scene),
                     .max_depth = 20,
-                    .offset = SECONDARY_OFFSET,
-                    .direct = direct_radiance};
+                    .offset = SECONDARY_OFFSET};
 }
 
 /* A hit on the floor y = 0 at the origin, seen from above. */
@@ -30,7 +29,7 @@ static bool shadowed(Sphere *spheres, int count, Light light)
     Incident in = light_incident(&light, floor_hit.point, false);
     RayStats stats = {{0}};
     Path path = {.stats = &stats};
-    bool blocked = direct_in_shadow(&tr, &floor_hit, from_above, &in, &path);
+    bool blocked = direct_in_shadow(&tr, &floor_hit, from_above, &in, 0, &path);
     ck_assert_int_eq(stats.rays[RAY_SHADOW], 1);
     return blocked;
 }
@@ -147,7 +146,7 @@ START_TEST(the_shadow_reaches_the_contact_point)
     Incident in = light_incident(&bulb, near_contact.point, false);
     RayStats stats = {{0}};
     Path path = {.stats = &stats};
-    ck_assert(direct_in_shadow(&tr, &near_contact, from_above, &in, &path));
+    ck_assert(direct_in_shadow(&tr, &near_contact, from_above, &in, 0, &path));
 }
 END_TEST
 
@@ -171,12 +170,13 @@ START_TEST(no_light_leaks_through_a_thin_wall)
     Incident in = light_incident(&bulb, behind.point, false);
     RayStats stats = {{0}};
     Path path = {.stats = &stats};
-    ck_assert(direct_in_shadow(&tr, &behind, from_above, &in, &path));
+    ck_assert(direct_in_shadow(&tr, &behind, from_above, &in, 0, &path));
     /* And a point on the wall's lit face is not shadowed by the wall itself. */
     Hit on_face = {
         .t = 1, .point = {1 + 1e-6, 0.5, 0}, .normal = {1, 0, 0}, .kind = SURFACE_TRIANGLE};
     in = light_incident(&bulb, on_face.point, false);
-    ck_assert(!direct_in_shadow(&tr, &on_face, ray(vec3(5, 0.5, 3), vec3(-1, 0, 0)), &in, &path));
+    ck_assert(
+        !direct_in_shadow(&tr, &on_face, ray(vec3(5, 0.5, 3), vec3(-1, 0, 0)), &in, 0, &path));
 }
 END_TEST
 

@@ -1,34 +1,45 @@
-/* test_refract.c: the radiance through glass on tiny scenes worked out by hand, and glass shadows. */
+/* test_refract.c: the radiance through glass on tiny scenes worked out by hand, and glass shadows.
+ */
 #include "light.h"
 #include "refract.h"
 #include "secondary.h"
 #include "transmit.h"
+#include "world.h"
 #include "testing.h"
 
 #define PI 3.14159265358979323846
 
 /* A Refractor over scene by brute force, with the default offset; every ray is followed
  * to the depth limit (--min-weight 0). */
-static Refractor refractor(const Scene *scene, int max_depth, FresnelModel fresnel)
+static void refractor(Refractor *rf, const Scene *scene, int max_depth, FresnelModel fresnel)
 {
     Options opts = {.max_depth = max_depth, .ray_offset = SECONDARY_OFFSET, .min_weight = 0};
-    return refract_make(scene, surfaces_brute_force(scene), fresnel, &opts);
+    refract_init(rf, scene, surfaces_brute_force(scene), fresnel, &opts);
 }
 
-/* Where the rays that reach material RECORDED at depth RECORDED_DEPTH arrive: a direct-light
- * hook that notes the hit, then lights it as usual. */
+/* Returns the radiance along the camera ray r, as the Refractor's tracer finds it. */
+static Color radiance_of(const Refractor *rf, Ray r, Path *path)
+{
+    path->weight = 1;
+    return tracer_trace(&rf->tracer, r, RAY_PRIMARY, 0, path);
+}
+
+/* Where the rays that reach material RECORDED at depth RECORDED_DEPTH arrive: a radiance
+ * hook that notes the ray's first hit, then traces it as usual. */
 static int recorded_material, recorded_depth, recorded_count;
 static Vec3 recorded_point, recorded_dir;
 
 /* The recording hook: notes every hit on recorded_material at recorded_depth. */
-static Color record_direct(const Tracer *tr, const Hit *hit, Ray r, int depth, Path *path)
+static Color record_radiance(const void *ctx, const Tracer *tr, Ray r, int depth, Path *path)
 {
-    if (hit->material == recorded_material && depth == recorded_depth) {
-        recorded_point = hit->point;
+    Hit hit;
+    if (depth == recorded_depth && world_hit(tr->scene, r, 0, INFINITY, &hit) &&
+        hit.material == recorded_material) {
+        recorded_point = hit.point;
         recorded_dir = r.dir;
         recorded_count++;
     }
-    return transmit_direct_radiance(tr, hit, r, depth, path);
+    return refract_radiance(ctx, tr, r, depth, path);
 }
 
 /* Glass of index 1.5 absorbing (0.5, 0.25, 0.8) a unit; a white matte wall. */
@@ -45,20 +56,25 @@ START_TEST(through_the_centre_of_a_sphere)
      * crosses 2r = 4 units of glass. */
     Sphere ball = {.center = {0, 0, 0}, .radius = 2, .material = 0};
     Plane wall = {.normal = {0, 0, 1}, .d = 10, .material = 1};
-    Scene scene = {.materials = materials, .material_count = 2, .spheres = &ball,
-                   .sphere_count = 1, .planes = &wall, .plane_count = 1,
+    Scene scene = {.materials = materials,
+                   .material_count = 2,
+                   .spheres = &ball,
+                   .sphere_count = 1,
+                   .planes = &wall,
+                   .plane_count = 1,
                    .ambient = {0.3, 0.3, 0.3}};
     Ray r = ray(vec3(0, 0, 10), vec3(0, 0, -1));
     double t = 1 - 0.04; /* 1 - R0 at n = 1.5, by either model */
     Color a4 = color(pow(0.5, 4), pow(0.25, 4), pow(0.8, 4));
     for (int model = 0; model < 2; model++) {
         /* Depth 2: in, out, and the wall; the ray reflected inside dies at the budget. */
-        Refractor rf = refractor(&scene, 2, (FresnelModel)model);
-        rf.tracer.direct = record_direct;
+        Refractor rf;
+        refractor(&rf, &scene, 2, (FresnelModel)model);
+        rf.tracer.hooks.radiance = record_radiance;
         recorded_material = 1, recorded_depth = 2, recorded_count = 0;
         RayStats stats = {{0}};
         Path path = {.stats = &stats};
-        Color c = refract_radiance(&rf, r, 0, &path);
+        Color c = radiance_of(&rf, r, &path);
         /* Exactly, but for the secondary rays' offsets: each ray starts 2^-32 times the
          * coordinates (10) off the surface, so s is short by about 2e-9. */
         ck_assert_color_near(c, color_scale(a4, t * t * 0.3), 1e-10);
@@ -70,8 +86,8 @@ START_TEST(through_the_centre_of_a_sphere)
         ck_assert_int_eq(stats.rays[RAY_REFLECTED], 2);
         /* With room for every bounce, light goes back and forth inside: a geometric
          * series, (1 - R)^2 a^4 W / (1 - R^2 a^8). */
-        rf = refractor(&scene, 200, (FresnelModel)model);
-        c = refract_radiance(&rf, r, 0, &path);
+        refractor(&rf, &scene, 200, (FresnelModel)model);
+        c = radiance_of(&rf, r, &path);
         Color a8 = color_mul(a4, a4);
         Color expected = color(a4.r / (1 - 0.0016 * a8.r), a4.g / (1 - 0.0016 * a8.g),
                                a4.b / (1 - 0.0016 * a8.b));
@@ -92,13 +108,14 @@ static double slab_shift(double n, double h, double theta, FresnelModel model)
                       {.normal = {0, -1, 0}, .d = -h, .material = 0},
                       {.normal = {0, 1, 0}, .d = h + 5, .material = 1}};
     Scene scene = {.materials = m, .material_count = 2, .planes = planes, .plane_count = 3};
-    Refractor rf = refractor(&scene, 10, model);
-    rf.tracer.direct = record_direct;
+    Refractor rf;
+    refractor(&rf, &scene, 10, model);
+    rf.tracer.hooks.radiance = record_radiance;
     recorded_material = 1, recorded_depth = 2, recorded_count = 0;
     Vec3 o = vec3(0, 10, 0), d = vec3(sin(theta), -cos(theta), 0);
     RayStats stats = {{0}};
     Path path = {.stats = &stats};
-    refract_radiance(&rf, ray(o, d), 0, &path);
+    radiance_of(&rf, ray(o, d), &path);
     ck_assert_int_eq(recorded_count, 1);
     /* Both faces bend the ray by the same angle, the other way: it leaves parallel. */
     ck_assert_vec3_near(recorded_dir, d, 1e-14);
@@ -132,16 +149,16 @@ START_TEST(total_internal_reflection_in_the_tracer)
      * at an angle from the normal just below or just above the critical angle. */
     Material glass = {.ior = 1.5, .attenuation = {1, 1, 1}};
     Plane surface = {.normal = {0, 1, 0}, .d = 0, .material = 0};
-    Scene scene = {.materials = &glass, .material_count = 1, .planes = &surface,
-                   .plane_count = 1};
-    Refractor rf = refractor(&scene, 1, FRESNEL_SCHLICK);
+    Scene scene = {.materials = &glass, .material_count = 1, .planes = &surface, .plane_count = 1};
+    Refractor rf;
+    refractor(&rf, &scene, 1, FRESNEL_SCHLICK);
     double critical = asin(1 / 1.5);
     double angles[] = {critical - 1e-6, critical + 1e-6};
     for (int k = 0; k < 2; k++) {
         RayStats stats = {{0}};
         Path path = {.stats = &stats};
         Ray r = ray(vec3(0, -1, 0), vec3(sin(angles[k]), cos(angles[k]), 0));
-        Color c = refract_radiance(&rf, r, 0, &path);
+        Color c = radiance_of(&rf, r, &path);
         ck_assert(color_is_finite(c));
         ck_assert_int_eq(stats.rays[RAY_REFLECTED], 1);
         ck_assert_int_eq(stats.rays[RAY_REFRACTED], k == 0 ? 1 : 0);
@@ -159,12 +176,16 @@ static Color furnace(Ray r, Color attenuation, double ior, FresnelModel model, i
     Sphere spheres[] = {{.center = {0, 0, 0}, .radius = 100, .material = 0},
                         {.center = {0, 0, 0}, .radius = 10, .material = 1},
                         {.center = {25, 5, -3}, .radius = 7, .material = 1}};
-    Scene scene = {.materials = m, .material_count = 2, .spheres = spheres, .sphere_count = 3,
+    Scene scene = {.materials = m,
+                   .material_count = 2,
+                   .spheres = spheres,
+                   .sphere_count = 3,
                    .ambient = {0.5, 0.5, 0.5}};
-    Refractor rf = refractor(&scene, max_depth, model);
+    Refractor rf;
+    refractor(&rf, &scene, max_depth, model);
     rf.min_weight = min_weight;
     Path path = {.stats = stats};
-    return refract_radiance(&rf, r, 0, &path);
+    return radiance_of(&rf, r, &path);
 }
 
 START_TEST(clear_glass_in_a_furnace_is_invisible)
@@ -177,7 +198,8 @@ START_TEST(clear_glass_in_a_furnace_is_invisible)
             for (double x = -34; x < 34; x += 0.77) {
                 RayStats stats = {{0}};
                 Ray r = ray(vec3(x * 0.3, -2, 50), vec3_normalize(vec3(x, 0.1 * x, -50)));
-                Color c = furnace(r, color(1, 1, 1), indices[k], (FresnelModel)model, 60, 0, &stats);
+                Color c =
+                    furnace(r, color(1, 1, 1), indices[k], (FresnelModel)model, 60, 0, &stats);
                 ck_assert_color_near(c, color(0.5, 0.5, 0.5), 1e-9);
             }
     /* Absorbing glass sends back less, and more the longer the way through it. */
@@ -240,15 +262,22 @@ static Color light_through(Material ball, FresnelModel model, RayStats *stats)
     Sphere s = {.center = {0, 2, 0}, .radius = 1, .material = 1};
     Plane floor = {.normal = {0, 1, 0}, .d = 0, .material = 0};
     Light lamp = {.kind = LIGHT_POINT, .position = {0, 10, 0}, .color = {1, 1, 1}};
-    Scene scene = {.materials = m, .material_count = 2, .spheres = &s, .sphere_count = 1,
-                   .planes = &floor, .plane_count = 1, .lights = &lamp, .light_count = 1};
-    Refractor rf = refractor(&scene, 20, model);
-    Hit hit = {.t = 1, .point = {0, 0, 0}, .normal = {0, 1, 0}, .material = 0,
-               .kind = SURFACE_PLANE};
+    Scene scene = {.materials = m,
+                   .material_count = 2,
+                   .spheres = &s,
+                   .sphere_count = 1,
+                   .planes = &floor,
+                   .plane_count = 1,
+                   .lights = &lamp,
+                   .light_count = 1};
+    Refractor rf;
+    refractor(&rf, &scene, 20, model);
+    Hit hit = {
+        .t = 1, .point = {0, 0, 0}, .normal = {0, 1, 0}, .material = 0, .kind = SURFACE_PLANE};
     Incident in = light_incident(&lamp, hit.point, false);
     Path path = {.stats = stats};
-    return transmit_light(&rf, &hit, ray(vec3(0, 1, 1), vec3_normalize(vec3(0, -1, -1))), &in,
-                          &path);
+    return transmit_light(&rf, &rf.tracer, &hit,
+                          ray(vec3(0, 1, 1), vec3_normalize(vec3(0, -1, -1))), &in, 0, &path);
 }
 
 START_TEST(shadows_of_glass_are_dimmed_not_dark)

@@ -1,5 +1,6 @@
 /* test_area.c: points on a square light, and the light it sends, against numerical quadrature. */
 #include "area.h"
+#include "direct.h"
 #include "montecarlo.h"
 #include "secondary.h"
 #include "surfaces.h"
@@ -85,7 +86,7 @@ static double estimate(Setup *s, Sampling sampling, int side, uint64_t trial)
     Path path = {.stats = &stats, .sample = &sample};
     Hit hit = {.t = 10, .point = {0, 0, 1}, .normal = {0, 1, 0}, .kind = SURFACE_TRIANGLE};
     Ray down = {{0, 10, 1}, {0, -1, 0}};
-    Color c = montecarlo_direct_radiance(below_tracer(&s->mc.below), &hit, down, 0, &path);
+    Color c = direct_radiance(&s->mc.below.tracer, &hit, down, 0, &path);
     ck_assert_uint_eq(stats.rays[RAY_SHADOW], (unsigned long long)(side * side));
     return c.r;
 }
@@ -135,7 +136,6 @@ static void check_mean(bool occluded, Sampling sampling, int side, int m)
                   "occluded %d sampling %d S %d: mean %.9g, exact %.9g, standard error %.3g",
                   occluded, sampling, side, mean, want, se);
     ck_assert(se < 0.02 * want); /* the test can tell a wrong value */
-    montecarlo_free(&s.mc);
 }
 
 START_TEST(estimates_average_to_the_exact_irradiance)
@@ -167,7 +167,6 @@ static double error_slope(bool occluded, Sampling sampling)
         double x = log((double)side * side), y = log(sqrt(sum2 / 300));
         sx += x, sy += y, sxx += x * x, sxy += x * y;
     }
-    montecarlo_free(&s.mc);
     return (points * sxy - sx * sy) / (points * sxx - sx * sx); /* least squares */
 }
 /* end excerpt: error-slope */
