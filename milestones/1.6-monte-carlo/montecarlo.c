@@ -41,30 +41,49 @@ void montecarlo_probe(const MonteCarlo *mc, int i, int j, Probe *probe)
 }
 
 /* starter: todo */
+/* excerpt: light-point */
+/* Returns in (*ru, *rv) the point in [0,1)^2 of light sample q of the S x S a hit sends
+ * to an area light, drawn from the path's random numbers: one in each of S x S
+ * sub-squares (stratified), or, with one shadow ray per hit in correlated sampling,
+ * in the light stratum pi(k) of the pixel's sub-pixel k, so that the pixel's P^2 rays
+ * cover the light. */
+void montecarlo_light_point(const MonteCarlo *mc, const Sample *sample, int q, double *ru,
+                            double *rv)
+{
+    if (mc->light_side == 1 && sample->strata_side > 1)
+        strata_point(SAMPLING_JITTERED, sample->rng, sample->stratum, sample->strata_side, ru, rv);
+    else
+        strata_point(mc->sampling, sample->rng, q, mc->light_side, ru, rv);
+}
+/* end excerpt: light-point */
+
 /* excerpt: area-radiance */
 /* Returns the light that hit's surface reflects along r from the square light: S x S
- * shadow rays to points spread over it, each a point light of 1/S^2 of its colour,
- * lit as part 1.3 lights a point light (direct_incident). */
+ * shadow rays to points spread over it (montecarlo_light_point, area_point), each a
+ * point light of 1/S^2 of its colour (area_incident), lit as part 1.3 lights a point
+ * light (direct_incident). */
 Color montecarlo_area_radiance(const MonteCarlo *mc, const Light *light, const Hit *hit, Ray r,
-                                int depth, Path *path)
+                               int depth, Path *path)
 {
-    const Sample *sample = path->sample;
     const Tracer *tr = &mc->below.tracer;
-    int side = mc->light_side, count = side * side;
-    /* Correlated strata: with one shadow ray per hit, the shadow ray of the pixel's
-     * sub-pixel k goes to light stratum pi(k), so the pixel's P^2 rays cover the light. */
-    bool follows_pixel = count == 1 && sample->strata_side > 1;
+    int count = mc->light_side * mc->light_side;
     Color sum = color(0, 0, 0);
     for (int q = 0; q < count; q++) {
         double ru, rv;
-        if (follows_pixel)
-            strata_point(SAMPLING_JITTERED, sample->rng, sample->stratum, sample->strata_side,
-                         &ru, &rv);
-        else
-            strata_point(mc->sampling, sample->rng, q, side, &ru, &rv);
-        Incident in = area_incident(light, area_point(light, ru, rv), hit->point, count,
-                                    scene_light_falls_off(tr->scene));
-        sum = color_add(sum, direct_incident(tr, hit, r, &in, depth, path));
+        montecarlo_light_point(mc, path->sample, q, &ru, &rv);
+        Vec3 at = area_point(light, ru, rv);
+        if (tr->explain != NULL) {
+            char p[96];
+            explain_line(tr->explain, depth + 2, "area light sample %d of 0 to %d at %s", q,
+                         count - 1, explain_vec3(at, p, sizeof p));
+        }
+        Incident in = area_incident(light, at, hit->point, count, scene_light_falls_off(tr->scene));
+        /* depth + 1: told one level deeper, under its sample. */
+        Color c = direct_incident(tr, hit, r, &in, depth + 1, path);
+        explain_line(tr->explain, depth + 3,
+                     "area light sample %d of 0 to %d adds (%.6g, %.6g, %.6g)", q, count - 1, c.r,
+                     c.g, c.b);
+        sum = color_add(sum, c);
     }
     return sum;
 }
@@ -73,8 +92,8 @@ Color montecarlo_area_radiance(const MonteCarlo *mc, const Light *light, const H
 /* excerpt: montecarlo-light */
 /* Part 1.6's light hook: an area light sampled by S x S shadow rays; a point or
  * directional light as part 1.3 lights it. ctx is the MonteCarlo. */
-Color montecarlo_light(const void *ctx, const Tracer *tr, const Hit *hit, Ray r,
-                       const Light *light, int depth, Path *path)
+Color montecarlo_light(const void *ctx, const Tracer *tr, const Hit *hit, Ray r, const Light *light,
+                       int depth, Path *path)
 {
     if (light->kind == LIGHT_AREA)
         return montecarlo_area_radiance(ctx, light, hit, r, depth, path);
@@ -114,8 +133,7 @@ static void explain_sample(const Explain *e, const MonteCarlo *mc, int k, double
                      "bottom, at image point (%.6f, %.6f)",
                      k, count - 1, k % side, k / side, x, y);
     else
-        explain_line(e, 0, "sample %d of 0 to %d: at image point (%.6f, %.6f)", k, count - 1, x,
-                     y);
+        explain_line(e, 0, "sample %d of 0 to %d: at image point (%.6f, %.6f)", k, count - 1, x, y);
 }
 
 /* excerpt: montecarlo-pixel */
@@ -142,9 +160,8 @@ static Color sum_samples(const MonteCarlo *mc, int i, int j, int first, int last
         double x, y;
         montecarlo_point(mc, &rng, i, j, k, &x, &y);
         explain_sample(tr->explain, mc, k, x, y);
-        Sample sample = {.rng = &rng,
-                         .stratum = correlated ? perm[k] : 0,
-                         .strata_side = correlated ? side : 0};
+        Sample sample = {
+            .rng = &rng, .stratum = correlated ? perm[k] : 0, .strata_side = correlated ? side : 0};
         Path path = {.stats = stats, .weight = 1, .sample = &sample};
         Ray r = camera_ray(&mc->camera, x, y);
         sum = color_add(sum, tracer_trace(tr, r, RAY_PRIMARY, 0, &path));

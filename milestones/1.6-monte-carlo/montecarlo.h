@@ -39,6 +39,8 @@ typedef struct {
 /* end excerpt: montecarlo-struct */
 
 bool montecarlo_init(MonteCarlo *mc, const Scene *scene, Surfaces surfaces, const Options *opts);
+void montecarlo_light_point(const MonteCarlo *mc, const Sample *sample, int q, double *ru,
+                            double *rv);
 Color montecarlo_area_radiance(const MonteCarlo *mc, const Light *light, const Hit *hit, Ray r,
                                int depth, Path *path);
 Color montecarlo_light(const void *ctx, const Tracer *tr, const Hit *hit, Ray r, const Light *light,

@@ -71,7 +71,7 @@ static const Program program = {
     .cli = {.part = "1.6-monte-carlo",
             .purpose = "Monte Carlo ray tracing: P x P jittered rays per pixel, S x S shadow "
                        "rays per area light"},
-    .features = TRACER_FEATURES | FEATURE_REFRACTION,
+    .features = TRACER_FEATURES | FEATURE_AREA_LIGHTS | FEATURE_REFRACTION,
     .setup = setup,
     .pixel = sample_pixel,
     .sample = one_sample,

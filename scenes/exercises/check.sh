@@ -151,10 +151,10 @@ done <<'ANSWERS'
 1.6-monte-carlo | scenes/exercises/1.6-edges.scn           | --samples 2 --trace-pixel 1,0@2 | sample 2: colour (1, 1, 1)
 1.6-monte-carlo | scenes/exercises/1.6-edges.scn           | --samples 2 --trace-pixel 1,0@3 | sample 3: colour (0, 0, 0)
 # 1.6.3: with S = 2 each shadow ray of a sample goes to its own quarter of the light
-1.6-monte-carlo | scenes/exercises/1.6-half-blocked.scn    | --light-samples 2 --trace-pixel 0,0@0 | area light sample 0 of 0 to 3: in shadow
-1.6-monte-carlo | scenes/exercises/1.6-half-blocked.scn    | --light-samples 2 --trace-pixel 0,0@0 | area light sample 2 of 0 to 3: in shadow
+1.6-monte-carlo | scenes/exercises/1.6-half-blocked.scn    | --light-samples 2 --trace-pixel 0,0@0 | area light sample 0 of 0 to 3 adds (0, 0, 0)
+1.6-monte-carlo | scenes/exercises/1.6-half-blocked.scn    | --light-samples 2 --trace-pixel 0,0@0 | area light sample 2 of 0 to 3 adds (0, 0, 0)
 # 1.6.4: the hidden quarter is the light's stratum 2
-1.6-monte-carlo | scenes/exercises/1.6-quarter-blocked.scn | --light-samples 2 --trace-pixel 0,0@0 | area light sample 2 of 0 to 3: in shadow
+1.6-monte-carlo | scenes/exercises/1.6-quarter-blocked.scn | --light-samples 2 --trace-pixel 0,0@0 | area light sample 2 of 0 to 3 adds (0, 0, 0)
 ANSWERS
 
 if [ "$bad" -gt 0 ]; then
