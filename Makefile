@@ -4,7 +4,7 @@
 #   make test        run every test (unit tests, reference images, docs, layout)
 #   make demo        render scenes/demo.scn with every part into out/
 #   make references  re-render every part's reference images, showing what changed
-#   make docs        refresh the code excerpts in docs/ from the source
+#   make docs        refresh the code excerpts and generated tables in docs/ from the source
 #   make starter PART=1.2 [DEST=dir]   write the starter of a part, the folder a course
 #                    hands out, into out/starter-<part>/ (docs/starters.md)
 #   make check-starters  build every part's starter, stubbed and solved
@@ -105,6 +105,8 @@ check-course:
 check-docs:
 	@$(SUBMAKE) -C tools docsnip
 	@$(DOCSNIP) --root . --check $(CHAPTERS) && echo "check-docs: every excerpt matches the source"
+	@tools/doctables.sh --check
+	@tools/marked.sh check-explain && echo "check-docs: no function a student writes prints to --trace-pixel"
 
 # Every SVG of docs/figures is well-formed with a viewBox; every figure linked to exists.
 check-figures:
@@ -139,6 +141,7 @@ check-slides:
 docs:
 	@$(SUBMAKE) -C tools docsnip
 	@$(DOCSNIP) --root . --update $(CHAPTERS)
+	@tools/doctables.sh --update
 
 demo: all
 	@mkdir -p out

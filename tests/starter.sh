@@ -9,7 +9,8 @@
 #   - the starter has a TODO stub for each marker of the parts it stubs;
 #   - its `make check WERROR=1` builds without a warning, yet fails: not one unit
 #     test program and not one reference image passes with the stubs;
-#   - with the solution's sources copied in, `make check WERROR=1` passes;
+#   - with the solution's sources copied in, `make check WERROR=1` passes, and
+#     --trace-pixel prints what the repository's part prints, line for line;
 #   - nothing it built refers to the repository: the starter stands alone.
 set -u
 top=$(cd "$(dirname "$0")/.." && pwd) || exit 2
@@ -24,6 +25,24 @@ failed=0
 fail() {
     echo "FAIL $part: $*"
     failed=$((failed + 1))
+}
+
+# The solved starter's program traces pixels exactly as the repository's part does: the
+# trace is told by the seams, not by the functions the student writes back.
+same_trace() {
+    MAKEFLAGS= SANITIZE= make --no-print-directory -s -C "$top/milestones/$1" all >/dev/null 2>&1 ||
+        { fail "the repository's part $1 does not build"; return; }
+    for trace in "scenes/trace-pixel.scn --trace-pixel 1,1" \
+        "scenes/glass-sphere.scn --scale 0.1 --trace-pixel 20,15" \
+        "scenes/soft-shadow.scn --scale 0.1 --samples 2 --light-samples 2 --trace-pixel 10,10@3"; do
+        # shellcheck disable=SC2086 # the arguments are words by design
+        (cd "$top" && "$2" -q $trace >"$tmp/trace.starter" 2>&1 &&
+            "milestones/$1/raytra" -q $trace >"$tmp/trace.part" 2>&1) ||
+            { fail "--trace-pixel failed: $trace"; continue; }
+        cmp -s "$tmp/trace.starter" "$tmp/trace.part" ||
+            fail "the solved starter traces $trace otherwise than the part"
+    done
+    echo "ok   solved: traces the pixels of three scenes as the part does"
 }
 
 for part in "$@"; do
@@ -80,6 +99,7 @@ for part in "$@"; do
     for file in "$solved"/milestones/*/*.c; do cp "$file" "$stub/${file#"$solved"/}"; done
     if make --no-print-directory -C "$stub" check WERROR=1 >"$tmp/solved.log" 2>&1; then
         echo "ok   solved: $(grep '^unit tests:' "$tmp/solved.log"); $(grep '^images:' "$tmp/solved.log")"
+        same_trace "$part" "$stub/raytra"
     else
         fail "make check fails with the bodies put back:"
         grep -e '^FAIL' -e 'error' -e 'warning' "$tmp/solved.log" | grep -v '^cc ' | head -n 20 | sed 's/^/    /'

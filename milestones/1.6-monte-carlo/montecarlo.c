@@ -69,7 +69,7 @@ Color montecarlo_area_radiance(const MonteCarlo *mc, const Light *light, const H
     int count = mc->light_side * mc->light_side;
     Color sum = color(0, 0, 0);
     for (int q = 0; q < count; q++) {
-        double ru, rv;
+        double ru = 0, rv = 0;
         montecarlo_light_point(mc, path->sample, q, &ru, &rv);
         Vec3 at = area_point(light, ru, rv);
         if (tr->explain != NULL) {
@@ -157,7 +157,7 @@ static Color sum_samples(const MonteCarlo *mc, int i, int j, int first, int last
     Color sum = color(0, 0, 0);
     for (int k = first; k < last; k++) {
         Rng rng = rng_make(key, (uint64_t)k + 1);
-        double x, y;
+        double x = 0, y = 0;
         montecarlo_point(mc, &rng, i, j, k, &x, &y);
         explain_sample(tr->explain, mc, k, x, y);
         Sample sample = {
