@@ -35,7 +35,7 @@ typedef struct Tracer Tracer;
      FEATURE_DIRECTIONAL_LIGHTS | FEATURE_AMBIENT_LIGHT | FEATURE_MIRRORS | FEATURE_SHADING)
 
 /* excerpt: tracer-hooks */
-/* The three seams a later part plugs into, each a function and the context it is handed
+/* The three hooks a later part plugs into, each a function and the context it is handed
  * (its part's own state; NULL for part 1.3's). Where a hook is NULL, part 1.3's is used. */
 
 /* The radiance arriving along ray r, depth bounces after the camera ray: part 1.3's
