@@ -120,7 +120,7 @@ mistake mirror-wrong-way "Mirror rays sent the wrong way" "$variants/raytra-mirr
     scenes/demo.scn "--scale 0.5" 179,95 <<'EOF'
 **What goes wrong.** The reflected direction is turned round, 2(d·n)n − d
 instead of d − 2(d·n)n, so the mirror ray goes into the surface: the mirror ball
-shows its own inside, dark, instead of the room. In the trace, the mirror ray
+shows its own inside, dark, instead of the room. In the trace, the reflected ray
 meets the same sphere again at once, from its back.
 
 **The fix.** r = d − 2(d·n)n with n the normal facing the ray
