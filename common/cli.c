@@ -44,8 +44,8 @@ const CliOption cli_options[] = {
      .field = FIELD(trace_pixel)},
     {.name = "view", .kind = OPTION_TEXT, .metavar = "NAME",
      .help = "draw what each camera ray meets instead of its light: normal, depth, id "
-             "(a colour per surface), material (kd), light-count (lights that reach the "
-             "point), box-tests (parts 1.4 to 1.6: a heat map of the boxes and primitives "
+             "(a colour per surface), material (kd), light-count (parts 1.2 to 1.6: the "
+             "lights that reach the point), box-tests (parts 1.4 to 1.6: a heat map of the boxes and primitives "
              "each camera ray is tested against)",
      .field = FIELD(view)},
     {.name = "two-sided",
