@@ -2,7 +2,7 @@
 #
 #   make             build everything
 #   make test        run every test (unit tests, reference images, docs, layout)
-#   make demo        render scenes/demo.scn with every part into out/
+#   make demo        render scenes/demo-tour.scn with every part, as each shows it best, into out/
 #   make references  re-render every part's reference images, showing what changed
 #   make docs        refresh the code excerpts and generated tables in docs/ from the source
 #   make starter PART=1.2 [DEST=dir]   write the starter of a part, the folder a course
@@ -30,7 +30,7 @@ FIRST    := $(call program,$(firstword $(PARTS)))
 COURSE_SCALE ?= 0.05
 FUZZ_SECONDS ?= 1800
 
-.PHONY: all test demo references docs check-docs check-slides check-figures check-layout check-course clean \
+.PHONY: all test demo check-demo check-chromium references docs check-docs check-slides check-figures check-layout check-course clean \
         check-robust check-fuzz-regressions check-bad-input check-interrupt check-nonfinite \
         check-course-render valgrind fuzz fuzz-run bench mistakes starter check-starter check-starters \
         check-exercises
@@ -49,7 +49,8 @@ test:
 	@$(SUBMAKE) -C tools test
 	@for part in $(PARTS); do $(SUBMAKE) -C milestones/$$part test || exit 1; done
 	@$(SUBMAKE) -C tools/mistakes
-	@$(SUBMAKE) check-docs check-slides check-figures check-exercises check-layout check-course
+	@$(SUBMAKE) check-docs check-slides check-figures check-exercises check-layout check-course \
+	            check-demo check-chromium
 	@$(SUBMAKE) check-starter
 	@$(SUBMAKE) check-robust
 	@echo "make test: every test passed"
@@ -98,6 +99,14 @@ bench:
 fuzz-run: fuzz
 	@tests/fuzz/run.sh scene $(FUZZ_SECONDS) && tests/fuzz/run.sh obj $(FUZZ_SECONDS)
 
+# The README's pictures of the parts are the images make demo writes, byte for byte.
+check-demo:
+	@tests/readme-images.sh "$(MAKE)"
+
+# tools/deps.sh finds Chromium, which tests/grade-report.sh runs, by each of its names.
+check-chromium:
+	@tests/chromium-lookup.sh
+
 # Every scene of the course's corpus (../shared/course-scenes) loads with the latest part.
 check-course:
 	@tests/course-scenes.sh check $(LATEST)
@@ -143,13 +152,24 @@ docs:
 	@$(DOCSNIP) --root . --update $(CHAPTERS)
 	@tools/doctables.sh --update
 
+# Each part renders the demo scene as the line of its references/renders.txt that names
+# the scene says (part 1.4 draws its BVH's leaf boxes, part 1.6 takes P = 2 and S = 2), so
+# that each shows what it adds; the README shows those references, and check-demo checks
+# that they are the very files make demo writes.
+DEMO_SCENE := scenes/demo-tour.scn
+DEMO_DIR   ?= out
 demo: all
-	@mkdir -p out
+	@mkdir -p $(DEMO_DIR)
 	@for part in $(PARTS); do \
-	    milestones/$$part/raytra scenes/demo.scn out/demo-$$part.png || exit 1; \
+	    options=$$(awk -v scene=$(DEMO_SCENE) '$$2 == scene { $$1 = $$2 = ""; sub(/^ */, ""); \
+	               print; found = 1; exit } END { exit !found }' milestones/$$part/references/renders.txt) || \
+	        { echo "make demo: no line for $(DEMO_SCENE) in milestones/$$part/references/renders.txt" >&2; \
+	          exit 1; }; \
+	    echo "== $(call program,$$part) $(DEMO_SCENE) $(DEMO_DIR)/demo-$$part.png $$options"; \
+	    $(call program,$$part) $(DEMO_SCENE) $(DEMO_DIR)/demo-$$part.png $$options || exit 1; \
 	done
-	@echo; echo "make demo: the demo scene as each part draws it:"; \
-	for part in $(PARTS); do echo "    out/demo-$$part.png"; done
+	@echo; echo "make demo: $(DEMO_SCENE) as each part draws it:"; \
+	for part in $(PARTS); do echo "    $(DEMO_DIR)/demo-$$part.png"; done
 
 # The gallery of common mistakes: part 1.3 with one function broken at a time.
 mistakes: all

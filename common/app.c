@@ -232,11 +232,13 @@ static bool view_usable(const Program *program, const Options *opts)
         fprintf(stderr, "raytra: unknown view '%s' (%s)\n", opts->view, debugview_names());
         return false;
     }
+    /* A view of what the part does not have (lights, boxes) would be black under a legend
+     * that promises counts. */
+    const char *why = "";
     if (program->probe == NULL ||
-        (kind == VIEW_BOX_TESTS && cli_part_number(program->cli.part) < 14)) {
+        !debugview_drawn_by(kind, cli_part_number(program->cli.part), &why)) {
         fprintf(stderr, "raytra: part %s cannot draw the view '%s'%s\n", program->cli.part,
-                opts->view,
-                kind == VIEW_BOX_TESTS ? " (parts 1.4 to 1.6, which have boxes, draw it)" : "");
+                opts->view, why);
         return false;
     }
     return true;

@@ -44,8 +44,8 @@ const CliOption cli_options[] = {
      .field = FIELD(trace_pixel)},
     {.name = "view", .kind = OPTION_TEXT, .metavar = "NAME",
      .help = "draw what each camera ray meets instead of its light: normal, depth, id "
-             "(a colour per surface), material (kd), light-count (lights that reach the "
-             "point), box-tests (parts 1.4 to 1.6: a heat map of the boxes and primitives "
+             "(a colour per surface), material (kd), light-count (parts 1.2 to 1.6: the "
+             "lights that reach the point), box-tests (parts 1.4 to 1.6: a heat map of the boxes and primitives "
              "each camera ray is tested against)",
      .field = FIELD(view)},
     {.name = "two-sided",
@@ -184,26 +184,68 @@ static int part_options(int part, const CliOption **accepted)
     return n;
 }
 
-/* Handles the k-th positional argument: SCENE, OUTPUT, then the part's own in order. */
-static bool set_positional(int part, int k, const char *arg, Options *opts)
+/* What cli_parse has read so far: the options the part accepts, and which of them were
+ * given a value, where (the word's index in argv; 0: not given) and as what text. */
+typedef struct {
+    int part;
+    int count;
+    const CliOption *accepted[MAX_OPTIONS];
+    int given_at[MAX_OPTIONS];
+    const char *given[MAX_OPTIONS];
+} Seen;
+
+/* Tells whether text is a negative number ("-1", "-.5"): a value, never an option. */
+static bool negative_number(const char *text)
+{
+    return text[0] == '-' && text[1] != '\0' && strchr("0123456789.", text[1]) != NULL &&
+           decimal_text(text + 1);
+}
+
+/* Stores text, the word argv[at], as the value of option o (called shown in messages).
+ * A second value for an option is refused, even an equal one, as OUTPUT twice always
+ * was: which one was meant cannot be told. A flag may be repeated. False (reported) on
+ * a second value or a value that is not valid. */
+static bool take_value(Seen *seen, const CliOption *o, const char *shown, int at, const char *text,
+                       Options *opts)
+{
+    int k = 0;
+    while (k < seen->count && seen->accepted[k] != o)
+        k++;
+    if (k < seen->count && o->kind != OPTION_FLAG) {
+        if (seen->given_at[k] != 0) {
+            bool earlier = seen->given_at[k] < at;
+            const char *first = earlier ? seen->given[k] : text;
+            const char *second = earlier ? text : seen->given[k];
+            char what[64];
+            if (strcmp(o->name, "output") == 0)
+                snprintf(what, sizeof what, "the output");
+            else if (o->argument != NULL)
+                snprintf(what, sizeof what, "%s (--%s)", o->argument, o->name);
+            else
+                snprintf(what, sizeof what, "--%s", o->name);
+            fprintf(stderr, "raytra: %s is given twice ('%s' and '%s'); give it once\n", what,
+                    first, second);
+            return false;
+        }
+        seen->given_at[k] = at;
+        seen->given[k] = text;
+    }
+    return set_value(o, shown, text, opts);
+}
+
+/* Handles the k-th positional argument, the word argv[at]: SCENE, OUTPUT (the option
+ * --output), then the part's own in order (each the same as its option). */
+static bool set_positional(Seen *seen, int k, int at, const char *arg, Options *opts)
 {
     if (k == 0) {
         opts->scene = arg;
         return true;
     }
-    if (k == 1) {
-        if (opts->output != NULL) {
-            fprintf(stderr, "raytra: the output is given twice ('%s' and '%s')\n", opts->output,
-                    arg);
-            return false;
-        }
-        opts->output = arg;
-        return true;
-    }
-    int seen = 2;
+    int seen_args = 1;
     for (const CliOption *o = cli_options; o->name != NULL; o++)
-        if (o->argument != NULL && cli_option_accepted(o, part) && seen++ == k)
-            return set_value(o, o->argument, arg, opts);
+        if ((o->argument != NULL || strcmp(o->name, "output") == 0) &&
+            cli_option_accepted(o, seen->part) && seen_args++ == k)
+            return take_value(seen, o, o->argument != NULL ? o->argument : "OUTPUT", at, arg, opts);
     fprintf(stderr, "raytra: unexpected argument '%s' (raytra --help shows the usage)\n", arg);
     return false;
 }
@@ -221,17 +263,20 @@ static void report_refused(int argc, char **argv, int optopt_seen, const struct 
 }
 
 /* Reads argv into opts: the options this part accepts, anywhere, then the positional
- * arguments in order. */
+ * arguments in order. The words are read in order ("-" in getopt's optstring), so that
+ * positional arguments keep their places, and a negative number is taken as a positional
+ * argument, to be refused as a value like 0, not as an unknown option. */
 CliResult cli_parse(const CliSpec *spec, int argc, char **argv, Options *opts)
 {
     set_fallbacks(opts);
-    int part = cli_part_number(spec->part);
-    const CliOption *accepted[MAX_OPTIONS];
-    int n = part_options(part, accepted);
+    Seen seen = {.part = cli_part_number(spec->part)};
+    seen.count = part_options(seen.part, seen.accepted);
+    int n = seen.count;
+    const CliOption *const *accepted = seen.accepted;
 
     /* getopt_long's tables: option k returns 256 + k. */
     struct option longs[MAX_OPTIONS + 1];
-    char shorts[2 * MAX_OPTIONS + 2] = ":";
+    char shorts[2 * MAX_OPTIONS + 3] = "-:";
     for (int k = 0; k < n; k++) {
         bool valued = accepted[k]->kind != OPTION_FLAG;
         longs[k] = (struct option){accepted[k]->name, valued ? required_argument : no_argument,
@@ -245,10 +290,27 @@ CliResult cli_parse(const CliSpec *spec, int argc, char **argv, Options *opts)
     }
     longs[n] = (struct option){0};
 
+    /* The positional arguments, by their index in argv, read once the options are. */
+    int *positional = malloc(((size_t)argc + 1) * sizeof *positional);
+    if (positional == NULL) {
+        fprintf(stderr, "raytra: out of memory\n");
+        return CLI_BAD_USAGE;
+    }
+    int positional_count = 0;
+    CliResult result = CLI_BAD_USAGE;
     opterr = 0;
     optind = 0; /* glibc: start afresh, also on a second call */
     int c, index = -1;
-    while ((c = getopt_long(argc, argv, shorts, longs, &index)) != -1) {
+    for (;;) {
+        /* optind is 0 only before the first word, which getopt reads itself. */
+        while (optind > 0 && optind < argc && negative_number(argv[optind]))
+            positional[positional_count++] = optind++;
+        if ((c = getopt_long(argc, argv, shorts, longs, &index)) == -1)
+            break;
+        if (c == 1) {
+            positional[positional_count++] = optind - 1;
+            continue;
+        }
         const CliOption *o = NULL;
         if (c >= 256)
             o = accepted[c - 256];
@@ -258,41 +320,50 @@ CliResult cli_parse(const CliSpec *spec, int argc, char **argv, Options *opts)
                     o = accepted[k];
         if (o == NULL) {
             report_refused(argc, argv, c, longs, index);
-            return CLI_BAD_USAGE;
+            goto done;
         }
         char shown[64];
         snprintf(shown, sizeof shown, "--%s", o->name);
-        if (!set_value(o, shown, optarg, opts))
-            return CLI_BAD_USAGE;
+        /* optind - 1 is the value's word: the option's own ("-j4") or the next one. */
+        if (!take_value(&seen, o, shown, optind - 1, optarg, opts))
+            goto done;
         index = -1;
     }
+    /* The words after "--" are positional, whatever they look like. */
+    while (optind < argc)
+        positional[positional_count++] = optind++;
     if (opts->help) {
         cli_print_help(spec, stdout);
-        return CLI_DONE;
+        result = CLI_DONE;
+        goto done;
     }
     if (opts->version) {
         printf("raytra %s (part %s)\n", RAYTRA_VERSION, spec->part);
-        return CLI_DONE;
+        result = CLI_DONE;
+        goto done;
     }
-    for (int k = 0; optind + k < argc; k++)
-        if (!set_positional(part, k, argv[optind + k], opts))
-            return CLI_BAD_USAGE;
+    for (int k = 0; k < positional_count; k++)
+        if (!set_positional(&seen, k, positional[k], argv[positional[k]], opts))
+            goto done;
     if (opts->scene == NULL) {
         fprintf(stderr, "raytra: no scene file given\nusage: raytra SCENE [OUTPUT] [options]"
                         " (raytra --help for more)\n");
-        return CLI_BAD_USAGE;
+        goto done;
     }
     if (opts->convention_name != NULL) {
         if (!convention_from_name(opts->convention_name, &opts->convention)) {
             fprintf(stderr, "raytra: unknown convention '%s' (lecture or fall2016)\n",
                     opts->convention_name);
-            return CLI_BAD_USAGE;
+            goto done;
         }
         opts->convention_given = true;
     }
     if (opts->threads == 0)
         opts->threads = render_default_threads();
-    return CLI_RUN;
+    result = CLI_RUN;
+done:
+    free(positional);
+    return result;
 }
 
 /* Prints one entry of the help: the name column, then the text wrapped beside it. */

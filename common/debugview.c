@@ -5,17 +5,40 @@
 #include <stdlib.h>
 #include <string.h>
 
-static const char *const names[] = {"",         "normal",      "depth",    "id",
-                                    "material", "light-count", "box-tests"};
+/* Each view: its name, and the first part that has what it draws (11 for part 1.1), with
+ * which parts draw it, and why, when that is a later one: part 1.1 has no lights to
+ * count, the parts before 1.4 have no boxes. */
+static const struct {
+    const char *name;
+    int first_part;
+    const char *drawn_by;
+} views[] = {
+    [VIEW_NORMAL] = {"normal", 11, ""},
+    [VIEW_DEPTH] = {"depth", 11, ""},
+    [VIEW_ID] = {"id", 11, ""},
+    [VIEW_MATERIAL] = {"material", 11, ""},
+    [VIEW_LIGHT_COUNT] = {"light-count", 12, " (parts 1.2 to 1.6, which have lights, draw it)"},
+    [VIEW_BOX_TESTS] = {"box-tests", 14, " (parts 1.4 to 1.6, which have boxes, draw it)"},
+};
 
 /* Reads a view's name; false when there is no such view. */
 bool debugview_from_name(const char *name, ViewKind *kind)
 {
     for (int k = VIEW_NORMAL; k <= VIEW_BOX_TESTS; k++)
-        if (strcmp(name, names[k]) == 0) {
+        if (strcmp(name, views[k].name) == 0) {
             *kind = (ViewKind)k;
             return true;
         }
+    return false;
+}
+
+/* Tells whether part (11 for part 1.1) has what view kind draws; when not, *why says
+ * which parts do, for a message. */
+bool debugview_drawn_by(ViewKind kind, int part, const char **why)
+{
+    if (part >= views[kind].first_part)
+        return true;
+    *why = views[kind].drawn_by;
     return false;
 }
 
@@ -116,9 +139,14 @@ void debugview_finish(ViewKind kind, Image *img, int light_count, FILE *messages
                 "raytra: view depth: white at t = 0, half grey at t = %g (the median), "
                 "black where nothing is hit\n",
                 scale);
+    else if (scale == 0)
+        fprintf(messages, "raytra: view %s: black everywhere: %s\n", views[kind].name,
+                kind == VIEW_LIGHT_COUNT
+                    ? "the scene has no point, directional or area light to count"
+                    : "no camera ray was tested against a box or a primitive");
     else
-        fprintf(messages, "raytra: view %s: black 0, then red, yellow, white %g %s\n", names[kind],
-                scale,
+        fprintf(messages, "raytra: view %s: black 0, then red, yellow, white %g %s\n",
+                views[kind].name, scale,
                 kind == VIEW_LIGHT_COUNT ? "lights (all the scene's)"
                                          : "tests of boxes and primitives (the most of any pixel)");
 }

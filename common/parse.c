@@ -2,6 +2,7 @@
 #include <ctype.h>
 #include <errno.h>
 #include <limits.h>
+#include <math.h>
 #include <stdlib.h>
 #include <string.h>
 #include <sys/stat.h>
@@ -51,7 +52,7 @@ struct Parser {
 
 /* Makes room for one more item in array a of the scene, items called what in messages;
  * false (reported) when out of memory or at the limit. */
-#define ROOM_FOR(p, a, count, capacity, what)                                                    \
+#define ROOM_FOR(p, a, count, capacity, what)                                                      \
     room_for((p), &(a), &(capacity), (count), sizeof *(a), (what))
 
 /* The function behind ROOM_FOR. */
@@ -109,8 +110,9 @@ static bool check_reflectance(Parser *p, const char *what, const double *v, char
     for (int k = 0; k < 3; k++)
         if (v[k] > 1) {
             /* 85 for 0.85 is the usual slip: say so. */
-            ERROR(p, "%s must be in [0, 1] (a material reflects at most the light it gets), "
-                     "got %s%s",
+            ERROR(p,
+                  "%s must be in [0, 1] (a material reflects at most the light it gets), "
+                  "got %s%s",
                   what, words[k], v[k] <= 100 ? "; a percentage? write it as a fraction" : "");
             return false;
         }
@@ -586,6 +588,22 @@ static void parse_option(Parser *p, char *const *words, int n)
     p->convention_line = p->line;
 }
 
+/* Counts a v or f line. Before any camera, it tells that the file is an OBJ mesh, not a
+ * scene: that one message ends the reading, and the warnings about its comments and
+ * statements read so far are forgotten, as noise. */
+static void note_obj_line(Parser *p)
+{
+    p->obj_lines++;
+    if (p->camera_tried > 0)
+        return;
+    diag_forget_warnings(p->diag);
+    diag_error(p->diag, p->path, 0,
+               "this is an OBJ mesh (it has v and f lines), not a scene file; load it from a "
+               "scene with the line 'w %s'",
+               p->path);
+    p->stopped = true;
+}
+
 /* Finds the command named by the first word (and, for lights, the second). */
 static const Command *find_command(Parser *p, char *const *words, int count, int *used)
 {
@@ -607,7 +625,7 @@ static const Command *find_command(Parser *p, char *const *words, int count, int
     if (*used == 2)
         ERROR(p, "unknown light type '%s' (expected p, d, a or s)", words[1]);
     else if (strcmp(words[0], "v") == 0 || strcmp(words[0], "f") == 0)
-        p->obj_lines++;
+        note_obj_line(p);
     else
         diag_warn(p->diag, p->path, p->line, "unknown command '%s' ignored", words[0]);
     return NULL;
@@ -661,14 +679,8 @@ static void finish(Parser *p, const SceneLoadOptions *opts)
 {
     Scene *s = p->scene;
     if (p->camera_tried == 0) {
-        if (p->obj_lines > 0)
-            diag_error(p->diag, p->path, 0,
-                       "this is an OBJ mesh (it has v and f lines), not a scene file; "
-                       "load it from a scene with the line 'w %s'",
-                       p->path);
-        else
-            diag_error(p->diag, p->path, 0,
-                       "no camera: a scene needs the line 'c x y z vx vy vz d iw ih pw ph'");
+        diag_error(p->diag, p->path, 0,
+                   "no camera: a scene needs the line 'c x y z vx vy vz d iw ih pw ph'");
     } else if (p->obj_lines > 0) {
         diag_warn(p->diag, p->path, 0,
                   "v and f lines ignored: they belong in an OBJ file loaded with w");
@@ -683,6 +695,33 @@ static void finish(Parser *p, const SceneLoadOptions *opts)
                       convention_name(p->convention), convention_name(opts->convention));
     }
     finish_planes(s);
+}
+
+/* Says once when the scene's point or area lights are far too bright for its convention:
+ * the fall2016 scenes' lights are in the thousands, made for 1/r^2 falloff, and without
+ * it (the lecture convention) they wash the image out to white. A light of 100 or more,
+ * two orders of magnitude above the lecture's lights near 1, is taken for one of them. */
+static void note_convention(const Scene *s, FILE *messages)
+{
+    const Light *brightest = NULL;
+    double most = 0;
+    for (int k = 0; k < s->light_count; k++) {
+        const Light *l = &s->lights[k];
+        double v = fmax(l->color.r, fmax(l->color.g, l->color.b));
+        if (l->kind != LIGHT_DIRECTIONAL && v > most)
+            brightest = l, most = v;
+    }
+    if (scene_light_falls_off(s) || brightest == NULL || most < 100)
+        return;
+    /* Formatted by error_set, which makes a file name safe to print, as diagnostics are. */
+    Error note;
+    error_set(&note,
+              "raytra: note: %s:%d: a light of %g without falloff (the lecture convention) "
+              "washes the image out to white; lights this bright are made for the fall2016 "
+              "convention, which dims them by 1/r^2: run with --convention fall2016 or add the "
+              "line 'o convention fall2016' (docs/scene-format.md)",
+              s->path, brightest->line, most);
+    fprintf(messages, "%s\n", note.text);
 }
 
 /* Returns what kind of image a file starting with head is, or NULL: an image given
@@ -708,8 +747,7 @@ static void report_binary(Parser *p, const LineReader *reader)
                    "[OUTPUT])",
                    kind);
     else
-        ERROR(p, "%s in the file: this is not a text scene file",
-              lex_binary_byte_name(reader));
+        ERROR(p, "%s in the file: this is not a text scene file", lex_binary_byte_name(reader));
 }
 
 /* Reads a scene from the open file f, named path in messages and for finding meshes;
@@ -761,6 +799,7 @@ bool scene_load_stream(Scene *scene, FILE *f, const char *path, const SceneLoadO
         scene_free(scene);
         return false;
     }
+    note_convention(scene, diag.stream);
     return true;
 }
 
@@ -782,8 +821,8 @@ bool scene_load(Scene *scene, const char *path, const SceneLoadOptions *opts)
     bool ok = scene_load_stream(scene, f, path, opts);
     fclose(f);
     if (ok) {
-        Parser p = {.scene = scene, .diag = &diag, .path = path,
-                    .file_capacity = scene->file_count};
+        Parser p = {
+            .scene = scene, .diag = &diag, .path = path, .file_capacity = scene->file_count};
         ok = note_file(&p, id);
         if (!ok)
             scene_free(scene);

@@ -13,12 +13,13 @@ case $1 in /*) grade=$1 ;; *) grade=$(pwd)/$1 ;; esac
 case $2 in /*) raytra=$2 ;; *) raytra=$(pwd)/$2 ;; esac
 figure=""
 [ $# -eq 4 ] && case $4 in /*) figure=$4 ;; *) figure=$(pwd)/$4 ;; esac
-chromium=${CHROMIUM:-/usr/bin/chromium}
-if [ ! -x "$chromium" ]; then
-    echo "grade-report.sh: SKIPPED: no Chromium at $chromium (tools/deps.sh test installs it)"
+top=$(cd "$(dirname "$0")/.." && pwd)
+# $CHROMIUM, or chromium, chromium-browser or google-chrome on PATH (tools/deps.sh says which).
+if ! chromium=$("$top/tools/deps.sh" chromium); then
+    echo "grade-report.sh: SKIPPED: no Chromium (\$CHROMIUM, or chromium, chromium-browser or" \
+        "google-chrome on PATH; tools/deps.sh test installs it)"
     exit 0
 fi
-top=$(cd "$(dirname "$0")/.." && pwd)
 refs=$top/milestones/1.1-spheres-red/references
 tmp=$(mktemp -d)
 trap '[ -n "${KEEP:-}" ] || rm -rf "$tmp"' EXIT

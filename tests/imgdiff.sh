@@ -104,40 +104,40 @@ pfm tall.pfm 3 4 $grey
 # Identical images.
 run 0 a.pfm same.pfm
 has "size: 4 x 3 pixels"
-has "largest difference: R 0 (0.0/255), G 0 (0.0/255), B 0 (0.0/255)"
-has "PSNR: inf dB"
-has "differing pixels: 0 of 12 (0%) differ by more than 0.007843 (2.0/255)"
+has "largest difference (R, G, B): 0, 0, 0 /255"
+has "PSNR: inf (equal)"
+has "differing pixels: 0 (0%) of 12 differ by more than 2/255"
 has "PASS: the images are identical"
 
 # One pixel off by 0.5 in red: 1 of 12 pixels is 8.3%, more than the 0.1% allowed.
-# Mean = 0.5 / 36 channels = 0.01389; RMSE = sqrt(0.25 / 36) = 1/12; PSNR = 20 log10 12.
+# Mean = 0.5 / 36 channels = 0.01389 (3.54/255); RMSE = sqrt(0.25 / 36) = 1/12; PSNR = 20 log10 12.
 run 1 a.pfm one.pfm
-has "largest difference: R 0.5 (127.5/255), G 0 (0.0/255), B 0 (0.0/255)"
-has "mean absolute difference: 0.01389 (3.54/255)"
+has "largest difference (R, G, B): 128, 0, 0 /255"
+has "mean absolute difference: 3.54 /255"
 has "RMSE: 0.08333"
 has "PSNR: 21.58 dB"
-has "differing pixels: 1 of 12 (8.333%) differ by more than 0.007843 (2.0/255)"
+has "differing pixels: 1 (8.33%) of 12 differ by more than 2/255"
 has "differing region: (2,1)-(2,1), y from the top"
-has "FAIL: 8.333% of the pixels differ by more than 0.007843 (2.0/255), more than the 0.1% allowed"
+has "FAIL: 8.33% of the pixels differ by more than 2/255, more than the 0.1% allowed"
 run 1 --allow 0 one.pfm a.pfm
 run 0 --allow 0.1 a.pfm one.pfm
-has "PASS: 8.333% of the pixels differ by more than 0.007843 (2.0/255), within the 10% allowed"
+has "PASS: 8.33% of the pixels differ by more than 2/255, within the 10% allowed"
 run 0 --allow=1/12 a.pfm one.pfm
 
 # Two pixels: the box spans both.
 run 1 a.pfm two.pfm
-has "differing pixels: 2 of 12 (16.67%) differ by more than 0.007843 (2.0/255)"
+has "differing pixels: 2 (16.7%) of 12 differ by more than 2/255"
 has "differing region: (0,0)-(2,1), y from the top"
 
 # The threshold: 2^-7 = 1.99/255 is within 2/255, 2^-6 = 3.98/255 is not; a fraction
 # and a decimal say the same.
 run 0 --allow 0 a.pfm small.pfm
-has "PASS: no pixel differs by more than 0.007843 (2.0/255)"
+has "PASS: no pixel differs by more than 2/255"
 run 0 --allow 0 black.pfm step2.pfm
 run 1 --allow 0 black.pfm step4.pfm
 has "differing region: (3,0)-(3,0), y from the top"
 run 1 --allow 0 --threshold 1/255 black.pfm step2.pfm
-has "differing pixels: 1 of 12 (8.333%) differ by more than 0.003922 (1.0/255)"
+has "differing pixels: 1 (8.33%) of 12 differ by more than 1/255"
 run 0 --allow 0 --threshold 0.0078125 black.pfm step2.pfm
 run 0 --allow 0 --threshold=4/255 black.pfm step4.pfm
 
@@ -145,7 +145,7 @@ run 0 --allow 0 --threshold=4/255 black.pfm step4.pfm
 run 1 -q a.pfm one.pfm
 lines=$(($(wc -l <out.txt)))
 if [ "$lines" -ne 1 ] || [ -s err.txt ]; then fail "more than the verdict"; fi
-has "FAIL: 8.333% of the pixels differ by more than 0.007843 (2.0/255), more than the 0.1% allowed"
+has "FAIL: 8.33% of the pixels differ by more than 2/255, more than the 0.1% allowed"
 
 # Machine-readable figures, for tools/grade: every value, with enough digits.
 run 1 --machine --diff heatm.png a.pfm two.pfm
@@ -185,14 +185,14 @@ has "imgdiff: cannot read 'cut.pfm': truncated: expected 144 bytes of pixels, fo
 # The heat map of two.pfm: (2,1) differs most (0.5), so it is white; (0,0) differs
 # by 0.25, half way up the ramp of five colours, so red; equal pixels are black.
 run 1 --diff heat.png a.pfm two.pfm
-has "heat map: black = 0, white = 0.5 (127.5/255), written to heat.png"
+has "heat map: black where equal, white at 128/255, written to heat.png"
 pfm expected.pfm 4 3 0,0,0 2,1=1,1,1 0,0=1,0,0
 run 0 --threshold 0 --allow 0 heat.png expected.pfm
 has "note: expected.pfm holds linear values: compared as raytra would write them to a PNG (clamped to [0, 1], sRGB, 8 bits)"
 has "PASS: the images are identical"
 # With --scale 1, 0.5 is red and 0.25 purple (0.5, 0, 0.75), exactly in a PFM.
 run 1 --diff heat2.pfm --scale 1 a.pfm two.pfm
-has "heat map: black = 0, white = 1 (255.0/255), written to heat2.pfm"
+has "heat map: black where equal, white at 255/255, written to heat2.pfm"
 pfm expected2.pfm 4 3 0,0,0 2,1=1,0,0 0,0=0.5,0,0.75
 run 0 --threshold 0 --allow 0 heat2.pfm expected2.pfm
 # A PNG against a linear image: the linear one is clamped, sRGB-encoded and rounded to

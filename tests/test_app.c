@@ -154,6 +154,55 @@ START_TEST(unknown_extension_lists_exr)
 }
 END_TEST
 
+/* A probe that meets a surface lit by one light and tested against two boxes everywhere. */
+static void probe_everything(const void *ctx, int i, int j, Probe *probe)
+{
+    (void)ctx, (void)i, (void)j;
+    *probe = (Probe){.hit = true,
+                     .t = 1,
+                     .normal = vec3(0, 0, 1),
+                     .kd = color(1, 0, 0),
+                     .lights_visible = 1,
+                     .tests = 2};
+}
+
+START_TEST(a_view_needs_what_it_draws)
+{
+    /* Each part draws the views of what it has: light counts from part 1.2 on (1.1 has no
+     * lights), box tests from 1.4 on; a part refuses the others and names those that
+     * draw them, rather than draw black under a legend that promises counts. */
+    write_text("s.scn", "c 0 0 0  0 0 -1  1 1 1  4 3\nl p 0 1 0  1 1 1\n");
+    static const struct {
+        const char *part, *view, *refusal;
+    } cases[] = {
+        {"1.1-test", "normal", NULL},
+        {"1.1-test", "material", NULL},
+        {"1.1-test", "light-count", "(parts 1.2 to 1.6, which have lights, draw it)"},
+        {"1.1-test", "box-tests", "(parts 1.4 to 1.6, which have boxes, draw it)"},
+        {"1.2-test", "light-count", NULL},
+        {"1.3-test", "box-tests", "(parts 1.4 to 1.6, which have boxes, draw it)"},
+        {"1.4-test", "box-tests", NULL},
+    };
+    for (size_t k = 0; k < sizeof cases / sizeof *cases; k++) {
+        Program program = {.cli = {cases[k].part, "testing views"},
+                           .features = ~0u,
+                           .pixel = one_nan,
+                           .probe = probe_everything};
+        int status = run(&program, "--view", cases[k].view, "s.scn", "out.pfm", NULL);
+        char err[2048], expected[256];
+        read_text("err", err, sizeof err);
+        if (cases[k].refusal == NULL) {
+            ck_assert_msg(status == 0, "%s --view %s: %s", cases[k].part, cases[k].view, err);
+            continue;
+        }
+        snprintf(expected, sizeof expected, "raytra: part %s cannot draw the view '%s' %s\n",
+                 cases[k].part, cases[k].view, cases[k].refusal);
+        ck_assert_int_eq(status, 2);
+        ck_assert_str_eq(err, expected);
+    }
+}
+END_TEST
+
 /* The shared program's tests. */
 static Suite *app_suite(void)
 {
@@ -165,6 +214,9 @@ static Suite *app_suite(void)
     tc = tcase_create("formats");
     tcase_add_test(tc, png_from_the_exr_equals_the_png_of_the_render);
     tcase_add_test(tc, unknown_extension_lists_exr);
+    suite_add_tcase(s, tc);
+    tc = tcase_create("views");
+    tcase_add_test(tc, a_view_needs_what_it_draws);
     suite_add_tcase(s, tc);
     return s;
 }

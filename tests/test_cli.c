@@ -3,11 +3,14 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include <unistd.h>
+
 #include "cli.h"
 #include "testing.h"
 
 static const CliSpec spec = {"1.4-bvh", "testing"};
 static const CliSpec first_part = {"1.1-spheres-red", "testing"};
+static const CliSpec sampling_part = {"1.6-monte-carlo", "testing"};
 
 /* Parses the words of a command line (ended by NULL) into opts. */
 static CliResult parse_as(const CliSpec *part, Options *opts, va_list ap)
@@ -38,6 +41,40 @@ static CliResult parse(Options *opts, ...)
     va_end(ap);
     return r;
 }
+
+/* Parses the words of a command line (ended by NULL) as part does, expecting result;
+ * returns (to free) what cli_parse printed on standard error. */
+static char *messages_of(const CliSpec *part, CliResult result, ...)
+{
+    fflush(stderr);
+    int saved = dup(STDERR_FILENO);
+    FILE *caught = tmpfile();
+    ck_assert(saved >= 0 && caught != NULL);
+    ck_assert_int_ge(dup2(fileno(caught), STDERR_FILENO), 0);
+    Options opts;
+    va_list ap;
+    va_start(ap, result);
+    CliResult got = parse_as(part, &opts, ap);
+    va_end(ap);
+    fflush(stderr);
+    dup2(saved, STDERR_FILENO);
+    close(saved);
+    char *text = calloc(1, 4096);
+    ck_assert_ptr_nonnull(text);
+    rewind(caught);
+    text[fread(text, 1, 4095, caught)] = '\0';
+    fclose(caught);
+    ck_assert_msg(got == result, "expected result %d, got %d; messages:\n%s", result, got, text);
+    return text;
+}
+
+/* Asserts that the command line (ended by NULL) is a usage error whose message is expected. */
+#define ck_assert_usage_message(part, expected, ...)                                               \
+    do {                                                                                           \
+        char *text_ = messages_of((part), CLI_BAD_USAGE, __VA_ARGS__, NULL);                       \
+        ck_assert_str_eq(text_, expected "\n");                                                    \
+        free(text_);                                                                               \
+    } while (0)
 
 START_TEST(scene_and_output)
 {
@@ -97,8 +134,8 @@ START_TEST(the_table_is_consistent)
         ck_assert_msg(o->help != NULL && o->help[0] != '\0', "%s has no help", o->name);
         ck_assert_msg((o->kind == OPTION_FLAG) == (o->metavar == NULL), "%s's metavar", o->name);
         if (o->kind == OPTION_INT || o->kind == OPTION_NUMBER)
-            ck_assert_msg(o->min <= o->max && (o->fallback == 0 || (o->fallback >= o->min &&
-                                                                    o->fallback <= o->max)),
+            ck_assert_msg(o->min <= o->max && (o->fallback == 0 ||
+                                               (o->fallback >= o->min && o->fallback <= o->max)),
                           "%s's range", o->name);
         ck_assert_msg(o->argument == NULL || o->kind != OPTION_FLAG, "%s", o->name);
         ck_assert_msg(o->last_part == 0 || o->last_part >= o->first_part, "%s", o->name);
@@ -132,6 +169,86 @@ START_TEST(usage_errors)
     ck_assert_int_eq(parse(&o, "--scale", "inf", "s.scn", NULL), CLI_BAD_USAGE);
     ck_assert_int_eq(parse(&o, "--mode", "0x1", "s.scn", NULL), CLI_BAD_USAGE);
     ck_assert_int_eq(parse(&o, "s.scn", "--max-depth", NULL), CLI_BAD_USAGE);
+}
+END_TEST
+
+START_TEST(a_value_given_twice_is_refused)
+{
+    /* The output, the course's positional arguments and every option that takes a
+     * value: given twice in any spelling, by position or by name, even with the same
+     * value; the message shows both, in the order of the command line. */
+    ck_assert_usage_message(&spec,
+                            "raytra: the output is given twice ('a.png' and 'b.png'); "
+                            "give it once",
+                            "-o", "a.png", "s.scn", "b.png");
+    ck_assert_usage_message(&spec,
+                            "raytra: the output is given twice ('a.png' and 'b.png'); "
+                            "give it once",
+                            "s.scn", "--output=a.png", "-ob.png");
+    ck_assert_usage_message(&spec,
+                            "raytra: MODE (--mode) is given twice ('1' and '2'); give it once",
+                            "s.scn", "a.png", "1", "--mode", "2");
+    ck_assert_usage_message(&spec,
+                            "raytra: MODE (--mode) is given twice ('1' and '2'); give it once",
+                            "--mode", "1", "s.scn", "--mode", "2");
+    ck_assert_usage_message(&spec,
+                            "raytra: MODE (--mode) is given twice ('2' and '2'); give it once",
+                            "--mode=2", "s.scn", "o.png", "2");
+    ck_assert_usage_message(&sampling_part,
+                            "raytra: P (--samples) is given twice ('3' and '4'); give it once",
+                            "s.scn", "o.png", "3", "--samples", "4");
+    ck_assert_usage_message(&sampling_part,
+                            "raytra: S (--light-samples) is given twice ('2' and '3'); give it "
+                            "once",
+                            "--light-samples", "2", "s.scn", "o.png", "3", "3");
+    ck_assert_usage_message(&spec, "raytra: --threads is given twice ('2' and '3'); give it once",
+                            "-j2", "s.scn", "--threads", "3");
+    ck_assert_usage_message(&spec,
+                            "raytra: --convention is given twice ('lecture' and 'fall2016'); "
+                            "give it once",
+                            "--convention", "lecture", "s.scn", "--convention", "fall2016");
+    ck_assert_usage_message(&spec, "raytra: --view is given twice ('id' and 'id'); give it once",
+                            "--view", "id", "s.scn", "--view", "id");
+    /* A flag says the same thing twice: no conflict. */
+    Options o;
+    ck_assert_int_eq(parse(&o, "-q", "s.scn", "-q", "--linear", "--linear", NULL), CLI_RUN);
+    ck_assert(o.quiet && o.linear);
+}
+END_TEST
+
+START_TEST(a_negative_number_is_a_bad_value)
+{
+    /* A negative P, S or MODE is told as 0 or abc is, not as an unknown option. */
+    const char *words[] = {"0", "abc", "-1", "-2.5"};
+    for (size_t k = 0; k < sizeof words / sizeof *words; k++) {
+        char expected[128];
+        char *text = messages_of(&sampling_part, CLI_BAD_USAGE, "s.scn", "o.png", words[k], NULL);
+        snprintf(expected, sizeof expected,
+                 "raytra: P takes a whole number from 1 to 64, got '%s'\n", words[k]);
+        ck_assert_str_eq(text, expected);
+        free(text);
+        text = messages_of(&sampling_part, CLI_BAD_USAGE, "s.scn", "o.png", "2", words[k], NULL);
+        snprintf(expected, sizeof expected,
+                 "raytra: S takes a whole number from 1 to 64, got '%s'\n", words[k]);
+        ck_assert_str_eq(text, expected);
+        free(text);
+        text = messages_of(&sampling_part, CLI_BAD_USAGE, "-j", words[k], "s.scn", NULL);
+        snprintf(expected, sizeof expected,
+                 "raytra: --threads takes a whole number from 1 to 256, got '%s'\n", words[k]);
+        ck_assert_str_eq(text, expected);
+        free(text);
+    }
+    ck_assert_usage_message(&spec, "raytra: MODE takes a whole number from 0 to 3, got '-1'",
+                            "s.scn", "o.png", "-1");
+    /* Options around them are still options; a word like an option is still refused. */
+    Options o;
+    ck_assert_int_eq(parse(&o, "s.scn", "-q", "o.png", "2", "--linear", NULL), CLI_RUN);
+    ck_assert(o.quiet && o.linear && o.mode == 2);
+    ck_assert_str_eq(o.output, "o.png");
+    ck_assert_usage_message(&spec,
+                            "raytra: unknown option or wrong use of '-x' (raytra --help lists "
+                            "them)",
+                            "s.scn", "o.png", "-x");
 }
 END_TEST
 
@@ -193,6 +310,8 @@ static Suite *cli_suite(void)
     tcase_add_test(tc, the_table_is_consistent);
     tcase_add_test(tc, part_options_and_arguments);
     tcase_add_test(tc, usage_errors);
+    tcase_add_test(tc, a_value_given_twice_is_refused);
+    tcase_add_test(tc, a_negative_number_is_a_bad_value);
     tcase_add_test(tc, help_and_version);
     tcase_add_test(tc, help_lists_every_option);
     tcase_add_test(tc, default_output);

@@ -695,9 +695,70 @@ END_TEST
 
 START_TEST(an_obj_file_given_as_a_scene)
 {
-    assert_error("# an OBJ\nv 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n",
-                 "t.scn: this is an OBJ mesh (it has v and f lines), not a scene file; load "
-                 "it from a scene with the line 'w t.scn'");
+    /* One message, and nothing else: neither the comments and statements before the first
+     * v line, nor what follows it (an OBJ's s, l and o lines are no scene commands). */
+    const char *objs[] = {"# an OBJ\nv 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n",
+                          "# Blender\nmtllib m.mtl\no Cube\nv 0 0 0\nv 1 0 0\nv 0 1 0\n"
+                          "vn 0 0 1\nusemtl M\ns off\nf 1//1 2//1 3//1\nl 1 2\n# end\n",
+                          "f 1 2 3\nv 0 0 0\n"};
+    for (size_t k = 0; k < sizeof objs / sizeof *objs; k++) {
+        Loaded l = load(objs[k]);
+        ck_assert(!l.ok);
+        ck_assert_str_eq(l.messages,
+                         "t.scn: this is an OBJ mesh (it has v and f lines), not a scene file; "
+                         "load it from a scene with the line 'w t.scn'\n");
+        done(&l);
+    }
+    /* After a camera, v and f lines are a scene's stray lines: a warning. */
+    assert_warning(CAMERA "v 0 0 0\n", "t.scn: warning: v and f lines ignored");
+}
+END_TEST
+
+START_TEST(lights_that_do_not_fit_the_convention_are_noted)
+{
+    /* Lights in the thousands without falloff: the fall2016 convention is named once,
+     * with the brightest light's line, whichever light it is. */
+    const char *bright = CAMERA "l p 0 10 0  8000 8000 8000\nl s 0 9 0  0 -1 0  1 0 0  2  "
+                                "1 1 1 6000\nl p 0 5 0  0.5 0.5 0.5\n";
+    Loaded l = load(bright);
+    ck_assert_msg(l.ok, "%s", l.messages);
+    ck_assert_str_eq(l.messages,
+                     "raytra: note: t.scn:2: a light of 8000 without falloff (the lecture "
+                     "convention) washes the image out to white; lights this bright are made "
+                     "for the fall2016 convention, which dims them by 1/r^2: run with "
+                     "--convention fall2016 or add the line 'o convention fall2016' "
+                     "(docs/scene-format.md)\n");
+    done(&l);
+    /* An area light alone, its intensity given as i: the same. */
+    l = load(CAMERA "l s 0 9 0  0 -1 0  1 0 0  2  1 1 1 6000\n");
+    ck_assert_contains(l.messages, "t.scn:2: a light of 6000 without falloff");
+    done(&l);
+    /* The same lights with falloff, from the file or the command line: nothing to say. */
+    l = load(CAMERA "o convention fall2016\nl p 0 10 0  8000 8000 8000\n");
+    ck_assert_msg(l.ok && l.messages[0] == '\0', "%s", l.messages);
+    done(&l);
+    write_file("t.scn", bright);
+    l = load_path_with("t.scn", (SceneLoadOptions){CONVENTION_FALL2016, true, NULL});
+    ck_assert_msg(l.ok && l.messages[0] == '\0', "%s", l.messages);
+    done(&l);
+    /* Nothing to say: lights near 1, or of 99, without falloff; lights near 1 or of 100
+     * with it; a directional light of any brightness (it never falls off); ambient light. */
+    const char *fine[] = {CAMERA "l p 0 10 0  1 1 1\nl s 0 9 0  0 -1 0  1 0 0  2  1 1 1\n",
+                          CAMERA "l p 0 10 0  99 99 99\n",
+                          CAMERA "o convention fall2016\nl p 0 10 0  100 100 100\n",
+                          CAMERA "o convention fall2016\nl p 0 10 0  1 1 1\nl p 0 9 0  50 1 1\n",
+                          CAMERA "l d 0 -1 0  6000 6000 6000\n",
+                          CAMERA "o convention fall2016\nl d 0 -1 0  1 1 1\nl a 0.1 0.1 0.1\n"};
+    for (size_t k = 0; k < sizeof fine / sizeof *fine; k++) {
+        l = load(fine[k]);
+        ck_assert_msg(l.ok && l.messages[0] == '\0', "scene %zu: %s", k, l.messages);
+        done(&l);
+    }
+    /* A scene that fails says what is wrong, and no more. */
+    l = load(CAMERA "l p 0 10 0  8000 8000 8000\ns 0 0 0 -1\n");
+    ck_assert(!l.ok);
+    ck_assert_ptr_null(strstr(l.messages, "note"));
+    done(&l);
 }
 END_TEST
 
@@ -887,6 +948,7 @@ static Suite *parse_suite(void)
     tcase_add_test(conv, plane_fall2016_convention_from_the_command_line);
     tcase_add_test(conv, command_line_convention_wins_over_the_file);
     tcase_add_test(conv, options);
+    tcase_add_test(conv, lights_that_do_not_fit_the_convention_are_noted);
     suite_add_tcase(s, conv);
     TCase *diag = tcase_create("diagnostics");
     tcase_add_test(diag, wrong_number_of_arguments);

@@ -1,18 +1,40 @@
 #!/bin/sh
 # deps.sh: makes sure the packages raytra builds with are installed.
 #
-# Usage: tools/deps.sh [build|test|bench]
+# Usage: tools/deps.sh [build|test|bench|chromium]
 #   build  needs a C compiler, make, pkg-config, and the headers of libpng and of
 #          OpenEXR 3 (its C API, openexr.h);
 #   test   needs, in addition, the Check unit-test framework, and Chromium, in which
 #          tests/grade-report.sh opens the grading report (headless);
-#   bench  needs, in addition to build, Embree 3 for the benchmark's baseline.
+#   bench  needs, in addition to build, Embree 3 for the benchmark's baseline;
+#   chromium  prints the path of the Chromium to run and installs nothing: $CHROMIUM
+#          when set (a path, or a name on PATH), else the first of chromium,
+#          chromium-browser, google-chrome and google-chrome-stable on PATH; fails when
+#          there is none.
 #
 # On Debian and Ubuntu it installs what is missing with apt-get when it may
 # (as root, or through sudo without a password); otherwise it names the exact
 # command to run and fails.
 
 set -u
+
+# Prints the path of the Chromium to run, as the usage says; false when there is none.
+find_chromium() {
+    if [ -n "${CHROMIUM:-}" ]; then
+        set -- "$CHROMIUM"
+    else
+        set -- chromium chromium-browser google-chrome google-chrome-stable
+    fi
+    for name in "$@"; do
+        found=$(command -v "$name" 2>/dev/null) && [ -x "$found" ] && echo "$found" && return 0
+    done
+    return 1
+}
+if [ "${1:-}" = chromium ]; then
+    find_chromium
+    exit
+fi
+
 need_check=no
 [ "${1:-build}" = test ] && need_check=yes
 need_embree=no
@@ -33,7 +55,7 @@ fi
 if [ $need_embree = yes ] && [ ! -f /usr/include/embree3/rtcore.h ]; then
     missing="$missing libembree-dev"
 fi
-if [ $need_check = yes ] && [ ! -x /usr/bin/chromium ] && command -v apt-get >/dev/null 2>&1; then
+if [ $need_check = yes ] && ! find_chromium >/dev/null && command -v apt-get >/dev/null 2>&1; then
     missing="$missing chromium"
 fi
 [ -z "$missing" ] && exit 0

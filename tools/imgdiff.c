@@ -17,7 +17,7 @@ enum { EXIT_MATCH = 0, EXIT_DIFFER = 1, EXIT_TROUBLE = 2 };
 
 /* What the command line asks for. */
 typedef struct {
-    const char *paths[2], *diff_path; /* the images; --diff's heat map, or NULL */
+    const char *paths[2], *diff_path;    /* the images; --diff's heat map, or NULL */
     const char *thumb_path, *diff_thumb; /* --thumb's and --diff-thumb's files, or NULL */
     double threshold; /* a pixel differs when its largest channel difference exceeds this */
     double allow;     /* the fraction of the pixels that may differ */
@@ -42,28 +42,45 @@ typedef struct {
 /* imgdiff's options, from which the parsing and --help are made; the enum names each
  * one's place in the table. */
 enum {
-    OPT_THRESHOLD, OPT_ALLOW, OPT_DIFF, OPT_THUMB, OPT_DIFF_THUMB, OPT_SCALE, OPT_QUIET,
-    OPT_MACHINE, OPT_HELP
+    OPT_THRESHOLD,
+    OPT_ALLOW,
+    OPT_DIFF,
+    OPT_THUMB,
+    OPT_DIFF_THUMB,
+    OPT_SCALE,
+    OPT_QUIET,
+    OPT_MACHINE,
+    OPT_HELP
 };
 static const ToolOption options[] = {
-    {"threshold", 0, "T", "a pixel differs when one of its channels differs by more\n"
+    {"threshold", 0, "T",
+     "a pixel differs when one of its channels differs by more\n"
      "than T, a number or a fraction such as 8/255; 2/255\nis more than 2 steps of 8 bits",
      IMGDIFF_THRESHOLD_TEXT},
     {"allow", 0, "F", "the images match when at most the fraction F of the\npixels differ",
      IMGDIFF_ALLOW_TEXT},
-    {"diff", 0, "FILE", "write a heat map of the differences to FILE (.png or\n.pfm): black "
+    {"diff", 0, "FILE",
+     "write a heat map of the differences to FILE (.png or\n.pfm): black "
      "where a pixel is exactly equal; any\ndifference, even one within the threshold, is at "
-     "least\ndark blue, then the colours run through purple, red\nand yellow to white", NULL},
-    {"thumb", 0, "FILE", "write B shrunk by a whole factor to at most 320\npixels a side to "
+     "least\ndark blue, then the colours run through purple, red\nand yellow to white",
+     NULL},
+    {"thumb", 0, "FILE",
+     "write B shrunk by a whole factor to at most 320\npixels a side to "
      "FILE, each pixel a block's mean;\nalso when the sizes differ, up to 4096 x 4096 pixels",
      NULL},
-    {"diff-thumb", 0, "FILE", "write the heat map so shrunk to FILE, each pixel\nits block's "
-     "brightest, so that one differing pixel\nstill shows", NULL},
-    {"scale", 0, "S", "the difference that is white in the heat map, larger\nones too "
-     "(default: the largest difference found)", NULL},
+    {"diff-thumb", 0, "FILE",
+     "write the heat map so shrunk to FILE, each pixel\nits block's "
+     "brightest, so that one differing pixel\nstill shows",
+     NULL},
+    {"scale", 0, "S",
+     "the difference that is white in the heat map, larger\nones too "
+     "(default: the largest difference found)",
+     NULL},
     {"quiet", 'q', NULL, "print only the verdict", NULL},
-    {"machine", 0, NULL, "print the figures as NAME VALUE lines instead, for\nprograms "
-     "(tools/grade reads them; docs/grading.md lists\nthem)", NULL},
+    {"machine", 0, NULL,
+     "print the figures as NAME VALUE lines instead, for\nprograms "
+     "(tools/grade reads them; docs/grading.md lists\nthem)",
+     NULL},
     {"help", 'h', NULL, "show this help and exit", NULL},
 };
 enum { OPTION_COUNT = sizeof options / sizeof options[0] };
@@ -137,8 +154,8 @@ static bool set_option(void *state, int k, const char *value)
 static bool parse_args(int argc, char **argv, DiffOptions *o)
 {
     *o = (DiffOptions){.threshold = IMGDIFF_THRESHOLD, .allow = IMGDIFF_ALLOW};
-    if (!toolopt_parse("imgdiff", options, sizeof options[0], OPTION_COUNT, argc, argv,
-                       set_option, o))
+    if (!toolopt_parse("imgdiff", options, sizeof options[0], OPTION_COUNT, argc, argv, set_option,
+                       o))
         return false;
     if (argc - optind > 2) {
         fprintf(stderr, "imgdiff: unexpected argument '%s': give two images\n", argv[optind + 2]);
@@ -230,13 +247,18 @@ static void print_figures(const Diff *d, int width, int height, double top, cons
             printf("nonfinite %ld\n", d->nonfinite);
         return;
     }
+    /* Values in 255ths and percentages to 3 digits, RMSE to 4, PSNR to 0.01 dB: as tools/grade
+     * writes them in its report and messages, so that both give the same figures. */
     printf("size: %d x %d pixels\n", width, height);
-    printf("largest difference: R %.4g (%.1f/255), G %.4g (%.1f/255), B %.4g (%.1f/255)\n",
-           d->max[0], d->max[0] * 255, d->max[1], d->max[1] * 255, d->max[2], d->max[2] * 255);
-    printf("mean absolute difference: %.4g (%.2f/255)\n", mean, mean * 255);
-    printf("RMSE: %.4g\nPSNR: %.2f dB\n", rmse, psnr);
-    printf("differing pixels: %ld of %ld (%.4g%%) differ by more than %.4g (%.1f/255)\n",
-           d->differing, pixels, 100.0 * d->differing / pixels, t, t * 255);
+    printf("largest difference (R, G, B): %.3g, %.3g, %.3g /255\n", d->max[0] * 255,
+           d->max[1] * 255, d->max[2] * 255);
+    printf("mean absolute difference: %.3g /255\n", mean * 255);
+    if (isinf(psnr))
+        printf("RMSE: %.4g\nPSNR: inf (equal)\n", rmse);
+    else
+        printf("RMSE: %.4g\nPSNR: %.2f dB\n", rmse, psnr);
+    printf("differing pixels: %ld (%.3g%%) of %ld differ by more than %.3g/255\n", d->differing,
+           100.0 * d->differing / pixels, pixels, t * 255);
     if (d->differing > 0)
         printf("differing region: (%d,%d)-(%d,%d), y from the top\n", d->x0, d->y0, d->x1, d->y1);
     if (d->nonfinite > 0)
@@ -256,13 +278,11 @@ static int print_verdict(const Diff *d, long pixels, const DiffOptions *o)
     else if (d->max[0] == 0 && d->max[1] == 0 && d->max[2] == 0)
         printf("PASS: the images are identical\n");
     else if (d->differing == 0)
-        printf("PASS: no pixel differs by more than %.4g (%.1f/255)\n", o->threshold,
-               o->threshold * 255);
+        printf("PASS: no pixel differs by more than %.3g/255\n", o->threshold * 255);
     else
-        printf("%s: %.4g%% of the pixels differ by more than %.4g (%.1f/255), %s the %.4g%% "
-               "allowed\n",
-               pass ? "PASS" : "FAIL", 100.0 * d->differing / pixels, o->threshold,
-               o->threshold * 255, pass ? "within" : "more than", o->allow * 100);
+        printf("%s: %.3g%% of the pixels differ by more than %.3g/255, %s the %.3g%% allowed\n",
+               pass ? "PASS" : "FAIL", 100.0 * d->differing / pixels, o->threshold * 255,
+               pass ? "within" : "more than", o->allow * 100);
     return pass ? EXIT_MATCH : EXIT_DIFFER;
 }
 
@@ -302,8 +322,7 @@ static int compare(Image img[2], const ImgFileKind kind[2], const DiffOptions *o
         fprintf(stderr, "imgdiff: '%s' changed while it was read\n", o->paths[1]);
         return EXIT_TROUBLE;
     }
-    if (o->thumb_path != NULL &&
-        !imgmap_write_thumb(b, false, encoding_of(kind[1]), o->thumb_path))
+    if (o->thumb_path != NULL && !imgmap_write_thumb(b, false, encoding_of(kind[1]), o->thumb_path))
         return EXIT_TROUBLE;
     /* A PNG against linear values (a PFM's, an EXR's): each linear value is encoded as
      * raytra encodes its PNGs, clamped to [0, 1], given the sRGB curve and rounded to 8
@@ -328,7 +347,7 @@ static int compare(Image img[2], const ImgFileKind kind[2], const DiffOptions *o
     if (heat && !imgmap_write_heat(a, b, top, o->diff_path, o->diff_thumb))
         return EXIT_TROUBLE;
     if (o->diff_path != NULL && !o->quiet && !o->machine)
-        printf("heat map: black = 0, white = %.4g (%.1f/255), written to %s\n", top, top * 255,
+        printf("heat map: black where equal, white at %.3g/255, written to %s\n", top * 255,
                o->diff_path);
     if (o->machine)
         print_figures(&d, a->width, a->height, heat ? top : 0, o);
