@@ -169,7 +169,7 @@ static bool parse_pixel(const char *text, const CameraSpec *c, int sample_count,
     if (at != NULL && sample_count == 0) {
         fprintf(stderr,
                 "raytra: --trace-pixel %s: this part traces one ray a pixel, through its "
-                "centre; @SAMPLE is for part 1.6, which samples\n",
+                "centre; @SAMPLE is for a part that samples pixels\n",
                 text);
         return false;
     }
@@ -206,7 +206,7 @@ static void trace_one_pixel(const Program *program, const void *ctx, const Scene
     RayStats stats = {{0}};
     if (sample >= 0) {
         Color s = program->sample(ctx, x, j, sample, &stats);
-        int count = opts->samples * opts->samples;
+        int side = cli_int(opts, program->samples_option), count = side * side;
         printf("sample %d: colour (%.9g, %.9g, %.9g); the pixel's colour is the mean of its "
                "%d sample%s\n",
                sample, s.r, s.g, s.b, count, count == 1 ? "" : "s");
@@ -234,11 +234,16 @@ static bool view_usable(const Program *program, const Options *opts)
     }
     /* A view of what the part does not have (lights, boxes) would be black under a legend
      * that promises counts. */
-    const char *why = "";
-    if (program->probe == NULL ||
-        !debugview_drawn_by(kind, cli_part_number(program->cli.part), &why)) {
-        fprintf(stderr, "raytra: part %s cannot draw the view '%s'%s\n", program->cli.part,
-                opts->view, why);
+    const char *lacks = "";
+    if (program->probe == NULL) {
+        fprintf(stderr, "raytra: part %s cannot draw views\n", program->cli.part);
+        return false;
+    }
+    if (!debugview_drawn_by(kind, program->views, &lacks)) {
+        fprintf(stderr,
+                "raytra: part %s cannot draw the view '%s': it has no %s yet (a later part "
+                "of the course draws it)\n",
+                program->cli.part, opts->view, lacks);
         return false;
     }
     return true;
@@ -339,7 +344,8 @@ int app_main(const Program *program, int argc, char **argv)
     int trace_x = 0, trace_y = 0, trace_sample = -1;
     Explain explain = {stdout, &scene};
     if (opts.trace_pixel != NULL) {
-        int samples = program->sample != NULL ? opts.samples * opts.samples : 0;
+        int side = program->sample != NULL ? cli_int(&opts, program->samples_option) : 0;
+        int samples = side * side;
         if (!parse_pixel(opts.trace_pixel, &scene.camera, samples, &trace_x, &trace_y,
                          &trace_sample)) {
             status = EXIT_USAGE;

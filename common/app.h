@@ -18,10 +18,12 @@ typedef struct {
     PixelFn pixel;
     /* The radiance of sample k alone of pixel (i, j), with the rays and random numbers
      * it has in pixel's mean: --trace-pixel X,Y@K. NULL when the part traces one ray a
-     * pixel; a part that sets it reads P, its P x P samples a pixel, from Options.samples. */
+     * pixel; a part that sets it names the option of P, its P x P samples a pixel. */
     Color (*sample)(const void *ctx, int i, int j, int k, RayStats *stats);
+    const char *samples_option;
     /* Tells what a pixel's camera ray meets first, for --view; NULL if the part cannot. */
     ProbeFn probe;
+    unsigned views; /* the views it draws beyond every part's: 1 << VIEW_LIGHT_COUNT, ... */
     /* Prints part-specific figures after the summary line; may be NULL. */
     void (*report)(const void *ctx, const RenderResult *result);
     void (*cleanup)(void *ctx);

@@ -1,4 +1,4 @@
-/* cli.c: the one table of every part's options, and parsing it with getopt_long. */
+/* cli.c: the table of the options every part has, and parsing them with a part's own by getopt_long. */
 #include "cli.h"
 
 #include <errno.h>
@@ -38,57 +38,21 @@ const CliOption cli_options[] = {
      .field = FIELD(strict)},
     {.name = "trace-pixel", .kind = OPTION_TEXT, .metavar = "X,Y",
      .help = "print the ray tree of the pixel in column X, row Y (0,0 is the top-left "
-             "corner, as in image viewers) and write no image; in part 1.6, X,Y@K traces "
-             "its sample K alone: K from 0 to P x P - 1, the sub-squares of the pixel "
-             "counted row by row from its bottom left",
+             "corner, as in image viewers) and write no image; where a part samples "
+             "pixels, X,Y@K traces its sample K alone: K from 0 to P x P - 1, the "
+             "sub-squares of the pixel counted row by row from its bottom left",
      .field = FIELD(trace_pixel)},
     {.name = "view", .kind = OPTION_TEXT, .metavar = "NAME",
      .help = "draw what each camera ray meets instead of its light: normal, depth, id "
-             "(a colour per surface), material (kd), light-count (parts 1.2 to 1.6: the "
-             "lights that reach the point), box-tests (parts 1.4 to 1.6: a heat map of the boxes and primitives "
-             "each camera ray is tested against)",
+             "(a colour per surface), material (kd), light-count (the lights that reach the "
+             "point, where a part has lights), box-tests (where a part has boxes: a heat "
+             "map of the boxes and primitives each camera ray is tested against)",
      .field = FIELD(view)},
-    {.name = "two-sided",
-     .help = "shade the backs of triangles and planes with their own material, not lit yellow",
-     .field = FIELD(two_sided), .first_part = 12},
-    {.name = "max-depth", .kind = OPTION_INT, .metavar = "N",
-     .help = "follow at most N mirror reflections along a path (default 20; 0: none)",
-     .field = FIELD(max_depth), .fallback = 20, .min = 0, .max = 1000, .first_part = 13},
-    {.name = "ray-offset", .kind = OPTION_NUMBER, .metavar = "F",
-     .help = "start shadow and reflected rays F times the size of the hit point's "
-             "coordinates off the surface (default 2^-32); 0 shows shadow acne",
-     .field = FIELD(ray_offset), .fallback = 0x1p-32, .min = 0, .max = 1, .first_part = 13},
-    {.name = "mode", .kind = OPTION_INT, .metavar = "MODE",
-     .help = "0: test every surface, each behind its box; 1: draw each surface's box; "
-             "2: draw the BVH's leaf boxes; 3 (the default): the BVH",
-     .field = FIELD(mode), .fallback = 3, .min = 0, .max = 3, .first_part = 14,
-     .last_part = 15, .argument = "MODE"},
-    {.name = "fresnel", .kind = OPTION_TEXT, .metavar = "MODEL",
-     .help = "how much light glass reflects: schlick (Schlick's approximation, the default) "
-             "or exact (the Fresnel equations for unpolarised light)",
-     .field = FIELD(fresnel_name), .first_part = 15},
-    {.name = "min-weight", .kind = OPTION_NUMBER, .metavar = "F",
-     .help = "do not follow mirror, reflected or refracted rays that make up less than F of "
-             "their pixel (default 2^-16, far below a PNG's steps; 0: only --max-depth "
-             "stops them)",
-     .field = FIELD(min_weight), .fallback = 0x1p-16, .min = 0, .max = 1, .first_part = 15},
-    {.name = "samples", .kind = OPTION_INT, .metavar = "P",
-     .help = "trace P x P primary rays per pixel, one in each of P x P sub-squares "
-             "(default 1, through the pixel's centre; at most 64)",
-     .field = FIELD(samples), .fallback = 1, .min = 1, .max = 64, .first_part = 16,
-     .last_part = 16, .argument = "P"},
-    {.name = "light-samples", .kind = OPTION_INT, .metavar = "S",
-     .help = "trace S x S shadow rays to every area light at every hit (default 1; at most 64)",
-     .field = FIELD(light_samples), .fallback = 1, .min = 1, .max = 64, .first_part = 16,
-     .last_part = 16, .argument = "S"},
-    {.name = "seed", .kind = OPTION_INT, .metavar = "N",
-     .help = "pick other random numbers; the same seed always gives the same image (default 0)",
-     .field = FIELD(seed), .min = 0, .max = 2147483647, .first_part = 16, .last_part = 16},
-    {.name = "sampling", .kind = OPTION_TEXT, .metavar = "NAME",
-     .help = "how sample points are placed: random (independent), jittered (one in each "
-             "sub-square, pixel and light apart) or correlated (jittered, and with S = 1 the "
-             "shadow rays of a pixel's P x P rays cover the light evenly; the default)",
-     .field = FIELD(sampling_name), .first_part = 16, .last_part = 16},
+    {0},
+};
+
+/* The options every part has that --help lists last, after the part's own. */
+static const CliOption closing_options[] = {
     {.name = "help", .letter = 'h', .help = "show this help and exit", .field = FIELD(help)},
     {.name = "version", .help = "show the version and exit", .field = FIELD(version)},
     {0},
@@ -98,26 +62,41 @@ const CliOption cli_options[] = {
 
 enum { MAX_OPTIONS = 64 };
 
-/* Returns the course's number of a part from its name: 13 for "1.3-shadows-mirror". */
-int cli_part_number(const char *part)
+/* Lists in list[] the options of a part whose own are tables (a NULL-ended list of
+ * tables, or NULL): the common ones, its own, then --help and --version; returns how
+ * many. */
+static int every_option(const CliOption *const *tables, const CliOption **list)
 {
-    int major, minor;
-    return sscanf(part, "%d.%d", &major, &minor) == 2 ? 10 * major + minor : 0;
+    int n = 0;
+    for (const CliOption *o = cli_options; o->name != NULL && n < MAX_OPTIONS; o++)
+        list[n++] = o;
+    for (int t = 0; tables != NULL && tables[t] != NULL; t++)
+        for (const CliOption *o = tables[t]; o->name != NULL && n < MAX_OPTIONS; o++)
+            list[n++] = o;
+    for (const CliOption *o = closing_options; o->name != NULL && n < MAX_OPTIONS; o++)
+        list[n++] = o;
+    return n;
 }
 
-/* Tells whether part (11-16) accepts option o. */
-bool cli_option_accepted(const CliOption *o, int part)
+/* Returns the option named name of a part whose own options are tables, or NULL. */
+const CliOption *cli_option_named(const CliOption *const *tables, const char *name)
 {
-    return (o->first_part == 0 || part >= o->first_part) &&
-           (o->last_part == 0 || part <= o->last_part);
+    const CliOption *list[MAX_OPTIONS];
+    int n = every_option(tables, list);
+    for (int k = 0; k < n; k++)
+        if (strcmp(list[k]->name, name) == 0)
+            return list[k];
+    return NULL;
 }
 
-/* Returns the option with this long name, or NULL. */
-const CliOption *cli_option_named(const char *name)
+/* Returns the option whose short name is letter, as cli_option_named does, or NULL. */
+const CliOption *cli_option_lettered(const CliOption *const *tables, char letter)
 {
-    for (const CliOption *o = cli_options; o->name != NULL; o++)
-        if (strcmp(o->name, name) == 0)
-            return o;
+    const CliOption *list[MAX_OPTIONS];
+    int n = every_option(tables, list);
+    for (int k = 0; letter != 0 && k < n; k++)
+        if (list[k]->letter == letter)
+            return list[k];
     return NULL;
 }
 
@@ -128,10 +107,20 @@ static bool decimal_text(const char *text)
     return text[0] != '\0' && strspn(text, "0123456789+-.eE") == strlen(text);
 }
 
+/* Returns where the value of option o is kept in opts: a field of its own for a common
+ * option, a slot of part_values for one of the part's. */
+static void *value_of(Options *opts, const CliOption *o)
+{
+    for (int k = 0; k < opts->part_count; k++)
+        if (opts->part_rows[k] == o)
+            return &opts->part_values[k];
+    return (char *)opts + o->field;
+}
+
 /* Stores text as the value of option o in opts; false (reported) when it is not valid. */
 static bool set_value(const CliOption *o, const char *shown, const char *text, Options *opts)
 {
-    char *at = (char *)opts + o->field;
+    char *at = value_of(opts, o);
     char *end;
     switch (o->kind) {
     case OPTION_FLAG: *(bool *)at = true; return true;
@@ -161,33 +150,81 @@ static bool set_value(const CliOption *o, const char *shown, const char *text, O
     return false;
 }
 
-/* Sets every option of the table to its value when not given. */
-static void set_fallbacks(Options *opts)
+/* Stores the value option o has when not given. */
+static void set_fallback(Options *opts, const CliOption *o)
 {
-    memset(opts, 0, sizeof *opts);
-    for (const CliOption *o = cli_options; o->name != NULL; o++) {
-        char *at = (char *)opts + o->field;
-        if (o->kind == OPTION_INT)
-            *(int *)at = (int)o->fallback;
-        else if (o->kind == OPTION_NUMBER)
-            *(double *)at = o->fallback;
-    }
+    void *at = value_of(opts, o);
+    if (o->kind == OPTION_INT)
+        *(int *)at = (int)o->fallback;
+    else if (o->kind == OPTION_NUMBER)
+        *(double *)at = o->fallback;
 }
 
-/* Lists the options part accepts in accepted[]; returns how many. */
-static int part_options(int part, const CliOption **accepted)
+/* Sets opts up for the common options and the part's, tables (a NULL-ended list of
+ * tables of rows, or NULL), each at its value when not given. */
+void cli_defaults(Options *opts, const CliOption *const *tables)
 {
-    int n = 0;
-    for (const CliOption *o = cli_options; o->name != NULL && n < MAX_OPTIONS; o++)
-        if (cli_option_accepted(o, part))
-            accepted[n++] = o;
-    return n;
+    memset(opts, 0, sizeof *opts);
+    for (int t = 0; tables != NULL && tables[t] != NULL; t++)
+        for (const CliOption *o = tables[t]; o->name != NULL; o++) {
+            if (opts->part_count == CLI_MAX_PART_OPTIONS) {
+                fprintf(stderr, "raytra: more than %d options of a part\n", CLI_MAX_PART_OPTIONS);
+                abort();
+            }
+            opts->part_rows[opts->part_count++] = o;
+        }
+    const CliOption *list[MAX_OPTIONS];
+    int n = every_option(tables, list);
+    for (int k = 0; k < n; k++)
+        set_fallback(opts, list[k]);
+}
+
+/* Returns the value of the part's option name, which must be of kind kind: a part asks
+ * only for the options it declares, so anything else is a bug, and stops the program. */
+static OptionValue *part_value(const Options *opts, const char *name, OptionKind kind)
+{
+    for (int k = 0; k < opts->part_count; k++)
+        if (strcmp(opts->part_rows[k]->name, name) == 0 && opts->part_rows[k]->kind == kind)
+            return (OptionValue *)&opts->part_values[k];
+    fprintf(stderr, "raytra: bug: the part reads an option '%s' of another kind, or that it "
+                    "does not declare\n",
+            name);
+    abort();
+}
+
+/* Returns the value of the part's option name, to set (unit tests set options so). */
+OptionValue *cli_set(Options *opts, const char *name, OptionKind kind)
+{
+    return part_value(opts, name, kind);
+}
+
+/* Returns the value of the part's flag name. */
+bool cli_flag(const Options *opts, const char *name)
+{
+    return part_value(opts, name, OPTION_FLAG)->flag;
+}
+
+/* Returns the value of the part's whole-number option name. */
+int cli_int(const Options *opts, const char *name)
+{
+    return part_value(opts, name, OPTION_INT)->whole;
+}
+
+/* Returns the value of the part's decimal option name. */
+double cli_number(const Options *opts, const char *name)
+{
+    return part_value(opts, name, OPTION_NUMBER)->number;
+}
+
+/* Returns the value of the part's text option name: NULL when not given. */
+const char *cli_text(const Options *opts, const char *name)
+{
+    return part_value(opts, name, OPTION_TEXT)->text;
 }
 
 /* What cli_parse has read so far: the options the part accepts, and which of them were
  * given a value, where (the word's index in argv; 0: not given) and as what text. */
 typedef struct {
-    int part;
     int count;
     const CliOption *accepted[MAX_OPTIONS];
     int given_at[MAX_OPTIONS];
@@ -242,10 +279,11 @@ static bool set_positional(Seen *seen, int k, int at, const char *arg, Options *
         return true;
     }
     int seen_args = 1;
-    for (const CliOption *o = cli_options; o->name != NULL; o++)
-        if ((o->argument != NULL || strcmp(o->name, "output") == 0) &&
-            cli_option_accepted(o, seen->part) && seen_args++ == k)
+    for (int j = 0; j < seen->count; j++) {
+        const CliOption *o = seen->accepted[j];
+        if ((o->argument != NULL || strcmp(o->name, "output") == 0) && seen_args++ == k)
             return take_value(seen, o, o->argument != NULL ? o->argument : "OUTPUT", at, arg, opts);
+    }
     fprintf(stderr, "raytra: unexpected argument '%s' (raytra --help shows the usage)\n", arg);
     return false;
 }
@@ -268,9 +306,9 @@ static void report_refused(int argc, char **argv, int optopt_seen, const struct 
  * argument, to be refused as a value like 0, not as an unknown option. */
 CliResult cli_parse(const CliSpec *spec, int argc, char **argv, Options *opts)
 {
-    set_fallbacks(opts);
-    Seen seen = {.part = cli_part_number(spec->part)};
-    seen.count = part_options(seen.part, seen.accepted);
+    cli_defaults(opts, spec->options);
+    Seen seen = {0};
+    seen.count = every_option(spec->options, seen.accepted);
     int n = seen.count;
     const CliOption *const *accepted = seen.accepted;
 
@@ -399,9 +437,8 @@ static void print_entry(FILE *f, const char *left, const char *help)
 /* Prints the usage, the arguments and every option this part accepts, with its help. */
 void cli_print_help(const CliSpec *spec, FILE *f)
 {
-    int part = cli_part_number(spec->part);
     const CliOption *accepted[MAX_OPTIONS];
-    int n = part_options(part, accepted);
+    int n = every_option(spec->options, accepted);
     fprintf(f, "usage: raytra SCENE [OUTPUT]");
     for (int k = 0; k < n; k++)
         if (accepted[k]->argument != NULL)

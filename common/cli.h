@@ -1,4 +1,4 @@
-/* cli.h: the command line of every part, from one table of options. */
+/* cli.h: the command line of every part: the common options, and those each part declares. */
 #ifndef RAYTRA_CLI_H
 #define RAYTRA_CLI_H
 
@@ -18,7 +18,36 @@ typedef enum {
     OPTION_TEXT    /* any word; sets a const char * */
 } OptionKind;
 
-/* Everything the command line sets, for every part; a part reads the fields it knows. */
+/* excerpt: cli-option */
+/* One option. The table of common.c's options serves every part; a part adds the rows of
+ * its own (and of the earlier parts whose options it keeps) through CliSpec.options. An
+ * option that the course gives as a positional argument (1.4's MODE) names it: students'
+ * programs take it by position. */
+typedef struct {
+    const char *name; /* the long name, without dashes */
+    char letter;      /* the short name, or 0 */
+    OptionKind kind;
+    const char *metavar; /* the value's placeholder in --help: "N", "FILE" */
+    const char *help;
+    size_t field;         /* common options: offsetof(Options, ...); a part's: unused */
+    double fallback;      /* the value when not given (kinds INT and NUMBER) */
+    double min, max;      /* the values accepted (kinds INT and NUMBER) */
+    const char *argument; /* the course's positional argument, or NULL */
+} CliOption;
+/* end excerpt: cli-option */
+
+/* The value of one of a part's options; the option's kind says which member holds it. */
+typedef union {
+    bool flag;
+    int whole;
+    double number;
+    const char *text;
+} OptionValue;
+
+enum { CLI_MAX_PART_OPTIONS = 16 };
+
+/* Everything the command line sets: the options every part has, as fields, and the
+ * part's own, read by name (cli_int, cli_number, cli_flag, cli_text). */
 typedef struct {
     const char *scene;
     const char *output; /* NULL: the scene's name with .png, in the working directory */
@@ -35,47 +64,20 @@ typedef struct {
     const char *trace_pixel;      /* "X,Y": print that pixel's ray tree, write no image */
     const char *view;             /* a debug view's name: draw it instead of the light */
     const struct Explain *explain; /* set by app_main while tracing that pixel; else NULL */
-    /* From part 1.2 on. */
-    bool two_sided; /* shade back faces with their own material */
-    /* From part 1.3 on. */
-    int max_depth;     /* reflected (and refracted) rays a path may take */
-    double ray_offset; /* where secondary rays start, relative to the coordinates */
-    /* Parts 1.4 and 1.5. */
-    int mode; /* the course's box modes 0-3 */
-    /* From part 1.5 on. */
-    const char *fresnel_name; /* how glass reflects: "schlick" (NULL: the default) or "exact" */
-    double min_weight;        /* reflected and refracted rays that count less are not traced */
-    /* Part 1.6. */
-    int samples;               /* P: P x P primary rays per pixel */
-    int light_samples;         /* S: S x S shadow rays per area light at every hit */
-    int seed;                  /* picks the random numbers; the same seed, the same image */
-    const char *sampling_name; /* random, jittered or correlated (the default) */
+    int part_count;                /* the part's own options: */
+    const CliOption *part_rows[CLI_MAX_PART_OPTIONS];
+    OptionValue part_values[CLI_MAX_PART_OPTIONS];
 } Options;
 
-/* excerpt: cli-option */
-/* One option of one or more parts. Parts are numbered as the course numbers them,
- * 11 for part 1.1 to 16 for part 1.6. An option that the course gives as a positional
- * argument (1.4's MODE) names it: students' programs take it by position. */
-typedef struct {
-    const char *name; /* the long name, without dashes */
-    char letter;      /* the short name, or 0 */
-    OptionKind kind;
-    const char *metavar; /* the value's placeholder in --help: "N", "FILE" */
-    const char *help;
-    size_t field;             /* offsetof(Options, ...) */
-    double fallback;          /* the value when not given (kinds INT and NUMBER) */
-    double min, max;          /* the values accepted (kinds INT and NUMBER) */
-    int first_part, last_part; /* the parts that accept it; 0 and 0 for all */
-    const char *argument;     /* the course's positional argument, or NULL */
-} CliOption;
-/* end excerpt: cli-option */
+extern const CliOption cli_options[]; /* every part's; ended by an entry whose name is NULL */
 
-extern const CliOption cli_options[]; /* ended by an entry whose name is NULL */
-
-/* What one part's program is: its name ("1.3-shadows-mirror") and one sentence for --help. */
+/* What one part's program is: its name ("1.3-shadows-mirror"), one sentence for --help,
+ * and the tables of its own options, each ended by an entry whose name is NULL, the
+ * list ended by NULL (NULL: none). */
 typedef struct {
     const char *part;
     const char *purpose;
+    const CliOption *const *options;
 } CliSpec;
 
 typedef enum {
@@ -84,9 +86,14 @@ typedef enum {
     CLI_BAD_USAGE /* a message was printed: exit 2 */
 } CliResult;
 
-int cli_part_number(const char *part);
-bool cli_option_accepted(const CliOption *o, int part);
-const CliOption *cli_option_named(const char *name);
+const CliOption *cli_option_named(const CliOption *const *tables, const char *name);
+const CliOption *cli_option_lettered(const CliOption *const *tables, char letter);
+void cli_defaults(Options *opts, const CliOption *const *tables);
+OptionValue *cli_set(Options *opts, const char *name, OptionKind kind);
+bool cli_flag(const Options *opts, const char *name);
+int cli_int(const Options *opts, const char *name);
+double cli_number(const Options *opts, const char *name);
+const char *cli_text(const Options *opts, const char *name);
 CliResult cli_parse(const CliSpec *spec, int argc, char **argv, Options *opts);
 void cli_print_help(const CliSpec *spec, FILE *f);
 char *cli_default_output(const char *scene_path);

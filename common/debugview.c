@@ -5,20 +5,18 @@
 #include <stdlib.h>
 #include <string.h>
 
-/* Each view: its name, and the first part that has what it draws (11 for part 1.1), with
- * which parts draw it, and why, when that is a later one: part 1.1 has no lights to
- * count, the parts before 1.4 have no boxes. */
+/* Each view: its name, and what a part must have to draw it (none: every part with a
+ * probe draws it). */
 static const struct {
     const char *name;
-    int first_part;
-    const char *drawn_by;
+    const char *needs;
 } views[] = {
-    [VIEW_NORMAL] = {"normal", 11, ""},
-    [VIEW_DEPTH] = {"depth", 11, ""},
-    [VIEW_ID] = {"id", 11, ""},
-    [VIEW_MATERIAL] = {"material", 11, ""},
-    [VIEW_LIGHT_COUNT] = {"light-count", 12, " (parts 1.2 to 1.6, which have lights, draw it)"},
-    [VIEW_BOX_TESTS] = {"box-tests", 14, " (parts 1.4 to 1.6, which have boxes, draw it)"},
+    [VIEW_NORMAL] = {"normal", NULL},
+    [VIEW_DEPTH] = {"depth", NULL},
+    [VIEW_ID] = {"id", NULL},
+    [VIEW_MATERIAL] = {"material", NULL},
+    [VIEW_LIGHT_COUNT] = {"light-count", "lights to count"},
+    [VIEW_BOX_TESTS] = {"box-tests", "bounding boxes"},
 };
 
 /* Reads a view's name; false when there is no such view. */
@@ -32,13 +30,13 @@ bool debugview_from_name(const char *name, ViewKind *kind)
     return false;
 }
 
-/* Tells whether part (11 for part 1.1) has what view kind draws; when not, *why says
- * which parts do, for a message. */
-bool debugview_drawn_by(ViewKind kind, int part, const char **why)
+/* Tells whether a part that draws the views of the bits views (1 << VIEW_...) beyond
+ * those every part draws can draw view kind; when not, *why says what it lacks. */
+bool debugview_drawn_by(ViewKind kind, unsigned views_drawn, const char **why)
 {
-    if (part >= views[kind].first_part)
+    if (views[kind].needs == NULL || (views_drawn & (1u << kind)))
         return true;
-    *why = views[kind].drawn_by;
+    *why = views[kind].needs;
     return false;
 }
 

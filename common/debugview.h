@@ -34,8 +34,7 @@ typedef enum {
 } ViewKind;
 
 bool debugview_from_name(const char *name, ViewKind *kind);
-bool debugview_drawn_by(ViewKind kind, int part, const char **why);
-bool debugview_drawn_by(ViewKind kind, int part, const char **parts);
+bool debugview_drawn_by(ViewKind kind, unsigned views_drawn, const char **why);
 const char *debugview_names(void);
 Color debugview_color(ViewKind kind, const Probe *probe);
 void debugview_finish(ViewKind kind, Image *img, int light_count, FILE *messages);

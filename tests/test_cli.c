@@ -6,11 +6,20 @@
 #include <unistd.h>
 
 #include "cli.h"
+#include "part_options.h"
 #include "testing.h"
 
-static const CliSpec spec = {"1.4-bvh", "testing"};
-static const CliSpec first_part = {"1.1-spheres-red", "testing"};
-static const CliSpec sampling_part = {"1.6-monte-carlo", "testing"};
+static const CliSpec spec = {"1.4-bvh", "testing", NULL};
+static const CliSpec first_part = {"1.1-spheres-red", "testing", NULL};
+static const CliSpec sampling_part = {"1.6-monte-carlo", "testing", NULL};
+
+/* Returns part's spec with the tables of options the part declares. */
+static CliSpec with_options(const CliSpec *part)
+{
+    CliSpec s = *part;
+    s.options = part_options_of(part->part);
+    return s;
+}
 
 /* Parses the words of a command line (ended by NULL) into opts. */
 static CliResult parse_as(const CliSpec *part, Options *opts, va_list ap)
@@ -19,7 +28,8 @@ static CliResult parse_as(const CliSpec *part, Options *opts, va_list ap)
     int argc = 1;
     for (char *a; (a = va_arg(ap, char *)) != NULL;)
         argv[argc++] = a;
-    return cli_parse(part, argc, argv, opts);
+    CliSpec s = with_options(part);
+    return cli_parse(&s, argc, argv, opts);
 }
 
 /* Parses the words of a command line (ended by NULL) as part 1.1 does. */
@@ -86,10 +96,10 @@ START_TEST(scene_and_output)
     ck_assert(!o.quiet && !o.linear && !o.convention_given);
     ck_assert_int_eq(o.convention, CONVENTION_LECTURE);
     ck_assert_double_eq(o.scale, 1);
-    ck_assert_int_eq(o.max_depth, 20);
-    ck_assert_double_eq(o.ray_offset, 0x1p-32);
-    ck_assert_int_eq(o.mode, 3);
-    ck_assert(!o.two_sided && !o.strict);
+    ck_assert_int_eq(cli_int(&o, "max-depth"), 20);
+    ck_assert_double_eq(cli_number(&o, "ray-offset"), 0x1p-32);
+    ck_assert_int_eq(cli_int(&o, "mode"), 3);
+    ck_assert(!cli_flag(&o, "two-sided") && !o.strict);
 }
 END_TEST
 
@@ -116,11 +126,11 @@ START_TEST(part_options_and_arguments)
     Options o;
     ck_assert_int_eq(parse(&o, "--max-depth", "5", "--two-sided", "s.scn", "o.png", "2", NULL),
                      CLI_RUN);
-    ck_assert_int_eq(o.max_depth, 5);
-    ck_assert(o.two_sided);
-    ck_assert_int_eq(o.mode, 2);
+    ck_assert_int_eq(cli_int(&o, "max-depth"), 5);
+    ck_assert(cli_flag(&o, "two-sided"));
+    ck_assert_int_eq(cli_int(&o, "mode"), 2);
     ck_assert_int_eq(parse(&o, "s.scn", "--mode", "1", NULL), CLI_RUN);
-    ck_assert_int_eq(o.mode, 1);
+    ck_assert_int_eq(cli_int(&o, "mode"), 1);
     /* Part 1.1 knows neither the options nor the argument of later parts. */
     ck_assert_int_eq(parse_first(&o, "--max-depth", "5", "s.scn", NULL), CLI_BAD_USAGE);
     ck_assert_int_eq(parse_first(&o, "s.scn", "o.png", "2", NULL), CLI_BAD_USAGE);
@@ -128,9 +138,23 @@ START_TEST(part_options_and_arguments)
 }
 END_TEST
 
-START_TEST(the_table_is_consistent)
+/* Checks the options of one part: each with its help, its placeholder when it takes a
+ * value, a range that holds its fallback, and a name and a letter of its own. */
+static void check_part_options(const char *part)
 {
-    for (const CliOption *o = cli_options; o->name != NULL; o++) {
+    const CliOption *const *tables = part_options_of(part);
+    Options opts;
+    cli_defaults(&opts, tables);
+    const CliOption *every[64];
+    int n = 0;
+    for (const CliOption *o = cli_options; o->name != NULL; o++)
+        every[n++] = o;
+    for (int k = 0; k < opts.part_count; k++)
+        every[n++] = opts.part_rows[k];
+    every[n++] = cli_option_named(tables, "help");
+    every[n++] = cli_option_named(tables, "version");
+    for (int k = 0; k < n; k++) {
+        const CliOption *o = every[k];
         ck_assert_msg(o->help != NULL && o->help[0] != '\0', "%s has no help", o->name);
         ck_assert_msg((o->kind == OPTION_FLAG) == (o->metavar == NULL), "%s's metavar", o->name);
         if (o->kind == OPTION_INT || o->kind == OPTION_NUMBER)
@@ -138,14 +162,25 @@ START_TEST(the_table_is_consistent)
                                                (o->fallback >= o->min && o->fallback <= o->max)),
                           "%s's range", o->name);
         ck_assert_msg(o->argument == NULL || o->kind != OPTION_FLAG, "%s", o->name);
-        ck_assert_msg(o->last_part == 0 || o->last_part >= o->first_part, "%s", o->name);
-        ck_assert_ptr_eq(cli_option_named(o->name), o);
-        for (const CliOption *p = cli_options; p < o; p++)
-            ck_assert_msg(p->field != o->field && (o->letter == 0 || p->letter != o->letter),
-                          "%s and %s share a field or a letter", p->name, o->name);
+        ck_assert_ptr_eq(cli_option_named(tables, o->name), o);
+        for (int j = 0; j < k; j++)
+            ck_assert_msg(strcmp(every[j]->name, o->name) != 0 &&
+                              (o->letter == 0 || every[j]->letter != o->letter),
+                          "%s: %s and %s share a name or a letter", part, every[j]->name, o->name);
     }
-    ck_assert_int_eq(cli_part_number("1.4-bvh"), 14);
-    ck_assert_ptr_null(cli_option_named("nope"));
+    ck_assert_ptr_null(cli_option_named(tables, "nope"));
+}
+
+START_TEST(the_table_is_consistent)
+{
+    const char *parts[] = {"1.1-spheres-red", "1.2-shading", "1.3-shadows-mirror", "1.4-bvh",
+                           "1.5-refraction", "1.6-monte-carlo"};
+    for (size_t k = 0; k < sizeof parts / sizeof *parts; k++)
+        check_part_options(parts[k]);
+    /* Each part keeps the options of the parts before it, but 1.6 drops 1.4's MODE. */
+    ck_assert_ptr_nonnull(cli_option_named(part_options_of("1.5-refraction"), "mode"));
+    ck_assert_ptr_null(cli_option_named(part_options_of("1.6-monte-carlo"), "mode"));
+    ck_assert_ptr_null(cli_option_named(part_options_of("1.1-spheres-red"), "two-sided"));
 }
 END_TEST
 
@@ -243,7 +278,7 @@ START_TEST(a_negative_number_is_a_bad_value)
     /* Options around them are still options; a word like an option is still refused. */
     Options o;
     ck_assert_int_eq(parse(&o, "s.scn", "-q", "o.png", "2", "--linear", NULL), CLI_RUN);
-    ck_assert(o.quiet && o.linear && o.mode == 2);
+    ck_assert(o.quiet && o.linear && cli_int(&o, "mode") == 2);
     ck_assert_str_eq(o.output, "o.png");
     ck_assert_usage_message(&spec,
                             "raytra: unknown option or wrong use of '-x' (raytra --help lists "
@@ -267,7 +302,8 @@ START_TEST(help_lists_every_option)
     char *text;
     size_t size;
     FILE *f = open_memstream(&text, &size);
-    cli_print_help(&spec, f);
+    CliSpec with = with_options(&spec);
+    cli_print_help(&with, f);
     fclose(f);
     const char *expected[] = {"usage: raytra SCENE [OUTPUT] [MODE] [options]",
                               "--output FILE",

@@ -2,8 +2,16 @@
 # reference images (docs/grading.md). Included by tools/Makefile after common/build.mk.
 
 GRADE         := $(BUILD)/grade
+# The parts' tables of options, compiled here alone: grade passes a part's positional
+# arguments (1.4's MODE, 1.6's P and S) to students' programs, and only those.
+PART_OPTIONS  := shade_options.c trace_options.c accel_options.c refract_options.c \
+                 montecarlo_options.c
 GRADE_OBJECTS := $(addprefix $(BUILD)/,grade.o grade_part.o grade_submission.o grade_run.o grade_report.o \
-                   imgfile.o toolopt.o)
+                   imgfile.o toolopt.o part_options.o) $(PART_OPTIONS:%.c=$(BUILD)/%.o)
+PART_DIRS     := $(wildcard $(TOP)/milestones/*)
+vpath %_options.c $(PART_DIRS)
+$(BUILD)/part_options.o $(PART_OPTIONS:%.c=$(BUILD)/%.o) $(BUILD)/grade_part.o: \
+    INCLUDES += $(PART_DIRS:%=-I%)
 # The test's model of a correct submission runs part 1.1's program, built without the
 # sanitizers: their shadow memory does not fit under the grader's memory limit.
 GRADE_PART    := $(TOP)/milestones/1.1-spheres-red

@@ -10,6 +10,7 @@
 #include "cli.h"
 #include "image.h"
 #include "lex.h"
+#include "part_options.h"
 
 /* Finds the folder of part `part`, g->part, and its references: a path, or the folder of
  * milestones/ named so or whose name starts with "PART-" (the first in the order of their
@@ -35,35 +36,34 @@ bool part_find(Grading *g, const char *part)
     return true;
 }
 
-/* Returns raytra's option that `word` names (--name, --name=VALUE or -L), from the one
- * table of common/cli.c; NULL when none does. */
-static const CliOption *option_of(const char *word)
+/* Returns the option of raytra's part (its tables: part_options_of) that `word` names
+ * (--name, --name=VALUE or -L); NULL when none does. */
+static const CliOption *option_of(const CliOption *const *tables, const char *word)
 {
     if (word[1] == '-')
-        return cli_option_named(grade_format("%.*s", (int)strcspn(word + 2, "="), word + 2));
-    for (const CliOption *o = cli_options; o->name != NULL; o++)
-        if (o->letter != 0 && word[1] == o->letter && word[2] == '\0')
-            return o;
-    return NULL;
+        return cli_option_named(tables,
+                                grade_format("%.*s", (int)strcspn(word + 2, "="), word + 2));
+    return word[2] == '\0' ? cli_option_lettered(tables, word[1]) : NULL;
 }
 
 /* Makes r->argv, a student's command line, of the scene's path and the words of its
  * renders.txt line (words[0..n)) that students' programs get: the positional words, and
  * the value of an option the course gives as a positional argument (1.4's MODE); raytra's
  * own options are left out, with a note on `notes`. */
-static void make_argv(Render *r, char *scene_path, char **words, int n, int part, FILE *notes)
+static void make_argv(Render *r, char *scene_path, char **words, int n,
+                      const CliOption *const *tables, FILE *notes)
 {
     r->argv = grade_alloc(((size_t)n + RENDER_WORDS + 1) * sizeof *r->argv);
     r->argv[1] = scene_path;
     int kept = RENDER_WORDS;
     for (int k = 0; k < n; k++) {
-        const CliOption *o = words[k][0] == '-' ? option_of(words[k]) : NULL;
+        const CliOption *o = words[k][0] == '-' ? option_of(tables, words[k]) : NULL;
         const char *eq = strchr(words[k], '=');
         bool next = o != NULL && o->kind != OPTION_FLAG && eq == NULL && k + 1 < n;
         const char *value = eq != NULL ? eq + 1 : next ? words[k + 1] : NULL;
         if (words[k][0] != '-' || words[k][1] == '\0')
             r->argv[kept++] = grade_format("%s", words[k]);
-        else if (o != NULL && o->argument != NULL && value != NULL && cli_option_accepted(o, part))
+        else if (o != NULL && o->argument != NULL && value != NULL)
             r->argv[kept++] = grade_format("%s", value);
         else
             fprintf(notes, "grade: note: %s: raytra's option %s%s%s is not given to students' "
@@ -93,7 +93,7 @@ static bool add_render(Grading *g, char **words, int n, const char *where)
     r->name = grade_format("%.*s", stem, image);
     r->reference = grade_format("%s/%s", g->references, image);
     char *scene_path = words[1][0] == '/' ? r->scene : grade_format("%s/%s", g->top, words[1]);
-    make_argv(r, scene_path, words + 2, n - 2, cli_part_number(g->part), g->progress);
+    make_argv(r, scene_path, words + 2, n - 2, part_options_of(g->part), g->progress);
     if (grade_kind(scene_path) != S_IFREG)
         return grade_fail("%s: no scene file %s", where, scene_path);
     return grade_kind(r->reference) == S_IFREG ||

@@ -23,8 +23,8 @@ static Color shade_pixel(const void *ctx, int i, int j, RayStats *stats)
         return color(0, 0, 0);
     }
     world_explain_hit(explain, 1, &hit);
-    shade_explain_lights(explain, view->scene, &hit, r, view->opts->two_sided);
-    return shade_direct_radiance(view->scene, &hit, r, view->opts->two_sided);
+    shade_explain_lights(explain, view->scene, &hit, r, cli_flag(view->opts, "two-sided"));
+    return shade_direct_radiance(view->scene, &hit, r, cli_flag(view->opts, "two-sided"));
 }
 /* end excerpt: shade-pixel */
 
@@ -42,7 +42,7 @@ static void probe_pixel(const void *ctx, int i, int j, Probe *probe)
                      .t = hit.t,
                      .normal = n,
                      .surface = world_surface_id(scene, &hit),
-                     .kd = shade_material(scene, &hit, view->opts->two_sided)->diffuse};
+                     .kd = shade_material(scene, &hit, cli_flag(view->opts, "two-sided"))->diffuse};
     for (int k = 0; k < scene->light_count; k++) {
         Incident in = light_incident(&scene->lights[k], hit.point, false);
         probe->lights_visible += scene->lights[k].kind != LIGHT_AREA && vec3_dot(n, in.dir) > 0;
@@ -51,12 +51,14 @@ static void probe_pixel(const void *ctx, int i, int j, Probe *probe)
 
 static const Program program = {
     .cli = {.part = "1.2-shading",
+            .options = shade_part_options,
             .purpose = "the nearest surface of each pixel, lit by Blinn-Phong shading"},
     .features = FEATURE_SPHERES | FEATURE_PLANES | FEATURE_TRIANGLES | FEATURE_POINT_LIGHTS |
                 FEATURE_DIRECTIONAL_LIGHTS | FEATURE_SHADING,
     .setup = view_setup,
     .pixel = shade_pixel,
     .probe = probe_pixel,
+    .views = 1u << VIEW_LIGHT_COUNT,
     .cleanup = free,
 };
 

@@ -5,6 +5,7 @@
 
 #include <stdbool.h>
 
+#include "cli.h"
 #include "color.h"
 #include "explain.h"
 #include "hit.h"
@@ -18,6 +19,9 @@ typedef struct {
 } BlinnPhong;
 
 extern const Material shade_back_face_material;
+
+extern const CliOption shade_options[];
+extern const CliOption *const shade_part_options[];
 
 BlinnPhong shade_blinn_phong_terms(const Material *m, Vec3 n, Vec3 v, const Incident *in);
 Color shade_blinn_phong(const Material *m, Vec3 n, Vec3 v, const Incident *in);

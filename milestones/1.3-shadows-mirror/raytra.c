@@ -41,11 +41,13 @@ static void probe_pixel(const void *ctx, int i, int j, Probe *probe)
 
 static const Program program = {
     .cli = {.part = "1.3-shadows-mirror",
+            .options = trace_part_options,
             .purpose = "Blinn-Phong shading with shadows, ambient light and mirror reflection"},
     .features = TRACER_FEATURES,
     .setup = setup,
     .pixel = trace_pixel,
     .probe = probe_pixel,
+    .views = 1u << VIEW_LIGHT_COUNT,
     .cleanup = free,
 };
 

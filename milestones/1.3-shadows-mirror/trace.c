@@ -12,9 +12,9 @@ Tracer tracer_make(const Scene *scene, Surfaces surfaces, const Options *opts)
 {
     return (Tracer){.scene = scene,
                     .surfaces = surfaces,
-                    .max_depth = opts->max_depth,
-                    .two_sided = opts->two_sided,
-                    .offset = opts->ray_offset,
+                    .max_depth = cli_int(opts, "max-depth"),
+                    .two_sided = cli_flag(opts, "two-sided"),
+                    .offset = cli_number(opts, "ray-offset"),
                     .explain = opts->explain};
 }
 

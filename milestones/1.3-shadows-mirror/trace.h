@@ -73,6 +73,9 @@ struct Tracer {
 };
 /* end excerpt: tracer-struct */
 
+extern const CliOption trace_options[];
+extern const CliOption *const trace_part_options[];
+
 Tracer tracer_make(const Scene *scene, Surfaces surfaces, const Options *opts);
 Color trace_radiance(const Tracer *tr, Ray r, int depth, Path *path);
 bool tracer_hit(const Tracer *tr, Ray r, int depth, Hit *hit);

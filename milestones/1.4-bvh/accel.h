@@ -4,6 +4,7 @@
 
 #include <stdbool.h>
 
+#include "cli.h"
 #include "box.h"
 #include "bvh.h"
 #include "scene.h"
@@ -27,6 +28,9 @@ typedef struct {
     Bvh bvh;       /* modes 2 and 3 */
     double build_seconds;
 } Accel;
+
+extern const CliOption accel_options[];
+extern const CliOption *const accel_part_options[];
 
 bool accel_build(Accel *accel, const Scene *scene, AccelMode mode);
 Surfaces accel_surfaces(const Accel *accel);

@@ -23,7 +23,7 @@ static bool setup(const Scene *scene, const Options *opts, void **ctx)
     Part14 *part = malloc(sizeof *part);
     if (part == NULL)
         return false;
-    if (!accel_build(&part->accel, scene, (AccelMode)opts->mode)) {
+    if (!accel_build(&part->accel, scene, (AccelMode)cli_int(opts, "mode"))) {
         free(part);
         return false;
     }
@@ -78,11 +78,13 @@ static void cleanup(void *ctx)
 
 static const Program program = {
     .cli = {.part = "1.4-bvh",
+            .options = accel_part_options,
             .purpose = "part 1.3's ray tracer, accelerated by bounding boxes and a BVH"},
     .features = TRACER_FEATURES,
     .setup = setup,
     .pixel = trace_pixel,
     .probe = probe_pixel,
+    .views = 1u << VIEW_LIGHT_COUNT | 1u << VIEW_BOX_TESTS,
     .report = report,
     .cleanup = cleanup,
 };

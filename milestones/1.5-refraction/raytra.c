@@ -20,14 +20,15 @@ typedef struct {
 static bool setup(const Scene *scene, const Options *opts, void **ctx)
 {
     FresnelModel fresnel = FRESNEL_SCHLICK;
-    if (opts->fresnel_name != NULL && !dielectric_fresnel_from_name(opts->fresnel_name, &fresnel)) {
-        fprintf(stderr, "raytra: --fresnel takes schlick or exact, got '%s'\n", opts->fresnel_name);
+    const char *fresnel_name = cli_text(opts, "fresnel");
+    if (fresnel_name != NULL && !dielectric_fresnel_from_name(fresnel_name, &fresnel)) {
+        fprintf(stderr, "raytra: --fresnel takes schlick or exact, got '%s'\n", fresnel_name);
         return false;
     }
     Part15 *part = malloc(sizeof *part);
     if (part == NULL)
         return false;
-    if (!accel_build(&part->accel, scene, (AccelMode)opts->mode)) {
+    if (!accel_build(&part->accel, scene, (AccelMode)cli_int(opts, "mode"))) {
         free(part);
         return false;
     }
@@ -68,12 +69,14 @@ static void cleanup(void *ctx)
 
 static const Program program = {
     .cli = {.part = "1.5-refraction",
+            .options = refract_part_options,
             .purpose = "recursive ray tracing with glass: Fresnel reflection, refraction and "
                        "absorption"},
     .features = TRACER_FEATURES | FEATURE_REFRACTION,
     .setup = setup,
     .pixel = refract_pixel,
     .probe = probe_pixel,
+    .views = 1u << VIEW_LIGHT_COUNT | 1u << VIEW_BOX_TESTS,
     .cleanup = cleanup,
 };
 

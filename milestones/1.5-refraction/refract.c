@@ -16,7 +16,7 @@ void refract_init(Refractor *rf, const Scene *scene, Surfaces surfaces, FresnelM
 {
     *rf = (Refractor){.tracer = tracer_make(scene, surfaces, opts),
                       .fresnel = fresnel,
-                      .min_weight = opts->min_weight};
+                      .min_weight = cli_number(opts, "min-weight")};
     rf->tracer.hooks.radiance = refract_radiance;
     rf->tracer.hooks.radiance_ctx = rf;
     rf->tracer.hooks.through = transmit_light;

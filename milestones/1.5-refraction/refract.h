@@ -27,6 +27,9 @@ static inline bool refract_is_glass(const Material *m)
     return m->ior > 0;
 }
 
+extern const CliOption refract_options[];
+extern const CliOption *const refract_part_options[];
+
 void refract_init(Refractor *rf, const Scene *scene, Surfaces surfaces, FresnelModel fresnel,
                   const Options *opts);
 Hit refract_glass_hit(const Scene *scene, const Hit *hit);

@@ -12,12 +12,13 @@
 bool montecarlo_init(MonteCarlo *mc, const Scene *scene, Surfaces surfaces, const Options *opts)
 {
     *mc = (MonteCarlo){.camera = camera_make(&scene->camera),
-                       .pixel_side = opts->samples,
-                       .light_side = opts->light_samples,
-                       .seed = (uint64_t)opts->seed};
-    if (!strata_sampling_from_name(opts->sampling_name, &mc->sampling)) {
+                       .pixel_side = cli_int(opts, "samples"),
+                       .light_side = cli_int(opts, "light-samples"),
+                       .seed = (uint64_t)cli_int(opts, "seed")};
+    const char *sampling_name = cli_text(opts, "sampling");
+    if (!strata_sampling_from_name(sampling_name, &mc->sampling)) {
         fprintf(stderr, "raytra: unknown sampling '%s' (random, jittered or correlated)\n",
-                opts->sampling_name);
+                sampling_name);
         return false;
     }
     if (mc->pixel_side < 1 || mc->pixel_side > MONTECARLO_MAX_SIDE || mc->light_side < 1 ||
@@ -26,8 +27,8 @@ bool montecarlo_init(MonteCarlo *mc, const Scene *scene, Surfaces surfaces, cons
         return false;
     }
     FresnelModel fresnel = FRESNEL_SCHLICK; /* --fresnel is checked in setup */
-    if (opts->fresnel_name != NULL)
-        dielectric_fresnel_from_name(opts->fresnel_name, &fresnel);
+    if (cli_text(opts, "fresnel") != NULL)
+        dielectric_fresnel_from_name(cli_text(opts, "fresnel"), &fresnel);
     refract_init(&mc->below, scene, surfaces, fresnel, opts);
     mc->below.tracer.hooks.light = montecarlo_light;
     mc->below.tracer.hooks.light_ctx = mc;

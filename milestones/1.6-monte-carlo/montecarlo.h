@@ -38,6 +38,9 @@ typedef struct {
 } MonteCarlo;
 /* end excerpt: montecarlo-struct */
 
+extern const CliOption montecarlo_options[];
+extern const CliOption *const montecarlo_part_options[];
+
 bool montecarlo_init(MonteCarlo *mc, const Scene *scene, Surfaces surfaces, const Options *opts);
 void montecarlo_light_point(const MonteCarlo *mc, const Sample *sample, int q, double *ru,
                             double *rv);

@@ -19,8 +19,9 @@ static bool setup(const Scene *scene, const Options *opts, void **ctx)
 {
     Part16 *part = malloc(sizeof *part);
     FresnelModel fresnel;
-    if (opts->fresnel_name != NULL && !dielectric_fresnel_from_name(opts->fresnel_name, &fresnel)) {
-        fprintf(stderr, "raytra: --fresnel takes schlick or exact, got '%s'\n", opts->fresnel_name);
+    const char *fresnel_name = cli_text(opts, "fresnel");
+    if (fresnel_name != NULL && !dielectric_fresnel_from_name(fresnel_name, &fresnel)) {
+        fprintf(stderr, "raytra: --fresnel takes schlick or exact, got '%s'\n", fresnel_name);
         free(part);
         return false;
     }
@@ -69,13 +70,16 @@ static void cleanup(void *ctx)
 
 static const Program program = {
     .cli = {.part = "1.6-monte-carlo",
+            .options = montecarlo_part_options,
             .purpose = "Monte Carlo ray tracing: P x P jittered rays per pixel, S x S shadow "
                        "rays per area light"},
     .features = TRACER_FEATURES | FEATURE_AREA_LIGHTS | FEATURE_REFRACTION,
     .setup = setup,
     .pixel = sample_pixel,
     .sample = one_sample,
+    .samples_option = "samples",
     .probe = probe_pixel,
+    .views = 1u << VIEW_LIGHT_COUNT | 1u << VIEW_BOX_TESTS,
     .cleanup = cleanup,
 };
 

@@ -13,7 +13,10 @@
  * to the depth limit (--min-weight 0). */
 static void refractor(Refractor *rf, const Scene *scene, int max_depth, FresnelModel fresnel)
 {
-    Options opts = {.max_depth = max_depth, .ray_offset = SECONDARY_OFFSET, .min_weight = 0};
+    Options opts;
+    cli_defaults(&opts, refract_part_options);
+    cli_set(&opts, "max-depth", OPTION_INT)->whole = max_depth;
+    cli_set(&opts, "min-weight", OPTION_NUMBER)->number = 0;
     refract_init(rf, scene, surfaces_brute_force(scene), fresnel, &opts);
 }
 

@@ -69,8 +69,8 @@ static void setup_make(Setup *s, bool occluded)
                        .material_count = 1, .lights = &s->light, .light_count = 1,
                        .vertices = s->corners, .vertex_count = 3,
                        .triangles = &s->occluder, .triangle_count = occluded ? 1 : 0};
-    Options opts = {.samples = 1, .light_samples = 1, .max_depth = 20,
-                    .ray_offset = SECONDARY_OFFSET};
+    Options opts; /* P = S = 1, --max-depth 20, the default ray offset */
+    cli_defaults(&opts, montecarlo_part_options);
     ck_assert(montecarlo_init(&s->mc, &s->scene, surfaces_brute_force(&s->scene), &opts));
 }
 
