@@ -514,6 +514,10 @@ checks=$((checks + 1))
 status=$?
 [ "$status" -eq 1 ] || fail "grade --self of a failing program: exit status $status, expected 1"
 check "--self: the failure and its heat map" grep -qx ' *heat map: .*/self-out/work/1-self/spheres-three.heat.png' stdout.txt
+"$grade" --self -q --out self-out 1.1 class/crashing >stdout.txt 2>stderr.txt
+self=$tmp/self-out/work/1-self
+check "--self: a crash's command line" grep -qxF \
+    "             command: cd $self/run && $self/build/raytra $top/scenes/demo.scn $self/images/demo.png" stdout.txt
 
 # The command line, and troubles found before any grading.
 refuse() {

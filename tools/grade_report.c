@@ -353,9 +353,10 @@ bool report_write(const Grading *g)
     return true;
 }
 
-/* Prints, for a student checking their own work, each scene's verdict and reason, and the
- * heat map to look at when it did not pass; returns the exit status: 0 when every scene
- * passes, 1 otherwise. */
+/* Prints, for a student checking their own work, each scene's verdict and reason, the heat
+ * map to look at when it did not pass, and the command line to run again when the program
+ * failed (crashed, timed out...); returns the exit status: 0 when every scene passes, 1
+ * otherwise. */
 int report_print_self(const Grading *g)
 {
     const Submission *s = &g->subs[0];
@@ -365,6 +366,8 @@ int report_print_self(const Grading *g)
         printf("%-12s %s: %s\n", verdict_info[res->verdict].name, g->renders[k].name, res->message);
         if (res->verdict != VERDICT_PASS && access(heat, F_OK) == 0)
             printf("%12s heat map: %s\n", "", heat);
+        if (res->command != NULL && verdict_info[res->verdict].tally == TALLY_ERROR)
+            printf("%12s command: %s\n", "", res->command);
     }
     printf("%d of %d scenes pass; the report: %s/report.html\n", s->tally[TALLY_PASS],
            g->render_count, g->out);
