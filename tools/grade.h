@@ -106,7 +106,8 @@ typedef struct {
 
 /* How a child ended: status is the exit status (RUN_EXITED), the signal (RUN_KILLED) or the
  * errno (RUN_NOT_RUN: fork or pipe failed); ok when it exited with status 0; output what it
- * printed, its head and tail when it printed more than the grader keeps (never NULL). */
+ * printed, its head and tail when it printed more than the grader keeps (never NULL; it lasts
+ * until the next run_program). */
 typedef enum { RUN_EXITED, RUN_KILLED, RUN_TIMED_OUT, RUN_NOT_RUN, RUN_INTERRUPTED } RunEnd;
 
 typedef struct {

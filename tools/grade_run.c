@@ -187,25 +187,30 @@ static int capture_read(Capture *c, int fd)
 }
 
 /* Returns what the capture kept as one string: the head, a line saying how many bytes were
- * cut when some were, and the tail; a NUL byte the program printed becomes '?'. */
+ * cut when some were, and the tail; a NUL byte the program printed becomes '?'. The string
+ * lasts until the next call, so that a class of programs that print much takes no more
+ * memory than one. */
 static char *capture_text(const Capture *c)
 {
+    static char text[2 * KEEP_BYTES + 256];
     size_t rest = (size_t)(c->total - c->head_len); /* the bytes after the head */
     size_t tail = rest < KEEP_BYTES ? rest : KEEP_BYTES;
     unsigned long long cut = c->total - c->head_len - tail;
-    char *note = cut == 0 ? ""
-                          : grade_format("\n[grade: %llu bytes cut here: of the %llu bytes "
-                                         "printed, the first and the last "
-                                         "%d KiB are kept]\n",
-                                         cut, c->total, KEEP_BYTES >> 10);
+    char note[200] = "";
+    if (cut > 0)
+        snprintf(note, sizeof note,
+                 "\n[grade: %llu bytes cut here: of the %llu bytes printed, "
+                 "the first and the last %d KiB are kept]\n",
+                 cut, c->total, KEEP_BYTES >> 10);
     size_t len = c->head_len + strlen(note) + tail;
-    char *text = grade_alloc(len + 1), *t = text;
+    char *t = text;
     memcpy(t, c->head, c->head_len);
     t = stpcpy(t + c->head_len, note);
     for (size_t k = 0, from = (size_t)((c->total - tail - c->head_len) % KEEP_BYTES); k < tail; k++)
         *t++ = c->tail[(from + k) % KEEP_BYTES];
     for (size_t k = 0; k < len; k++)
         text[k] = text[k] == '\0' ? '?' : text[k];
+    text[len] = '\0';
     return text;
 }
 
