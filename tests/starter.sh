@@ -48,6 +48,8 @@ dead_links() {
 # benchmark, nor Chromium, for the grader's report).
 packages=$(sed -n 's/.*missing="\$missing \([a-z0-9-]*\)".*/\1/p' "$top/tools/deps.sh" |
     grep -v -e embree -e chromium)
+part=tools/deps.sh
+[ "$(echo "$packages" | wc -w)" -ge 4 ] || fail "cannot read the packages it installs: '$packages'"
 
 part="make starter"
 two="$1 $tmp/wrong"
