@@ -128,11 +128,14 @@ check-layout:
 check-exercises:
 	@RAYTRA_PROGRAM=$(if $(filter 1,$(SANITIZE)),$(BUILD)/raytra,raytra) scenes/exercises/check.sh
 
-# A part's starter for students: STARTER_OPTIONS may say --stub-earlier or --solution.
+# A part's starter for students: STARTER_OPTIONS may say --stub-earlier, --solution or
+# --docs-url URL. PART is one word (PART="1.2 1.3" would make 1.3 the DEST); DEST is quoted.
 starter:
 	@if [ -z "$(PART)" ]; then echo "usage: make starter PART=1.2 [DEST=dir]" >&2; exit 2; fi
+	@if [ $(words $(PART)) -ne 1 ]; then echo "make starter: PART is one part (PART=1.2), got" \
+	    "'$(PART)': make one starter at a time" >&2; exit 2; fi
 	$(DEPS_STEP)
-	@tools/starter.sh $(STARTER_OPTIONS) $(PART) $(DEST)
+	@tools/starter.sh $(STARTER_OPTIONS) '$(PART)' $(if $(DEST),'$(subst ','\'',$(DEST))')
 
 # The starter of the latest part with every earlier part stubbed too: each marked function
 # of the project in one build, failing its tests as a stub and passing them when solved.

@@ -129,7 +129,7 @@ EOF
 script_submission hanging <<EOF
 #!/bin/sh
 case \$1 in
-*demo*) sleep $nap1 & exec sleep $nap1 ;;
+*demo*) echo "hanging on purpose"; sleep $nap1 & exec sleep $nap1 ;;
 *spheres-three*) setsid sleep $nap2 >/dev/null 2>&1 & ;;
 esac
 exec "$raytra" "\$@"
@@ -152,7 +152,27 @@ EOF
 echo "precious" >precious.txt
 c_submission crashing <<'EOF'
 #include <signal.h>
-int main(void) { raise(SIGSEGV); return 0; }
+#include <stdio.h>
+int main(void)
+{
+    fprintf(stderr, "about to crash\n");
+    raise(SIGSEGV);
+    return 0;
+}
+EOF
+# One that prints 3 MB before it renders, and prints for ever on the demo scene; one that
+# copies the reference image rather than render it.
+script_submission chatty <<EOF
+#!/bin/sh
+case \$1 in *demo*) exec yes "chatty for ever" ;; esac
+echo "FIRST LINE"
+yes "chatty" | head -c 3000000
+printf '\nLAST LINE\n'
+exec "$raytra" "\$@"
+EOF
+script_submission copier <<EOF
+#!/bin/sh
+exec cp "$refs/\$(basename "\$2")" "\$2"
 EOF
 c_submission greedy <<'EOF'
 #include <stdio.h>
@@ -190,6 +210,10 @@ status=$?
         case $s in spheres-three) echo "bomb,$s,WRONG SIZE" ;; *) echo "bomb,$s,PASS" ;; esac
     done
     for s in $scenes; do echo "build-fails,$s,BUILD FAILED"; done
+    for s in $scenes; do
+        case $s in demo) echo "chatty,$s,TIMEOUT" ;; *) echo "chatty,$s,PASS" ;; esac
+    done
+    for s in $scenes; do echo "copier,$s,PASS"; done
     for s in $scenes; do echo "copycat,$s,LINK"; done
     for s in $scenes; do echo "correct,$s,PASS"; done
     for s in $scenes; do echo "correct-program,$s,PASS"; done
@@ -214,9 +238,7 @@ status=$?
         case $s in demo) echo "missing-one,$s,MISSING" ;; *) echo "missing-one,$s,PASS" ;; esac
     done
     for s in $scenes; do echo "pfm,$s,PASS"; done
-    for s in $scenes; do
-        case $s in spheres-behind-camera) echo "planter,$s,ERROR" ;; *) echo "planter,$s,PASS" ;; esac
-    done
+    for s in $scenes; do echo "planter,$s,PASS"; done
     for s in $scenes; do
         case $s in demo) echo "quitter,$s,ERROR" ;; *) echo "quitter,$s,MISSING" ;; esac
     done
@@ -234,7 +256,7 @@ csv="out dir/grades.csv"
 grep -v '^"' "$csv" | cut -d, -f1-3 >verdicts.txt
 check "the verdicts differ from those expected" cmp -s expected.txt verdicts.txt ||
     diff expected.txt verdicts.txt | sed 's/^/    | /'
-check "the CSV's header" grep -qx 'submission,scene,verdict,max_diff_r,max_diff_g,max_diff_b,mean_abs_diff,rmse,psnr_db,differing_pixels,differing_fraction,bbox,message,seconds' "$csv"
+check "the CSV's header" grep -qx 'submission,scene,verdict,max_diff_r,max_diff_g,max_diff_b,mean_abs_diff,rmse,psnr_db,differing_pixels,differing_fraction,bbox,message,seconds,flag' "$csv"
 check "the strange name's rows, quoted" \
     test "$(grep -c "^\"o'brien, \"\"jo\"\" <b>&amp;\",[a-z-]*,PASS," "$csv")" -eq 5
 
@@ -263,8 +285,16 @@ has 'missing-one,demo,MISSING,,,,,,,,,,"no demo.png, .pfm or .exr in the submiss
 has 'build-fails,demo,BUILD FAILED,,,,,,,,,,make failed (exit status 2),'
 # The moved sphere's figures, in their form: their last digits may change with the compiler.
 number='[0-9.e-]+'
-check "the figures of a failed image" grep -qE "^slightly-wrong,spheres-three,FAIL,1,0,0,$number,$number,$number,[0-9]+,$number,\"\\([0-9]+,[0-9]+\\)-\\([0-9]+,[0-9]+\\)\",\"$number% of the pixels differ by more than 2/255, more than the 0.1% allowed\",\$" "$csv"
+check "the figures of a failed image" grep -qE "^slightly-wrong,spheres-three,FAIL,1,0,0,$number,$number,$number,[0-9]+,$number,\"\\([0-9]+,[0-9]+\\)-\\([0-9]+,[0-9]+\\)\",\"$number% of the pixels differ by more than 2/255, more than the 0.1% allowed\",,\$" "$csv"
 has 'correct,demo,PASS,0,0,0,0,0,inf,0,0,,identical to the reference,'
+# A byte-for-byte copy of a reference file is flagged, handed in or written; an image equal
+# in its pixels but written otherwise (a PFM) is not.
+has 'correct,demo,PASS,0,0,0,0,0,inf,0,0,,identical to the reference,,copy'
+check "a program's copy of a reference flagged" \
+    test "$(grep -c '^copier,[a-z-]*,PASS,.*,identical to the reference,[0-9.]*,copy$' "$csv")" -eq 5
+check "an equal image written otherwise flagged" test -z "$(grep '^pfm,.*,copy$' "$csv")"
+check "a FAIL flagged" test -z "$(grep ',FAIL,.*,copy$' "$csv")"
+check "the copies flagged in the report" grep -q 'class="badge flag"[^>]*>COPY<' "out dir/report.html"
 
 # The report: there, whole, self-contained, escaped.
 html="out dir/report.html"
@@ -274,20 +304,57 @@ check "a link or source outside the page" \
     test -z "$(grep -o '\(src\|href\)="[^"]*' "$html" | grep -v '="\(data:image/png;base64,\|#\)')"
 check "a url() outside the page" \
     test -z "$(grep -o 'url([^)]\{0,26\}' "$html" | grep -v '^url(data:image/png;base64,')"
-check "a section a submission" test "$(grep -c '<section id="s[0-9]*">' "$html")" -eq 22
+check "a section a submission" test "$(grep -c '<section id="s[0-9]*">' "$html")" -eq 24
 check "the strange name escaped" grep -qF "o&#39;brien, &quot;jo&quot; &lt;b&gt;&amp;amp;" "$html"
 check "the strange name unescaped" test "$(grep -cF '<b>&amp;' "$html")" -eq 0
-check "a picture of each image" test "$(grep -o '\(alt\|aria-label\)="submitted image"' "$html" | wc -l)" -eq 75
+check "a picture of each image" test "$(grep -o '\(alt\|aria-label\)="submitted image"' "$html" | wc -l)" -eq 85
 check "the crash's output" grep -q 'Segmentation fault' "$html"
+
+# A crash and a timeout: the command line that was run, in its folder, shell-quoted, and
+# the last lines of the output, in the report and at the top of the scene's log; the
+# command, run again from the log, crashes again.
+work="$tmp/out dir/work"
+for case in crashing:CRASHED:'about to crash' hanging:TIMEOUT:'hanging on purpose'; do
+    who=${case%%:*} said=${case##*:} verdict=${case#*:}
+    verdict=${verdict%%:*}
+    dir=$(ls -d "$work"/*-"$who")
+    expected="cd '$dir/run' && '$dir/build/raytra' $top/scenes/demo.scn '$dir/images/demo.png'"
+    check "$who: the command line at the top of its log" test "$(head -n 1 "$dir/demo.log")" = "\$ $expected"
+    check "$who: its output in its log" grep -qx "$said" "$dir/demo.log"
+    # The submission's section, then its scene demo.
+    awk -v who="$who" 'index($0, "<h2><span class=\"name\">" who "</span>") { p = 1 }
+                       p && index($0, "scene-name\">demo<") { q = 1 }
+                       q { print } q && /<\/details>/ { exit }' "$html" >scene.html
+    check "$who: $verdict in the report" grep -q ">$verdict<" scene.html
+    check "$who: the command line in the report" grep -qF \
+        "Command <code>$(printf '%s' "$expected" | sed "s/&/\&amp;/g; s/'/\&#39;/g")</code>" scene.html
+    check "$who: its last lines in the report" grep -qF "$said" scene.html
+done
+crash=$(ls -d "$work"/*-crashing)
+(sh -c "$(head -n 1 "$crash/demo.log" | cut -c 3-)") >/dev/null 2>&1
+check "the crash's command line crashes again" test $? -eq 139
+
+# A program that prints without end: its log keeps the first and the last 64 KiB, with a
+# line saying how much was cut, however much it printed.
+chatty=$(ls -d "$work"/*-chatty)
+check "a long output kept bounded" test "$(wc -c <"$chatty/spheres-three.log")" -lt 140000
+check "a long output's head kept" grep -qx 'FIRST LINE' "$chatty/spheres-three.log"
+check "a long output's tail kept" grep -qx 'LAST LINE' "$chatty/spheres-three.log"
+check "a long output's cut said" grep -q '^\[grade: [0-9]* bytes cut here: of the 3000[0-9]* bytes printed' "$chatty/spheres-three.log"
+check "an endless output kept bounded" test "$(wc -c <"$chatty/demo.log")" -lt 140000
+check "the logs' total" test "$(du -sk "$chatty" | cut -f1)" -lt 2000
 check "a temporary left in the output folder" \
-    test -z "$(find "out dir" -mindepth 1 -maxdepth 1 ! -name report.html ! -name grades.csv ! -name work)"
+    test -z "$(find "out dir" -mindepth 1 -maxdepth 1 ! -name report.html ! -name grades.csv ! -name work ! -name .grade-lock)"
 
 # The grader leaves no process behind and does not touch the students' folders.
 check_no_leftovers "after grading"
 check "a link a program planted at a log's path was followed" test "$(cat precious.txt)" = precious
+planter=$(ls -d "$work"/*-planter)
+check "a link planted at a log's path replaced by the log" \
+    test -f "$planter/spheres-behind-camera.log" -a ! -L "$planter/spheres-behind-camera.log"
 check "a student's folder was built in" test ! -e class/crashing/raytra
 check "progress lines" grep -q '^grading hanging (program): building... 5 scenes: 4 pass, 1 timeout$' stderr.txt
-check "no progress line for a file or a hidden folder" test "$(grep -c '^grading ' stderr.txt)" -eq 22
+check "no progress line for a file or a hidden folder" test "$(grep -c '^grading ' stderr.txt)" -eq 24
 
 # Tolerances from the command line reach imgdiff; a second run replaces the first.
 mkdir small
@@ -309,12 +376,71 @@ while [ -z "$(leftovers)" ] && [ $tries -lt 100 ]; do
     sleep 0.1
     tries=$((tries + 1))
 done
+# While it runs, a second run on the same output folder refuses, and leaves it alone.
+checks=$((checks + 1))
+"$grade" -q --out interrupted 1.1 small >stdout.txt 2>second.txt
+second=$?
+[ "$second" -eq 2 ] || fail "a second run on a locked --out: exit status $second, expected 2"
+check "a second run on a locked --out says why" \
+    grep -qF "grade: interrupted is in use: another grade is writing into it" second.txt
+check "a second run left the first one's work" test -d interrupted/work/01-hanging/run
 kill -INT $pid
 wait $pid
 status=$?
 check "interrupted: exit status $status, expected 130" test "$status" -eq 130
 check "interrupted: a report" test ! -e interrupted/report.html
 check_no_leftovers "interrupted"
+
+# A program that makes a classmate's work folder before grade does, or plants a link there:
+# the classmate is graded all the same, in a folder made fresh, the planted one moved aside.
+mkdir -p trespass elsewhere
+script_submission a-trespasser <<EOF
+#!/bin/sh
+[ -e ../../02-b-victim ] || { mkdir -p ../../02-b-victim/run && ln -s "$tmp/elsewhere" ../../02-b-victim/images; }
+[ -L ../../03-c-victim ] || ln -s "$tmp/elsewhere" ../../03-c-victim
+exec "$raytra" "\$@"
+EOF
+script_submission b-victim <<EOF
+#!/bin/sh
+exec "$raytra" "\$@"
+EOF
+cp -R class/b-victim class/c-victim
+mv class/a-trespasser class/b-victim class/c-victim trespass/
+checks=$((checks + 1))
+"$grade" --out trespassed 1.1 trespass >stdout.txt 2>stderr.txt || fail "grade of a trespassed class failed"
+check "a classmate whose work folder was made before graded" \
+    test "$(grep -c '^[bc]-victim,[a-z-]*,PASS,' trespassed/grades.csv)" -eq 10
+check "a work folder made before moved aside, said" \
+    grep -q "^grade: note: .*/work/02-b-victim was there before grade made it" stderr.txt
+check "a link planted at a work folder moved aside, not followed" \
+    test -L trespassed/work/.moved-1-03-c-victim -a -z "$(ls elsewhere)"
+
+# The output folder: not the submissions folder, nor inside a submission, which is copied
+# to be built (with --self, the folder graded); an output folder of grade's in a class
+# folder, this run's or another's, is not a submission.
+refuse_out() {
+    checks=$((checks + 1))
+    "$grade" "$@" >stdout.txt 2>stderr.txt
+    status=$?
+    [ "$status" -eq 2 ] || fail "grade $*: exit status $status, expected 2"
+}
+refuse_out -q --out small 1.1 small
+check "--out the submissions folder refused" grep -qF \
+    "grade: the output folder small is the submissions folder: its work folder would be graded" stderr.txt
+refuse_out -q --out small/slightly-wrong/o 1.1 small
+check "--out inside a submission refused" grep -qF \
+    "grade: the output folder small/slightly-wrong/o is inside the submission slightly-wrong" stderr.txt
+check "a refused --out not made" test ! -e small/slightly-wrong/o
+(cd trespass/b-victim && "$grade" --self -q 1.1 . >../../stdout.txt 2>../../stderr.txt)
+check "--self: the default --out inside the folder refused" grep -qF \
+    "grade: the output folder grading-1.1-spheres-red is inside the submission ." stderr.txt
+"$grade" -q --out small/earlier 1.1 small >stdout.txt 2>stderr.txt
+"$grade" --out small/later 1.1 small >stdout.txt 2>stderr.txt
+check "an output folder in the class not graded" \
+    test "$(cut -d, -f1 small/later/grades.csv | sort -u | tr '\n' ' ')" = "slightly-wrong submission "
+check "another run's output folder named" \
+    grep -qx "grade: note: small/earlier is an output folder of grade: not graded" stderr.txt
+rm -rf small/earlier small/later
 
 # A part given by its folder; students' programs get the positional words of renders.txt
 # and the value of an option the course gives as a positional argument (1.4's MODE, for a
@@ -388,6 +514,10 @@ checks=$((checks + 1))
 status=$?
 [ "$status" -eq 1 ] || fail "grade --self of a failing program: exit status $status, expected 1"
 check "--self: the failure and its heat map" grep -qx ' *heat map: .*/self-out/work/1-self/spheres-three.heat.png' stdout.txt
+"$grade" --self -q --out self-out 1.1 class/crashing >stdout.txt 2>stderr.txt
+self=$tmp/self-out/work/1-self
+check "--self: a crash's command line" grep -qxF \
+    "             command: cd $self/run && $self/build/raytra $top/scenes/demo.scn $self/images/demo.png" stdout.txt
 
 # The command line, and troubles found before any grading.
 refuse() {

@@ -11,7 +11,11 @@
 #     test program and not one reference image passes with the stubs;
 #   - with the solution's sources copied in, `make check WERROR=1` passes, and
 #     --trace-pixel prints what the repository's part prints, line for line;
-#   - nothing it built refers to the repository: the starter stands alone.
+#   - nothing it built refers to the repository: the starter stands alone;
+#   - it can be handed out: its folders and files have the modes the umask gives (readable
+#     by all with umask 022), every link of its READMEs leads to a file in it, and its
+#     README names every package tools/deps.sh installs to build and test.
+# And that `make starter` refuses a PART of two words, which would make the second DEST.
 set -u
 top=$(cd "$(dirname "$0")/.." && pwd) || exit 2
 options=
@@ -45,16 +49,63 @@ same_trace() {
     echo "ok   solved: traces the pixels of three scenes as the part does"
 }
 
+# Prints each relative link of the Markdown files in folder $1 that leads to no file
+# within it, as FILE: TARGET.
+dead_links() {
+    root=$(cd "$1" && pwd -P)
+    find "$root" -name '*.md' | while read -r md; do
+        grep -o '\]([^)]*)' "$md" | sed 's/^](//; s/)$//; s/#.*//' | while read -r target; do
+            case $target in '' | *:* | /*) continue ;; esac
+            folder=$(cd "$(dirname "$md")/$(dirname "$target")" 2>/dev/null && pwd -P)
+            case $folder/ in "$root"/*) [ -e "$folder/${target##*/}" ] && continue ;; esac
+            echo "${md#"$root"/}: $target"
+        done
+    done
+}
+
+# The packages tools/deps.sh installs to build and to test a starter (not Embree, for the
+# benchmark, nor Chromium, for the grader's report).
+packages=$(sed -n 's/.*missing="\$missing \([a-z0-9-]*\)".*/\1/p' "$top/tools/deps.sh" |
+    grep -v -e embree -e chromium)
+part=tools/deps.sh
+[ "$(echo "$packages" | wc -w)" -ge 4 ] || fail "cannot read the packages it installs: '$packages'"
+
+part="make starter"
+two="$1 $tmp/wrong"
+make --no-print-directory -C "$top" starter PART="$two" >"$tmp/two.log" 2>&1 &&
+    fail "PART='$two' succeeded"
+grep -q "PART is one part" "$tmp/two.log" || fail "PART='$two' does not say why: $(cat "$tmp/two.log")"
+[ ! -e "$tmp/wrong" ] || fail "PART='$two' wrote a starter into $tmp/wrong"
+# The docs name the packages as Debian does, in code: `libopenexr-dev`.
+part=docs
+for word in $packages make; do
+    sed -n '/^## 3\./,/^## 4\./p' "$top/docs/starters.md" | grep -qF -- "\`$word\`" ||
+        fail "docs/starters.md, section 3, does not name the package $word"
+    [ "$word" = check ] || grep -qF -- "\`$word\`" "$top/docs/grading.md" ||
+        fail "docs/grading.md does not name the package $word"
+done
+
 for part in "$@"; do
     echo "== starter of $part $options"
     stub=$tmp/$part
     solved=$tmp/$part-solution
     # shellcheck disable=SC2086 # options is one word or none
-    if ! "$top/tools/starter.sh" $options "$part" "$stub" >/dev/null ||
-        ! "$top/tools/starter.sh" $options --solution "$part" "$solved" >/dev/null; then
+    if ! (umask 022 && "$top/tools/starter.sh" $options "$part" "$stub" >/dev/null) ||
+        ! (umask 027 && "$top/tools/starter.sh" $options --solution "$part" "$solved" >/dev/null); then
         fail "tools/starter.sh failed"
         continue
     fi
+
+    # It can be handed out: readable by all (umask 022); a more private umask is kept.
+    private=$(find "$stub" ! -perm -o=r -o -type d ! -perm -o=x | head -n 3)
+    [ -z "$private" ] || fail "made with umask 022, yet not readable by all: $private"
+    [ "$(stat -c %a "$solved")" = 750 ] || fail "made with umask 027, the folder has mode $(stat -c %a "$solved")"
+    dead=$(dead_links "$stub")
+    [ -z "$dead" ] || fail "links in the starter that lead nowhere: $dead"
+    for word in $packages make; do
+        sed -n '/^Packages needed/,/^$/p' "$stub/README.md" | grep -qw -- "$word" ||
+            fail "its README does not name the package $word"
+    done
 
     # The solution is the repository's code; the stubs stand where the markers were.
     markers=0

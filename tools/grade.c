@@ -3,11 +3,13 @@
 
 #include <dirent.h>
 #include <errno.h>
+#include <fcntl.h>
 #include <limits.h>
 #include <math.h>
 #include <stdarg.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/file.h>
 #include <time.h>
 #include <unistd.h>
 
@@ -163,6 +165,30 @@ bool grade_make_folder(const char *path)
            grade_fail("cannot make the folder %s: %s", path, strerror(errno));
 }
 
+/* Makes the folder path anew for the grader's work. Anything already there (a folder or a
+ * link that a student's program made) is moved aside, renamed, never followed, to a hidden
+ * .moved-N-NAME beside it, told on `notes`. Returns NULL, or why the folder was not made. */
+const char *grade_fresh_folder(const char *path, FILE *notes)
+{
+    struct stat st;
+    const char *slash = strrchr(path, '/');
+    for (int n = 1; lstat(path, &st) == 0; n++) {
+        char *aside = grade_format("%.*s/.moved-%d-%s", (int)(slash - path), path, n, slash + 1);
+        if (n > 100)
+            return grade_format("%s is there already and cannot be moved aside", path);
+        if (lstat(aside, &st) == 0 || errno != ENOENT)
+            continue;
+        if (rename(path, aside) != 0)
+            return grade_format("cannot move %s aside: %s", path, strerror(errno));
+        fprintf(notes,
+                "grade: note: %s was there before grade made it (a program of the class made "
+                "it?): moved aside to %s\n",
+                path, aside);
+    }
+    return mkdir(path, 0777) == 0 ? NULL
+                                  : grade_format("cannot make %s: %s", path, strerror(errno));
+}
+
 /* Returns the names of the folders in `folder`, hidden ones left out, in strcmp's order;
  * sets *count. NULL (and errno) when the folder cannot be read. */
 char **grade_list_folders(const char *folder, int *count)
@@ -182,17 +208,80 @@ char **grade_list_folders(const char *folder, int *count)
     return names;
 }
 
-/* Makes OUT (grading-PART by default) and OUT/work anew, an absolute path as students'
- * programs run elsewhere, removing only a work folder that an earlier run marked. */
+/* Returns why the output folder, at `out` (its real path), cannot serve: it is the
+ * submissions folder, or inside a submission (which is copied to be built, and would copy
+ * itself), or the submissions are inside its work folder (which is made anew); NULL when it
+ * can. A folder of a class that is the output folder is not graded (submission_list). */
+static char *out_refusal(const Grading *g, const char *out)
+{
+    char subs[PATH_MAX];
+    if (realpath(g->submissions, subs) == NULL)
+        return grade_format("cannot find the folder %s: %s", g->submissions, strerror(errno));
+    size_t len = strlen(subs), out_len = strlen(out);
+    const char *rest = strncmp(out, subs, len) == 0 && (out[len] == '/' || len == 1)
+                           ? out + len + (len > 1)
+                           : NULL;
+    char *work = grade_format("%s/work", out);
+    if (strcmp(out, subs) == 0)
+        return grade_format("the output folder %s is the submissions folder: its work folder would "
+                            "be graded as a student's; choose an --out outside it",
+                            g->out);
+    if (rest != NULL && (g->self || strchr(rest, '/') != NULL))
+        return grade_format(
+            "the output folder %s is inside the submission %s, which grade copies "
+            "to build it; choose an --out outside it",
+            g->out, g->self ? g->submissions : grade_format("%.*s", (int)strcspn(rest, "/"), rest));
+    if (strncmp(subs, work, out_len + 5) == 0 &&
+        (subs[out_len + 5] == '/' || subs[out_len + 5] == 0))
+        return grade_format("the submissions folder %s is within %s, which grade makes anew; "
+                            "choose another --out",
+                            g->submissions, work);
+    return NULL;
+}
+
+/* Locks the output folder for this run: an exclusive flock on OUT/.grade-lock, held until
+ * the grader exits (its descriptor stays open, closed in every child), so that a second run
+ * on the same --out refuses rather than mixing its work with this one's; false (reported). */
+static bool lock_out(const Grading *g, const char *out)
+{
+    char *path = grade_format("%s/.grade-lock", out);
+    int fd = open(path, O_RDWR | O_CREAT | O_NOFOLLOW | O_NONBLOCK | O_CLOEXEC, 0666);
+    if (fd < 0)
+        return grade_fail("cannot open the lock file %s: %s", path, strerror(errno));
+    if (flock(fd, LOCK_EX | LOCK_NB) == 0)
+        return true;
+    int err = errno;
+    close(fd);
+    return err == EWOULDBLOCK
+               ? grade_fail("%s is in use: another grade is writing into it (it holds %s); wait "
+                            "for it to end, or choose another --out",
+                            g->out, path)
+               : grade_fail("cannot lock %s: %s", path, strerror(err));
+}
+
+/* Makes OUT (grading-PART by default), when it may serve, and locks it; makes OUT/work anew,
+ * an absolute path as students' programs run elsewhere, removing only a work folder that an
+ * earlier run marked. */
 static bool prepare_work(Grading *g)
 {
     char real[PATH_MAX];
+    struct stat st;
     g->out = g->out != NULL ? g->out : grade_format("grading-%s", g->part);
-    if ((grade_kind(g->out) != S_IFDIR && !grade_make_folder(g->out)) ||
-        realpath(g->out, real) == NULL)
+    bool made = grade_kind(g->out) != S_IFDIR;
+    if ((made && !grade_make_folder(g->out)) || realpath(g->out, real) == NULL)
         return false;
+    char *refusal = out_refusal(g, real);
+    if (refusal != NULL) {
+        if (made)
+            rmdir(g->out);
+        return grade_fail("%s", refusal);
+    }
     g->work = grade_format("%s/work", real);
-    if (grade_kind(g->work) != 0 && grade_kind(grade_format("%s/.made-by-grade", g->work)) == 0)
+    if (!lock_out(g, real))
+        return false;
+    /* lstat: a link at the work folder's path is not a work folder grade made. */
+    if (lstat(g->work, &st) == 0 &&
+        (!S_ISDIR(st.st_mode) || grade_kind(grade_format("%s/.made-by-grade", g->work)) == 0))
         return grade_fail("%s exists and was not made by grade: choose another --out", g->work);
     /* chmod first: a student's build may have left folders read-only. */
     char *anew[] = {"sh", "-c",
@@ -215,8 +304,9 @@ static bool show_references(Grading *g)
         char *argv[] = {g->imgdiff, "-q", "--threshold", (char *)g->threshold, "--allow",
                         (char *)g->allow, "--thumb", r->reference_show, "--", r->reference,
                         r->reference, NULL};
-        if (!run_program(argv, NULL, log, 600, 0).ok) {
-            char *said = run_log_tail(log);
+        RunResult run = run_program(argv, NULL, log, 600, 0);
+        if (!run.ok) {
+            char *said = run_tail(run.output);
             return !stop_requested() && grade_fail("%s", said ? said : "imgdiff could not run");
         }
     }

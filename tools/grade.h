@@ -61,6 +61,8 @@ typedef struct {
     Figures figures;
     char *image_show, *heat_show; /* where imgdiff put the thumbnails, or NULL */
     char *log_tail;               /* the last lines the program printed, or NULL */
+    char *command;                /* the command line run, shell-quoted, or NULL */
+    bool copy; /* the file is byte for byte the reference's: flagged for the instructor */
     double relative_width; /* a wrong-sized image's width over the reference's; else 0 */
     double seconds;        /* how long the program ran; 0 when none was run */
 } SceneResult;
@@ -103,7 +105,9 @@ typedef struct {
 } Grading;
 
 /* How a child ended: status is the exit status (RUN_EXITED), the signal (RUN_KILLED) or the
- * errno (RUN_NOT_RUN: fork failed); ok when it exited with status 0. */
+ * errno (RUN_NOT_RUN: fork or pipe failed); ok when it exited with status 0; output what it
+ * printed, its head and tail when it printed more than the grader keeps (never NULL; it lasts
+ * until the next run_program). */
 typedef enum { RUN_EXITED, RUN_KILLED, RUN_TIMED_OUT, RUN_NOT_RUN, RUN_INTERRUPTED } RunEnd;
 
 typedef struct {
@@ -111,6 +115,7 @@ typedef struct {
     int status;
     double seconds;
     bool ok;
+    char *output;
 } RunResult;
 
 /* The memory limit of imgdiff, which reads students' files: none under AddressSanitizer,
@@ -128,6 +133,7 @@ bool grade_fail(const char *fmt, ...) DIAG_PRINTF(1, 2);
 char *grade_size_text(long long bytes);
 int grade_kind(const char *path);
 bool grade_make_folder(const char *path);
+const char *grade_fresh_folder(const char *path, FILE *notes);
 char **grade_list_folders(const char *folder, int *count);
 
 /* grade_part.c */
@@ -143,7 +149,8 @@ void run_init(void);
 RunResult run_program(char *const argv[], const char *dir, const char *log, double time_limit,
                       long long memory_limit);
 char *run_describe(const RunResult *r);
-char *run_log_tail(const char *path);
+char *run_command_line(char *const argv[], const char *dir);
+char *run_tail(const char *output);
 
 /* grade_report.c */
 bool report_write(const Grading *g);

@@ -65,6 +65,26 @@ static char *badge(const Grading *g, const Submission *s, int k)
     return grade_format("<span class=\"badge %s\">%s</span>", tally_class[v->tally], v->name);
 }
 
+/* Returns the flag of a file handed in or written that is byte for byte the reference's, for
+ * the instructor to look at (the verdict stays what imgdiff says): for `count` such scenes of
+ * a submission, or none when count is 0. */
+static char *copy_flag(int count)
+{
+    return count == 0 ? ""
+                      : grade_format(" <span class=\"badge flag\" title=\"%d image%s byte for byte "
+                                     "the reference file%s: look at how it was made\">COPY</span>",
+                                     count, plural(count), plural(count));
+}
+
+/* Returns how many images of a submission are byte for byte the reference files. */
+static int copies(const Grading *g, const Submission *s)
+{
+    int n = 0;
+    for (int k = 0; k < g->render_count; k++)
+        n += s->results[k].copy;
+    return n;
+}
+
 /* Tells whether the thumbnail at path, made by imgdiff, can be embedded (a PNG of a sane
  * size, in pixels and in bytes), and sets its size in pixels. */
 static bool picture_size(const char *path, int *width, int *height)
@@ -142,7 +162,7 @@ static void write_heading(FILE *f, const Grading *g)
             fprintf(f, "<span class=\"dot %s\" title=\"%s: %s\"></span>", tally_class[v->tally],
                     html(g->renders[k].name), v->name);
         }
-        fprintf(f, "</td><td>%s</td></tr>\n", badge(g, s, -1));
+        fprintf(f, "</td><td>%s%s</td></tr>\n", badge(g, s, -1), copy_flag(copies(g, s)));
     }
     fputs("</tbody>\n</table>\n</section>\n", f);
 }
@@ -234,11 +254,12 @@ static void write_html(FILE *f, const Grading *g)
         for (int k = 0; k < g->render_count && !broken; k++) {
             const Render *r = &g->renders[k];
             const SceneResult *res = &s->results[k];
-            fprintf(f, "<details class=\"scene\"%s>\n<summary><span class=\"scene-name\">%s</span>"
-                       "%s<span class=\"message\">%s</span>%s</summary>\n<div class=\"scene-body\">"
-                       "\n<p class=\"file\">Scene <code>%s",
+            fprintf(f,
+                    "<details class=\"scene\"%s>\n<summary><span class=\"scene-name\">%s</span>"
+                    "%s%s<span class=\"message\">%s</span>%s</summary>\n<div class=\"scene-body\">"
+                    "\n<p class=\"file\">Scene <code>%s",
                     res->verdict == VERDICT_PASS ? "" : " open", html(r->name), badge(g, s, k),
-                    html(res->message),
+                    copy_flag(res->copy), html(res->message),
                     res->seconds > 0
                         ? grade_format("<span class=\"time\">%.2f s</span>", res->seconds)
                         : "",
@@ -246,9 +267,13 @@ static void write_html(FILE *f, const Grading *g)
             for (char **a = r->argv + RENDER_WORDS; *a != NULL; a++)
                 fprintf(f, " %s", html(*a));
             fputs("</code></p>\n", f);
+            /* What was run, where, to run it again by hand: a shell's command line. */
+            if (res->command != NULL)
+                fprintf(f, "<p class=\"file\">Command <code>%s</code></p>\n", html(res->command));
             if (res->compared || res->relative_width > 0)
                 write_pictures(f, res, k);
-            write_log(f, "Program output (the last lines)", res->log_tail,
+            write_log(f, "Program output (the last lines)",
+                      res->command != NULL && res->log_tail == NULL ? "(nothing)" : res->log_tail,
                       verdict_info[res->verdict].tally == TALLY_ERROR);
             fputs("</div>\n</details>\n", f);
         }
@@ -285,7 +310,7 @@ static char *csv(const char *text)
 static void write_csv(FILE *f, const Grading *g)
 {
     fputs("submission,scene,verdict,max_diff_r,max_diff_g,max_diff_b,mean_abs_diff,rmse,"
-          "psnr_db,differing_pixels,differing_fraction,bbox,message,seconds\n", f);
+          "psnr_db,differing_pixels,differing_fraction,bbox,message,seconds,flag\n", f);
     for (int i = 0; i < g->sub_count; i++)
         for (int k = 0; k < g->render_count; k++) {
             const SceneResult *res = &g->subs[i].results[k];
@@ -297,9 +322,10 @@ static void write_csv(FILE *f, const Grading *g)
                 (double)fig->differing / fig->pixels,
                 fig->differing == 0 ? "" : grade_format("\"(%d,%d)-(%d,%d)\"", fig->box[0],
                                                         fig->box[1], fig->box[2], fig->box[3]));
-            fprintf(f, "%s,%s,%s,%s%s,%s\n", csv(g->subs[i].name), csv(g->renders[k].name),
+            fprintf(f, "%s,%s,%s,%s%s,%s,%s\n", csv(g->subs[i].name), csv(g->renders[k].name),
                     verdict_info[res->verdict].name, figures, csv(res->message),
-                    res->seconds > 0 ? grade_format("%.3f", res->seconds) : "");
+                    res->seconds > 0 ? grade_format("%.3f", res->seconds) : "",
+                    res->copy ? "copy" : "");
         }
 }
 
@@ -327,9 +353,10 @@ bool report_write(const Grading *g)
     return true;
 }
 
-/* Prints, for a student checking their own work, each scene's verdict and reason, and the
- * heat map to look at when it did not pass; returns the exit status: 0 when every scene
- * passes, 1 otherwise. */
+/* Prints, for a student checking their own work, each scene's verdict and reason, the heat
+ * map to look at when it did not pass, and the command line to run again when the program
+ * failed (crashed, timed out...); returns the exit status: 0 when every scene passes, 1
+ * otherwise. */
 int report_print_self(const Grading *g)
 {
     const Submission *s = &g->subs[0];
@@ -339,6 +366,8 @@ int report_print_self(const Grading *g)
         printf("%-12s %s: %s\n", verdict_info[res->verdict].name, g->renders[k].name, res->message);
         if (res->verdict != VERDICT_PASS && access(heat, F_OK) == 0)
             printf("%12s heat map: %s\n", "", heat);
+        if (res->command != NULL && verdict_info[res->verdict].tally == TALLY_ERROR)
+            printf("%12s command: %s\n", "", res->command);
     }
     printf("%d of %d scenes pass; the report: %s/report.html\n", s->tally[TALLY_PASS],
            g->render_count, g->out);

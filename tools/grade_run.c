@@ -5,6 +5,7 @@
 #include <dirent.h>
 #include <errno.h>
 #include <fcntl.h>
+#include <poll.h>
 #include <signal.h>
 #include <stdlib.h>
 #include <string.h>
@@ -13,7 +14,6 @@
 #include <time.h>
 #include <unistd.h>
 
-#include "imgfile.h"
 #include "progress.h"
 #include "stop.h"
 #ifdef __linux__
@@ -23,11 +23,22 @@
 /* The exit status of a child that could not exec its program (as the shell's). */
 #define EXEC_FAILED 127
 
-/* The largest file a child may write: a program printing in a loop must not fill the disk. */
+/* The largest file a child may write: an image, or whatever else it writes in its folder. */
 #define FILE_LIMIT (1LL << 30)
+
+/* What the grader keeps of a child's output, read through a pipe: the first and the last
+ * KEEP_BYTES; what lies between is counted, never stored, and a line says how much was cut. */
+#define KEEP_BYTES (64 << 10)
 
 /* The end of a program's output that the report shows. */
 #define TAIL_BYTES 2048
+
+/* A child's output as it comes: the head, then the tail in a ring, and the count of all. */
+typedef struct {
+    char head[KEEP_BYTES], tail[KEEP_BYTES];
+    size_t head_len;
+    unsigned long long total;
+} Capture;
 
 /* SIGCHLD alone: held back by the grader, for the wait loop to wait for. */
 static sigset_t sigchld;
@@ -57,9 +68,9 @@ static void wait_for_signal(double seconds)
 }
 
 /* Prepares a new child: its own process group, the signals as they were (those caught go
- * back to their defaults at exec), stdin from /dev/null, output to the log (NULL: /dev/null),
+ * back to their defaults at exec), stdin from /dev/null, stdout and stderr to the pipe `out`,
  * the limits, the folder (NULL: the grader's); exits with EXEC_FAILED when it cannot. */
-static void child_setup(const char *dir, const char *log, long long memory_limit)
+static void child_setup(const char *dir, int out, long long memory_limit)
 {
     setpgid(0, 0);
 #ifdef __linux__
@@ -71,14 +82,11 @@ static void child_setup(const char *dir, const char *log, long long memory_limit
     sigemptyset(&none);
     sigprocmask(SIG_SETMASK, &none, NULL);
     int in = open("/dev/null", O_RDONLY);
-    /* A link or a FIFO a student's program left at the log's path is neither followed
-     * nor waited on: the open fails, and the child with it. */
-    int flags = O_WRONLY | O_CREAT | O_TRUNC | O_NOFOLLOW | O_NONBLOCK;
-    int out = log != NULL ? open(log, flags, 0644) : open("/dev/null", O_WRONLY);
-    if (in < 0 || out < 0 || dup2(in, 0) < 0 || dup2(out, 1) < 0 || dup2(out, 2) < 0)
+    if (in < 0 || dup2(in, 0) < 0 || dup2(out, 1) < 0 || dup2(out, 2) < 0)
         _exit(EXEC_FAILED);
-    /* Nor does the child keep the grader's files, or the jobserver pipes of a make that
-     * runs the grader: every descriptor above stderr is closed. */
+    /* The child keeps neither the grader's files (the pipe's reading end, the output
+     * folder's lock) nor the jobserver pipes of a make that runs the grader: every
+     * descriptor above stderr is closed. */
     DIR *fds = opendir("/proc/self/fd");
     for (struct dirent *e; fds != NULL && (e = readdir(fds)) != NULL;)
         if (atoi(e->d_name) > 2 && atoi(e->d_name) != dirfd(fds))
@@ -141,21 +149,119 @@ static void end_stragglers(void)
     }
 }
 
+/* Adds n bytes of output to the capture: to the head until it is full, then to the ring. */
+static void capture_add(Capture *c, const char *bytes, size_t n)
+{
+    size_t to_head = c->head_len < KEEP_BYTES ? KEEP_BYTES - c->head_len : 0;
+    to_head = to_head < n ? to_head : n;
+    memcpy(c->head + c->head_len, bytes, to_head);
+    c->head_len += to_head;
+    for (size_t k = to_head; k < n;) {
+        size_t at = (size_t)((c->total + k - c->head_len) % KEEP_BYTES);
+        size_t run = KEEP_BYTES - at < n - k ? KEEP_BYTES - at : n - k;
+        memcpy(c->tail + at, bytes + k, run);
+        k += run;
+    }
+    c->total += n;
+}
+
+/* Reads what the pipe holds into the capture, at most 4 MiB at a time so that the limits are
+ * looked at again; returns the descriptor, or -1 once it is closed at the end of the output. */
+static int capture_read(Capture *c, int fd)
+{
+    char chunk[1 << 16];
+    for (int k = 0; k < 64; k++) {
+        ssize_t n = read(fd, chunk, sizeof chunk);
+        if (n > 0)
+            capture_add(c, chunk, (size_t)n);
+        else if (n < 0 && errno == EINTR)
+            continue;
+        else if (n < 0 && errno == EAGAIN)
+            return fd;
+        else {
+            close(fd);
+            return -1;
+        }
+    }
+    return fd;
+}
+
+/* Returns what the capture kept as one string: the head, a line saying how many bytes were
+ * cut when some were, and the tail; a NUL byte the program printed becomes '?'. The string
+ * lasts until the next call, so that a class of programs that print much takes no more
+ * memory than one. */
+static char *capture_text(const Capture *c)
+{
+    static char text[2 * KEEP_BYTES + 256];
+    size_t rest = (size_t)(c->total - c->head_len); /* the bytes after the head */
+    size_t tail = rest < KEEP_BYTES ? rest : KEEP_BYTES;
+    unsigned long long cut = c->total - c->head_len - tail;
+    char note[200] = "";
+    if (cut > 0)
+        snprintf(note, sizeof note,
+                 "\n[grade: %llu bytes cut here: of the %llu bytes printed, "
+                 "the first and the last %d KiB are kept]\n",
+                 cut, c->total, KEEP_BYTES >> 10);
+    size_t len = c->head_len + strlen(note) + tail;
+    char *t = text;
+    memcpy(t, c->head, c->head_len);
+    t = stpcpy(t + c->head_len, note);
+    for (size_t k = 0, from = (size_t)((c->total - tail - c->head_len) % KEEP_BYTES); k < tail; k++)
+        *t++ = c->tail[(from + k) % KEEP_BYTES];
+    for (size_t k = 0; k < len; k++)
+        text[k] = text[k] == '\0' ? '?' : text[k];
+    text[len] = '\0';
+    return text;
+}
+
+/* Writes the log at path anew: the command line, the output, how the run ended. Whatever a
+ * program left at the path is removed first, never followed (O_EXCL, O_NOFOLLOW). */
+static void write_log(const char *path, char *const argv[], const char *dir, const RunResult *r)
+{
+    struct stat st;
+    if (lstat(path, &st) == 0 && !S_ISDIR(st.st_mode))
+        unlink(path);
+    int fd = open(path, O_WRONLY | O_CREAT | O_EXCL | O_NOFOLLOW | O_CLOEXEC, 0666);
+    FILE *f = fd >= 0 ? fdopen(fd, "w") : NULL;
+    if (f != NULL)
+        fprintf(f, "$ %s\n%s%s[grade: %s; it ran %.2f s]\n", run_command_line(argv, dir), r->output,
+                r->output[0] == '\0' || r->output[strlen(r->output) - 1] == '\n' ? "" : "\n",
+                run_describe(r), r->seconds);
+    if (f == NULL || fclose(f) != 0)
+        fprintf(stderr, "grade: warning: cannot write the log %s: %s\n", path, strerror(errno));
+    if (f == NULL && fd >= 0)
+        close(fd);
+}
+
 /* Runs argv (a program found on PATH) in a child as child_setup prepares it, with at most
  * time_limit seconds and memory_limit bytes (0: no limit), killing its group at the limit
- * or on a stop request; then reaps it and everything it left behind. */
+ * or on a stop request; then reaps it and everything it left behind. Its output comes through
+ * a pipe, kept in part (Capture) and written to the log at path `log` (NULL: none). */
 RunResult run_program(char *const argv[], const char *dir, const char *log, double time_limit,
                       long long memory_limit)
 {
+    static Capture capture;
+    Capture *c = &capture;
+    c->head_len = 0;
+    c->total = 0;
+    int fds[2];
+    if (pipe(fds) != 0)
+        return (RunResult){.end = RUN_NOT_RUN, .status = errno, .output = ""};
+    fcntl(fds[0], F_SETFD, FD_CLOEXEC);
+    fcntl(fds[0], F_SETFL, O_NONBLOCK);
     double start = clock_now();
     pid_t pid = fork();
-    if (pid < 0)
-        return (RunResult){.end = RUN_NOT_RUN, .status = errno};
     if (pid == 0) {
-        child_setup(dir, log, memory_limit);
+        child_setup(dir, fds[1], memory_limit);
         execvp(argv[0], argv);
         grade_fail("cannot run '%s': %s", argv[0], strerror(errno));
         _exit(EXEC_FAILED);
+    }
+    int err = errno, fd = fds[0];
+    close(fds[1]);
+    if (pid < 0) {
+        close(fd);
+        return (RunResult){.end = RUN_NOT_RUN, .status = err, .output = ""};
     }
     /* Also here, so that the group exists before any kill, whichever runs first. */
     setpgid(pid, pid);
@@ -168,8 +274,14 @@ RunResult run_program(char *const argv[], const char *dir, const char *log, doub
             r.end = stop_requested() ? RUN_INTERRUPTED : RUN_TIMED_OUT;
             break;
         }
-        /* A stray SIGCHLD (of a process left behind) only makes the loop look again. */
-        wait_for_signal(time_limit > 0 && left < 0.1 ? left : 0.1);
+        double wait = time_limit > 0 && left < 0.1 ? left : 0.1;
+        /* Output wakes the loop, and so does its end (the child's exit closes the pipe);
+         * once it has ended, SIGCHLD does. A stray SIGCHLD only makes the loop look again. */
+        struct pollfd p = {.fd = fd, .events = POLLIN};
+        if (fd < 0)
+            wait_for_signal(wait);
+        else if (poll(&p, 1, (int)(wait * 1000) + 1) > 0)
+            fd = capture_read(c, fd);
     }
     r.seconds = clock_now() - start;
     /* Whatever else of the group still runs (a forked child of the program) ends now. */
@@ -183,6 +295,12 @@ RunResult run_program(char *const argv[], const char *dir, const char *log, doub
     }
     r.ok = r.end == RUN_EXITED && r.status == 0;
     end_stragglers();
+    /* Everything that could write to the pipe has ended: what it holds is the last. */
+    if (fd >= 0 && capture_read(c, fd) >= 0)
+        close(fd);
+    r.output = capture_text(c);
+    if (log != NULL)
+        write_log(log, argv, dir, &r);
     return r;
 }
 
@@ -199,20 +317,44 @@ char *run_describe(const RunResult *r)
     }
 }
 
-/* Returns the last lines of the file at path (a program's output), "[...]" first when
- * the start was cut, at a line's; NULL when it is empty or unreadable. */
-char *run_log_tail(const char *path)
+/* Returns word as the shell reads it: as it is when it holds only safe characters, else in
+ * single quotes, each of its own written '\''. */
+static char *shell_quote(const char *word)
 {
-    FILE *f = imgfile_fopen(path);
-    long size = f != NULL && fseek(f, 0, SEEK_END) == 0 ? ftell(f) : -1;
-    long from = size > TAIL_BYTES ? size - TAIL_BYTES : 0;
-    char *text = grade_alloc(TAIL_BYTES + 8);
-    size_t n = size > 0 && fseek(f, from, SEEK_SET) == 0 ? fread(text, 1, TAIL_BYTES, f) : 0;
-    if (f != NULL)
-        fclose(f);
-    while (n > 0 && isspace((unsigned char)text[n - 1]))
+    if (word[0] != '\0' && strspn(word, "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz"
+                                        "0123456789_-./=:,+@%") == strlen(word))
+        return grade_format("%s", word);
+    char *out = grade_alloc(4 * strlen(word) + 3), *o = out;
+    *o++ = '\'';
+    for (const char *w = word; *w != '\0'; w++) {
+        if (*w == '\'')
+            o = stpcpy(o, "'\\''");
+        else
+            *o++ = *w;
+    }
+    strcpy(o, "'");
+    return out;
+}
+
+/* Returns the command line of a run as a shell would take it: "cd DIR && PROGRAM ARGS",
+ * every word quoted as it needs, so that it can be pasted to run the same again. */
+char *run_command_line(char *const argv[], const char *dir)
+{
+    char *line = dir != NULL ? grade_format("cd %s &&", shell_quote(dir)) : "";
+    for (char *const *a = argv; *a != NULL; a++)
+        line = grade_format("%s%s%s", line, line[0] != '\0' ? " " : "", shell_quote(*a));
+    return line;
+}
+
+/* Returns the last lines of a program's output, "[...]" first when the start was cut, at a
+ * line's; NULL when it printed nothing but blanks. */
+char *run_tail(const char *output)
+{
+    size_t n = strlen(output);
+    while (n > 0 && isspace((unsigned char)output[n - 1]))
         n--;
-    text[n] = '\0';
+    size_t from = n > TAIL_BYTES ? n - TAIL_BYTES : 0;
+    char *text = grade_format("%.*s", (int)(n - from), output + from);
     const char *newline = strchr(text, '\n');
     if (from > 0)
         return grade_format("[...]%s", newline != NULL ? newline : text);

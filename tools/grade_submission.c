@@ -25,6 +25,24 @@ static void DIAG_PRINTF(3, 4) set_verdict(SceneResult *res, Verdict v, const cha
     res->verdict = v;
 }
 
+/* Tells whether the files at a and b hold the same bytes (both opened as a student's file). */
+static bool same_bytes(const char *a, const char *b)
+{
+    FILE *fa = imgfile_fopen(a), *fb = imgfile_fopen(b);
+    struct stat sa, sb;
+    bool same = fa != NULL && fb != NULL && fstat(fileno(fa), &sa) == 0 &&
+                fstat(fileno(fb), &sb) == 0 && sa.st_size == sb.st_size;
+    char ca[1 << 14], cb[1 << 14];
+    for (size_t n; same && (n = fread(ca, 1, sizeof ca, fa)) > 0;)
+        same = fread(cb, 1, n, fb) == n && memcmp(ca, cb, n) == 0;
+    same = same && !ferror(fa);
+    if (fa != NULL)
+        fclose(fa);
+    if (fb != NULL)
+        fclose(fb);
+    return same;
+}
+
 /* Compares image, submitted for render k, with the reference through imgdiff, which also
  * writes the full-size heat map and the thumbnails the report shows; sets the verdict from
  * its --machine lines (docs/grading.md lists them), with the reason in words. */
@@ -41,7 +59,7 @@ static void compare_image(const Grading *g, const Submission *s, int k, const ch
                     "--thumb", res->image_show, "--diff-thumb", res->heat_show, "--",
                     r->reference, (char *)image, NULL};
     RunResult run = run_program(argv, NULL, log, 600, RUN_OWN_MEMORY(g->memory_limit));
-    FILE *in = imgfile_fopen(log);
+    FILE *in = fmemopen(run.output, strlen(run.output) + 1, "r");
     char line[1024], *reason = NULL;
     int size[4] = {0}; /* the reference's width and height, then the image's, when they differ */
     while (in != NULL && fgets(line, sizeof line, in) != NULL) {
@@ -67,6 +85,7 @@ static void compare_image(const Grading *g, const Submission *s, int k, const ch
     Verdict v = run.ok ? VERDICT_PASS : VERDICT_FAIL;
     res->compared = run.end == RUN_EXITED && run.status <= 1;
     res->identical = res->compared && f->max[0] == 0 && f->max[1] == 0 && f->max[2] == 0;
+    res->copy = res->identical && same_bytes(image, r->reference);
     if (res->identical)
         set_verdict(res, v, "identical to the reference");
     else if (res->compared && f->differing == 0)
@@ -144,7 +163,7 @@ static char *build(const Grading *g, Submission *s)
         s->build_message = grade_format("make failed (%s)", run_describe(&r));
     else if (grade_kind(program) != S_IFREG || access(program, X_OK) != 0)
         s->build_message = "make succeeded but made no executable raytra beside the Makefile";
-    s->build_log_tail = run_log_tail(log);
+    s->build_log_tail = run_tail(r.output);
     return s->build_message != NULL || r.end == RUN_INTERRUPTED ? NULL : program;
 }
 
@@ -173,10 +192,11 @@ static void run_scene(const Grading *g, Submission *s, int k, char *program)
     char *image = grade_format("%s/images/%s", s->work, r->image);
     r->argv[0] = program;
     r->argv[2] = image;
-    RunResult run = run_program(r->argv, grade_format("%s/run", s->work), log, g->time_limit,
-                                g->memory_limit);
+    char *dir = grade_format("%s/run", s->work);
+    RunResult run = run_program(r->argv, dir, log, g->time_limit, g->memory_limit);
     res->seconds = run.seconds;
-    res->log_tail = run_log_tail(log);
+    res->log_tail = run_tail(run.output);
+    res->command = run_command_line(r->argv, dir);
     char *how = run_describe(&run);
     struct stat st;
     bool wrote = lstat(image, &st) == 0, exited = run.end == RUN_EXITED;
@@ -203,20 +223,35 @@ static void run_scene(const Grading *g, Submission *s, int k, char *program)
     }
 }
 
-/* Grades every render of submission s, counts the verdicts and tells them on f ("5 scenes:
- * 4 pass, 1 timeout"); false when grading must stop (interrupted, or trouble, reported). */
-static bool grade_one(const Grading *g, Submission *s, FILE *f)
+/* Makes the work folders of submission s fresh (a folder that a classmate's program made in
+ * the place of one is moved aside, told on f): its own, and for a program images/ and run/;
+ * returns NULL, or why they could not be made. */
+static const char *make_work(const Submission *s, FILE *f)
+{
+    const char *trouble = grade_fresh_folder(s->work, f);
+    /* A program is built and run, in folders of its own; a folder of images is read. */
+    if (trouble == NULL && s->program && s->link == NULL)
+        trouble = grade_fresh_folder(grade_format("%s/images", s->work), f);
+    if (trouble == NULL && s->program && s->link == NULL)
+        trouble = grade_fresh_folder(grade_format("%s/run", s->work), f);
+    return trouble;
+}
+
+/* Grades every render of submission s, whose work folders were made unless `trouble` says
+ * why not; counts the verdicts and tells them on f ("5 scenes: 4 pass, 1 timeout"); false
+ * when grading must stop (interrupted). */
+static bool grade_one(const Grading *g, Submission *s, const char *trouble, FILE *f)
 {
     s->results = grade_alloc((size_t)g->render_count * sizeof *s->results);
-    /* A program is built and run, in folders of its own; a folder of images is read. */
-    bool runs = s->program && s->link == NULL;
-    bool ok = grade_make_folder(s->work) &&
-              (!runs || (grade_make_folder(grade_format("%s/images", s->work)) &&
-                         grade_make_folder(grade_format("%s/run", s->work))));
-    char *program = ok && runs ? build(g, s) : NULL;
-    for (int k = 0; ok && k < g->render_count && !stop_requested(); k++) {
+    char *program = trouble == NULL && s->program && s->link == NULL ? build(g, s) : NULL;
+    for (int k = 0; k < g->render_count && !stop_requested(); k++) {
         /* A folder that is a link (to a classmate's) is not a submission of its own. */
-        if (s->link != NULL)
+        if (trouble != NULL)
+            set_verdict(&s->results[k], VERDICT_ERROR,
+                        "the grader could not make its work "
+                        "folder: %s",
+                        trouble);
+        else if (s->link != NULL)
             set_verdict(&s->results[k], VERDICT_LINK,
                         "the submission's folder is a symbolic link to %s", s->link);
         else if (!s->program)
@@ -226,7 +261,7 @@ static bool grade_one(const Grading *g, Submission *s, FILE *f)
         else
             set_verdict(&s->results[k], VERDICT_BUILD_FAILED, "%s", s->build_message);
     }
-    if (!ok || stop_requested()) {
+    if (stop_requested()) {
         fputc('\n', f);
         return false;
     }
@@ -264,13 +299,14 @@ bool submission_grade_all(Grading *g)
         fprintf(f, "grade: not graded (illustrations): %s\n", g->illustrations);
     for (int k = 0; k < g->sub_count; k++) {
         Submission *s = &g->subs[k];
+        const char *trouble = make_work(s, f);
         /* Control characters made '?': a folder's name cannot play tricks on the terminal. */
         fprintf(f, "grading ");
         for (const char *p = s->name; *p != '\0'; p++)
             fputc((unsigned char)*p < 0x20 || *p == 0x7F ? '?' : *p, f);
         fprintf(f, " (%s): %s", s->program ? "program" : "images",
                 s->program ? "building... " : "");
-        if (!grade_one(g, s, f))
+        if (!grade_one(g, s, trouble, f))
             return false;
     }
     return true;
@@ -296,6 +332,13 @@ bool submission_list(Grading *g)
         if (!g->self && realpath(path, real) != NULL &&
             strcmp(grade_format("%s/work", real), g->work) == 0)
             continue;
+        /* So is another run's (a lock file and a work folder that grade marked). */
+        if (!g->self && grade_kind(grade_format("%s/.grade-lock", path)) == S_IFREG &&
+            grade_kind(grade_format("%s/work/.made-by-grade", path)) == S_IFREG) {
+            fprintf(g->progress, "grade: note: %s is an output folder of grade: not graded\n",
+                    path);
+            continue;
+        }
         Submission *s = &g->subs[g->sub_count++];
         char *work = g->self ? grade_format("%s/1-self", g->work)
                              : grade_format("%s/%0*d-%.40s", g->work, digits, g->sub_count,

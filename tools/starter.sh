@@ -1,13 +1,15 @@
 #!/bin/sh
 # starter.sh: writes a part's starter, the folder a course hands out, with the student's functions as stubs.
 #
-# Usage: tools/starter.sh [--solution] [--stub-earlier] PART [DEST]
-#   PART            a part: 1.2, 1.2-shading or milestones/1.2-shading
+# Usage: tools/starter.sh [--solution] [--stub-earlier] [--docs-url URL] PART [DEST]
+#   PART            one part: 1.2, 1.2-shading or milestones/1.2-shading
 #   DEST            the folder to write; default out/starter-<part> at the top
 #   --solution      keep the bodies of every marked function: the instructor's copy
 #   --stub-earlier  stub the marked functions of the earlier parts too; by default
 #                   they ship complete, as a course hands out a part's solution
 #                   after its deadline
+#   --docs-url URL  where the course publishes raytra's files (the chapters): the
+#                   READMEs' links to files not in the starter point there
 #
 # A function whose body the student writes is marked in the source by a line
 #     /* starter: todo */      or      /* starter: todo: HINT */
@@ -15,11 +17,14 @@
 # exactly "{" to the next line that is exactly "}", becomes a TODO comment, casts
 # of the parameters to void, and a return of a harmless value. The starter holds
 # common/, the parts used, the part with its tests and references, the scenes
-# they need, imgdiff, and a Makefile whose `make check` tests and grades.
+# they need, imgdiff, and a Makefile whose `make check` tests and grades. A link of a
+# README to a file the starter does not hold (a chapter, which shows the solution) is
+# made to point to it in the repository, or at URL. The starter gets the modes of any
+# new folder (the umask's), so that it can be handed out as it is.
 set -u
 top=$(cd "$(dirname "$0")/.." && pwd) || exit 2
 usage() {
-    echo "usage: $0 [--solution] [--stub-earlier] PART [DEST]" >&2
+    echo "usage: $0 [--solution] [--stub-earlier] [--docs-url URL] PART [DEST]" >&2
     exit 2
 }
 die() {
@@ -29,11 +34,13 @@ die() {
 
 solution=no
 stub_earlier=no
+docs_url=
 while [ $# -gt 0 ]; do
     case $1 in
     --solution) solution=yes ;;
     --stub-earlier) stub_earlier=yes ;;
-    -h | --help) sed -n '2,18p' "$0" | sed 's/^# \{0,1\}//'; exit 0 ;;
+    --docs-url) [ $# -ge 2 ] || usage; docs_url=${2%/}; shift ;;
+    -h | --help) sed -n '2,24p' "$0" | sed 's/^# \{0,1\}//'; exit 0 ;;
     -*) usage ;;
     *) break ;;
     esac
@@ -42,7 +49,11 @@ done
 [ $# -ge 1 ] && [ $# -le 2 ] || usage
 [ $solution = yes ] && stub_earlier=no
 
-# The part's folder, from its full name, its number, or its path.
+# The part's folder, from its full name, its number, or its path: one part, one word
+# (`make starter PART="1.2 1.3"` would otherwise write 1.2's starter into ./1.3).
+case $1 in
+'' | *[[:space:]]*) die "PART is one part (1.2, 1.2-shading or its folder), got '$1': a starter a part" ;;
+esac
 part=${1%/}
 part=${part##*/}
 case $part in
@@ -248,8 +259,8 @@ earlier="the parts in \`milestones/\` other than $part are complete."
     echo
     echo "\`make\` alone builds \`milestones/$part/raytra\`; run it as"
     echo "\`milestones/$part/raytra SCENE OUTPUT.png\` (\`--help\` lists its options)."
-    echo "Packages needed on Debian or Ubuntu: gcc, make, pkg-config, libpng-dev and"
-    echo "check (\`tools/deps.sh test\` installs them when it may)."
+    echo "Packages needed on Debian or Ubuntu: gcc, make, pkg-config, libpng-dev,"
+    echo "libopenexr-dev and check (\`tools/deps.sh test\` installs them when it may)."
     echo
     echo "The functions to write:"
     echo
@@ -258,12 +269,65 @@ earlier="the parts in \`milestones/\` other than $part are complete."
     echo
     echo "\`common/\` is the library every part links (vectors, scenes, images, the"
     echo "render loop); $earlier"
-    echo "\`milestones/$part/README.md\` describes the part; the chapters it links to"
-    echo "(\`docs/\`) show its solution and are not in the starter."
+    echo "\`milestones/$part/README.md\` describes the part; the chapters it names"
+    if [ -n "$docs_url" ]; then
+        echo "(\`docs/\`) are not in the starter: its links take you to them at $docs_url."
+    else
+        echo "(\`docs/\` of raytra's repository) show its solution and are not in the starter."
+    fi
 } >"$tmp/README.md"
 rm "$tmp/todo.txt"
 echo "raytra starter of part $part" >"$tmp/.raytra-starter"
 
+# The READMEs' links to files the starter does not hold: an earlier part's picture is
+# copied in; anything else (a chapter, which shows the solution; bench/) is pointed to
+# where it is, at URL or by its path in raytra's repository, so that no link is dead.
+find "$tmp/milestones" -name '*.md' | while read -r md; do
+    rel=${md#"$tmp"/}
+    awk -v dir="${rel%/*}" -v tmp="$tmp" -v top="$top" -v url="$docs_url" '
+    # The path of target from the top, for a link in folder dir: "." and ".." resolved.
+    function resolve(target,    n, k, part, out, m) {
+        n = split(dir "/" target, part, "/")
+        m = 0
+        for (k = 1; k <= n; k++) {
+            if (part[k] == "" || part[k] == ".") continue
+            if (part[k] == "..") { if (m > 0) m--; continue }
+            out[++m] = part[k]
+        }
+        target = ""
+        for (k = 1; k <= m; k++) target = target (k > 1 ? "/" : "") out[k]
+        return target
+    }
+    function exists(path) { return system("test -e \"" path "\"") == 0 }
+    {
+        line = $0; done = ""
+        while (match(line, /!?\[[^]]*\]\([^)]*\)/)) {
+            link = substr(line, RSTART, RLENGTH)
+            done = done substr(line, 1, RSTART - 1)
+            line = substr(line, RSTART + RLENGTH)
+            text = link; sub(/\]\(.*/, "", text); sub(/^!?\[/, "", text)
+            target = link; sub(/^[^]]*\]\(/, "", target); sub(/\)$/, "", target)
+            file = target; sub(/#.*/, "", file)
+            if (target ~ /^([a-z]+:|#|\/)/ || file == "" || exists(tmp "/" resolve(file))) {
+                done = done link; continue
+            }
+            path = resolve(file)
+            folder = tmp "/" path
+            sub(/\/[^\/]*$/, "", folder)
+            if (link ~ /^!/ && path ~ /^milestones\// && exists(top "/" path) &&
+                system("mkdir -p \"" folder "\" && cp \"" top "/" path "\" \"" tmp "/" path "\"") == 0)
+                done = done link
+            else if (url != "")
+                done = done (link ~ /^!/ ? "!" : "") "[" text "](" url "/" path substr(target, length(file) + 1) ")"
+            else
+                done = done (text == path ? "" : text " (") "`" path "` in raytra'"'"'s repository" (text == path ? "" : ")") ", not in this starter"
+        }
+        print done line
+    }' "$md" >"$md.new" && mv "$md.new" "$md" || exit 2
+done || exit 2
+
+# mktemp -d made the folder private (0700): it gets the modes the umask gives a new folder.
+chmod "$(umask -S)" "$tmp" || exit 2
 rm -rf "$dest" && mv "$tmp" "$dest" || exit 2
 trap - EXIT
 echo "starter: wrote $dest"
