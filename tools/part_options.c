@@ -22,12 +22,14 @@ static const struct {
     {"1.6-monte-carlo", montecarlo_part_options},
 };
 
-/* Returns the tables of the options of part, by its folder's name, beyond those every
- * part takes; NULL for a part that has none of its own, or that is not known. */
+/* Returns the tables of the options of part, by its folder's name or its number alone
+ * ("1.4-bvh", "1.4", or a course's own "1.4-accel"), beyond those every part takes;
+ * NULL for a part that has none of its own, or that is not known. */
 const CliOption *const *part_options_of(const char *part)
 {
+    size_t number = strcspn(part, "-");
     for (size_t k = 0; k < sizeof parts / sizeof *parts; k++)
-        if (strcmp(parts[k].part, part) == 0)
+        if (strncmp(parts[k].part, part, number) == 0 && parts[k].part[number] == '-')
             return parts[k].options;
     return NULL;
 }
