@@ -265,21 +265,26 @@ static float half_round(float f)
     return half_to_float(float_to_half(f));
 }
 
-/* Describes a channel list's names in text: "A, Z" (the first few, then "..."). */
+/* Copies a channel's name from the file into text (size bytes), cut to fit, each byte that
+ * is not printable ASCII as '?': a message never carries a terminal's control codes. */
+static void printable_name(const char *name, char *text, size_t size)
+{
+    size_t k = 0;
+    for (; name[k] != '\0' && k + 1 < size; k++)
+        text[k] = name[k] >= ' ' && name[k] <= '~' ? name[k] : '?';
+    text[k] = '\0';
+}
+
+/* Describes a channel list's names in text: "A, Z" (the first eight, then "..."). */
 static void channel_names(const exr_attr_chlist_t *list, char *text, size_t size)
 {
-    size_t used = 0;
-    text[0] = '\0';
-    for (int c = 0; c < list->num_channels && used + 1 < size; c++) {
-        int n = c < 8 ? snprintf(text + used, size - used, "%s%s", c > 0 ? ", " : "",
-                                 list->entries[c].name.str)
-                      : snprintf(text + used, size - used, ", ...");
-        used += n > 0 ? (size_t)n : 0;
-        if (c >= 8)
-            break;
+    snprintf(text, size, "%s", list->num_channels == 0 ? "none" : "");
+    for (int c = 0; c < list->num_channels && c <= 8; c++) {
+        char name[32];
+        printable_name(list->entries[c].name.str, name, sizeof name);
+        size_t used = strlen(text);
+        snprintf(text + used, size - used, "%s%s", c > 0 ? ", " : "", c < 8 ? name : "...");
     }
-    if (list->num_channels == 0)
-        snprintf(text, size, "none");
 }
 
 /* Chooses the layout of part 0 from its channel names and checks that raytra can read the
@@ -295,7 +300,7 @@ static bool choose_layout(const exr_attr_chlist_t *list, ExrPlan *plan, ExrIo *i
     }
     int rgb = (entry[ROLE_R] != NULL) + (entry[ROLE_G] != NULL) + (entry[ROLE_B] != NULL);
     bool chroma = entry[ROLE_RY] != NULL || entry[ROLE_BY] != NULL;
-    char names[200];
+    char names[320];
     if (rgb == 3) {
         plan->layout = LAYOUT_RGB;
     } else if (rgb > 0) {
@@ -493,8 +498,10 @@ static bool check_chunk(const exr_decode_pipeline_t *d, const ExrPlan *plan, int
             lines += line_sampled(y, ch->y_samples);
         if (lines != ch->height || ch->x_samples < 1 ||
             (int64_t)ch->width * ch->x_samples != ck->width) {
+            char channel[32];
+            printable_name(ch->channel_name, channel, sizeof channel);
             error_set(io->err, "%s does not hold whole samples of channel %s (sampled %d x %d)",
-                      name, ch->channel_name, ch->x_samples, ch->y_samples);
+                      name, channel, ch->x_samples, ch->y_samples);
             return false;
         }
         need += (uint64_t)lines * (uint64_t)ch->width * (uint64_t)ch->bytes_per_element;

@@ -272,6 +272,10 @@ START_TEST(exr_errors)
     ck_assert(!image_read(&img, "alpha.exr", &err));
     ck_assert_str_eq(err.text, "no R, G and B channels, nor a Y channel (its channels: A)");
     ck_assert_ptr_null(img.pixels);
+    /* A channel name that would be a terminal's control code is not printed as it is. */
+    write_with_library("escape.exr", "\033", EXR_PIXEL_HALF, EXR_COMPRESSION_ZIP, 2, 2, 0, 0);
+    ck_assert(!image_read(&img, "escape.exr", &err));
+    ck_assert_str_eq(err.text, "no R, G and B channels, nor a Y channel (its channels: ?)");
     /* Cut short: the header's end, then in the middle of the pixels. */
     Image good = float_test_image();
     ck_assert(image_write(&good, "good.exr", PNG_ENCODING_SRGB, &err));
