@@ -280,8 +280,17 @@ int main(int argc, char **argv)
         write_rgba("yc-tiny.exr", WRITE_YC, 2, 2, 0, 0, RLE_COMPRESSION);
         write_rgba("y.exr", WRITE_Y, 21, 13, 0, 0, ZIP_COMPRESSION);
         write_rgba("ya.exr", WRITE_YA, 21, 13, 3, -5, NO_COMPRESSION);
-        for (const char *name :
-             {"rgba.exr", "yc.exr", "yca.exr", "yc-rec2020.exr", "yc-tiny.exr", "y.exr", "ya.exr"})
+        // The other compressions, lossy ones included: raytra decodes through the C
+        // library, OpenEXR's reader through the C++ one.
+        write_rgba("rgba-pxr24.exr", WRITE_RGBA, 37, 23, 0, 0, PXR24_COMPRESSION);
+        write_rgba("rgba-b44.exr", WRITE_RGBA, 37, 23, 0, 0, B44_COMPRESSION);
+        write_rgba("yca-b44a.exr", WRITE_YCA, 36, 22, 0, 0, B44A_COMPRESSION);
+        write_rgba("rgba-dwaa.exr", WRITE_RGBA, 37, 23, 0, 0, DWAA_COMPRESSION);
+        write_rgba("yc-dwab.exr", WRITE_YC, 40, 30, 0, 0, DWAB_COMPRESSION);
+        write_rgba("y-zips.exr", WRITE_Y, 21, 13, 0, 0, ZIPS_COMPRESSION);
+        for (const char *name : {"rgba.exr", "yc.exr", "yca.exr", "yc-rec2020.exr", "yc-tiny.exr",
+                                 "y.exr", "ya.exr", "rgba-pxr24.exr", "rgba-b44.exr",
+                                 "yca-b44a.exr", "rgba-dwaa.exr", "yc-dwab.exr", "y-zips.exr"})
             expect_rgba_input(name);
         // Grey, alpha and depth: three channels of which raytra reads one.
         write_channels("yaz.exr",

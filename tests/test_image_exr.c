@@ -364,6 +364,24 @@ START_TEST(exr_from_openexr_rgba_output_file)
 }
 END_TEST
 
+START_TEST(exr_from_openexr_other_compressions)
+{
+    /* PXR24, B44, B44A (lossy: both readers decode the same bytes), ZIPS; DWAB at a size
+     * where its chunks are stored as they are. */
+    assert_read_as_openexr((const char *const[]){"rgba-pxr24.exr", "rgba-b44.exr", "yca-b44a.exr",
+                                                 "yc-dwab.exr", "y-zips.exr", NULL});
+    /* OpenEXR 3.1's C library cannot decompress DWAA: refused with its message. */
+    Image img;
+    Error err;
+    if (image_read(&img, "rgba-dwaa.exr", &err)) {
+        image_free(&img);
+        assert_reads_as_openexr("rgba-dwaa.exr");
+    } else {
+        ck_assert_str_eq(err.text, "DWA/A decompression not yet implemented in C");
+    }
+}
+END_TEST
+
 START_TEST(exr_from_openexr_output_file)
 {
     /* Grey with alpha and depth (once a crash in the library); many channels of all types
@@ -577,6 +595,7 @@ static Suite *exr_suite(void)
     tcase_add_test(tc, exr_grey_is_read_as_rgb);
     tcase_add_test(tc, exr_errors);
     tcase_add_test(tc, exr_from_openexr_rgba_output_file);
+    tcase_add_test(tc, exr_from_openexr_other_compressions);
     tcase_add_test(tc, exr_from_openexr_output_file);
     tcase_add_test(tc, exr_header_longer_than_4_kib);
     tcase_add_test(tc, exr_layouts_refused);
