@@ -10,7 +10,7 @@
 #   make check-starters  build every part's starter, stubbed and solved
 #   make valgrind    render scenes of every part, and broken inputs, under valgrind's memcheck
 #   make bench       benchmark part 1.4's BVH (against Embree 3 when installed; bench/README.md)
-#   make fuzz        build the libFuzzer harnesses of the scene and OBJ readers (clang)
+#   make fuzz        build the libFuzzer harnesses of the scene, OBJ and OpenEXR readers (clang)
 #   make fuzz-run    fuzz each reader for FUZZ_SECONDS (default 1800) s (docs/robustness.md)
 #   make mistakes    render the gallery of common mistakes and write docs/mistakes.md
 #
@@ -97,7 +97,8 @@ bench:
 	@$(SUBMAKE) -C bench run
 
 fuzz-run: fuzz
-	@tests/fuzz/run.sh scene $(FUZZ_SECONDS) && tests/fuzz/run.sh obj $(FUZZ_SECONDS)
+	@tests/fuzz/run.sh scene $(FUZZ_SECONDS) && tests/fuzz/run.sh obj $(FUZZ_SECONDS) && \
+	    tests/fuzz/run.sh exr $(FUZZ_SECONDS)
 
 # The README's pictures of the parts are the images make demo writes, byte for byte.
 check-demo:

@@ -71,5 +71,7 @@ bool image_read(Image *img, const char *path, Error *err);
 bool image_read_png(Image *img, const char *path, Error *err);
 bool image_read_pfm(Image *img, const char *path, Error *err);
 bool image_read_exr(Image *img, const char *path, Error *err);
+bool image_read_exr_stream(Image *img, FILE *f, const char *name, Error *err);
+bool image_exr_size(FILE *f, int *width, int *height, Error *err);
 
 #endif

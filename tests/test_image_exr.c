@@ -1,4 +1,4 @@
-/* test_image_exr.c: OpenEXR: exact round trips, and files the library writes by itself. */
+/* test_image_exr.c: OpenEXR: exact round trips, files other tools write, broken files. */
 #include <openexr.h>
 #include <stdint.h>
 #include <stdio.h>
@@ -108,16 +108,15 @@ static float value(char c, int x, int y)
  * names, of type ptype, with compression ctype, its data window starting at (x0, y0), in
  * scanlines or, when tile > 0, in tiles of tile x tile pixels. */
 static void write_with_library_tiled(const char *path, const char *names, exr_pixel_type_t ptype,
-                                     exr_compression_t ctype, int width, int height, int x0,
-                                     int y0, int tile)
+                                     exr_compression_t ctype, int width, int height, int x0, int y0,
+                                     int tile)
 {
     exr_context_t ctxt;
     exr_context_initializer_t init = EXR_DEFAULT_CONTEXT_INITIALIZER;
     ck_assert_int_eq(exr_start_write(&ctxt, path, EXR_WRITE_FILE_DIRECTLY, &init), 0);
     int part;
     ck_assert_int_eq(
-        exr_add_part(ctxt, "test", tile > 0 ? EXR_STORAGE_TILED : EXR_STORAGE_SCANLINE, &part),
-        0);
+        exr_add_part(ctxt, "test", tile > 0 ? EXR_STORAGE_TILED : EXR_STORAGE_SCANLINE, &part), 0);
     ck_assert_int_eq(exr_initialize_required_attr_simple(ctxt, part, width, height, ctype), 0);
     if (tile > 0)
         ck_assert_int_eq(exr_set_tile_descriptor(ctxt, part, (uint32_t)tile, (uint32_t)tile,
@@ -132,9 +131,8 @@ static void write_with_library_tiled(const char *path, const char *names, exr_pi
     int count = (int)strlen(names);
     for (int k = 0; k < count; k++) {
         char name[2] = {names[k], '\0'};
-        ck_assert_int_eq(exr_add_channel(ctxt, part, name, ptype, EXR_PERCEPTUALLY_LOGARITHMIC,
-                                         1, 1),
-                         0);
+        ck_assert_int_eq(
+            exr_add_channel(ctxt, part, name, ptype, EXR_PERCEPTUALLY_LOGARITHMIC, 1, 1), 0);
     }
     ck_assert_int_eq(exr_write_header(ctxt), 0);
     /* The values as floats, one plane per channel; the library converts them to ptype. */
@@ -153,11 +151,10 @@ static void write_with_library_tiled(const char *path, const char *names, exr_pi
     for (int cy = 0; cy < height; cy += step_y)
         for (int cx = 0; cx < width; cx += step_x) {
             exr_chunk_info_t chunk;
-            ck_assert_int_eq(tile > 0 ? exr_write_tile_chunk_info(ctxt, part, cx / tile,
-                                                                  cy / tile, 0, 0, &chunk)
-                                      : exr_write_scanline_chunk_info(ctxt, part, y0 + cy,
-                                                                      &chunk),
-                             0);
+            ck_assert_int_eq(
+                tile > 0 ? exr_write_tile_chunk_info(ctxt, part, cx / tile, cy / tile, 0, 0, &chunk)
+                         : exr_write_scanline_chunk_info(ctxt, part, y0 + cy, &chunk),
+                0);
             ck_assert_int_eq(first ? exr_encoding_initialize(ctxt, part, &chunk, &enc)
                                    : exr_encoding_update(ctxt, part, &chunk, &enc),
                              0);
@@ -239,13 +236,13 @@ START_TEST(exr_tiled_from_the_library)
      * data window away from the origin, and half and float samples. */
     Image img;
     Error err;
-    write_with_library_tiled("tiled.exr", "RGB", EXR_PIXEL_HALF, EXR_COMPRESSION_ZIP, 37, 21, 0,
-                             0, 16);
+    write_with_library_tiled("tiled.exr", "RGB", EXR_PIXEL_HALF, EXR_COMPRESSION_ZIP, 37, 21, 0, 0,
+                             16);
     ck_assert_msg(image_read(&img, "tiled.exr", &err), "%s", err.text);
     assert_rgb(&img, 37, 21, HALF_0_1);
     image_free(&img);
-    write_with_library_tiled("tiled-offset.exr", "BGRA", EXR_PIXEL_FLOAT, EXR_COMPRESSION_PIZ,
-                             37, 21, 5, -3, 16);
+    write_with_library_tiled("tiled-offset.exr", "BGRA", EXR_PIXEL_FLOAT, EXR_COMPRESSION_PIZ, 37,
+                             21, 5, -3, 16);
     ck_assert_msg(image_read(&img, "tiled-offset.exr", &err), "%s", err.text);
     assert_rgb(&img, 37, 21, 0.1f);
     image_free(&img);
@@ -273,8 +270,12 @@ START_TEST(exr_errors)
     /* No colour channels. */
     write_with_library("alpha.exr", "A", EXR_PIXEL_HALF, EXR_COMPRESSION_ZIP, 2, 2, 0, 0);
     ck_assert(!image_read(&img, "alpha.exr", &err));
-    ck_assert_str_eq(err.text, "no R, G and B channels, nor a Y channel");
+    ck_assert_str_eq(err.text, "no R, G and B channels, nor a Y channel (its channels: A)");
     ck_assert_ptr_null(img.pixels);
+    /* A channel name that would be a terminal's control code is not printed as it is. */
+    write_with_library("escape.exr", "\033", EXR_PIXEL_HALF, EXR_COMPRESSION_ZIP, 2, 2, 0, 0);
+    ck_assert(!image_read(&img, "escape.exr", &err));
+    ck_assert_str_eq(err.text, "no R, G and B channels, nor a Y channel (its channels: ?)");
     /* Cut short: the header's end, then in the middle of the pixels. */
     Image good = float_test_image();
     ck_assert(image_write(&good, "good.exr", PNG_ENCODING_SRGB, &err));
@@ -291,6 +292,279 @@ START_TEST(exr_errors)
     }
     free(data);
     image_free(&good);
+}
+END_TEST
+
+/* Returns the first place of the n bytes of what in data (size bytes), or NULL. */
+static const unsigned char *find_bytes(const unsigned char *data, size_t size, const void *what,
+                                       size_t n)
+{
+    for (size_t k = 0; k + n <= size; k++)
+        if (memcmp(data + k, what, n) == 0)
+            return data + k;
+    return NULL;
+}
+
+/* Writes the files of exr_writer.cpp (OpenEXR's C++ API) into the working folder, once. */
+static void need_openexr_files(void)
+{
+    if (access("rgba.exr", F_OK) == 0)
+        return;
+    char command[4096];
+    snprintf(command, sizeof command, "'%s' .", EXR_WRITER);
+    ck_assert_msg(system(command) == 0, "%s failed", command);
+}
+
+/* Asserts that raytra reads the file name as OpenEXR does: the same size and the same R, G
+ * and B, bit for bit, as name's .rgba (what RgbaInputFile, or InputFile, read of it). */
+static void assert_reads_as_openexr(const char *name)
+{
+    char expected[256];
+    snprintf(expected, sizeof expected, "%.*s.rgba", (int)strlen(name) - 4, name);
+    size_t size;
+    unsigned char *data = slurp(expected, &size);
+    int32_t wh[2];
+    ck_assert_uint_ge(size, sizeof wh);
+    memcpy(wh, data, sizeof wh);
+    ck_assert_uint_eq(size, sizeof wh + sizeof(float) * 4 * (size_t)wh[0] * (size_t)wh[1]);
+    Image img;
+    Error err;
+    ck_assert_msg(image_read(&img, name, &err), "%s: %s", name, err.text);
+    ck_assert_int_eq(img.width, wh[0]);
+    ck_assert_int_eq(img.height, wh[1]);
+    for (long k = 0; k < (long)wh[0] * wh[1]; k++)
+        for (int c = 0; c < 3; c++) {
+            float want;
+            memcpy(&want, data + sizeof wh + sizeof(float) * (size_t)(4 * k + c), sizeof want);
+            float got = img.pixels[3 * k + c];
+            ck_assert_msg(memcmp(&got, &want, sizeof got) == 0,
+                          "%s: pixel (%ld, %ld) channel %d is %.9g, OpenEXR reads %.9g", name,
+                          k % wh[0], k / wh[0], c, got, want);
+        }
+    image_free(&img);
+    free(data);
+}
+
+/* Asserts the above of every file of names (up to a NULL), which exr_writer writes. */
+static void assert_read_as_openexr(const char *const *names)
+{
+    need_openexr_files();
+    for (; *names != NULL; names++)
+        assert_reads_as_openexr(*names);
+}
+
+START_TEST(exr_from_openexr_rgba_output_file)
+{
+    /* RgbaOutputFile's layouts: RGBA; luminance and chroma (the chroma sampled 2 x 2) with
+     * and without alpha, default and Rec. 2020 chromaticities, compressed or not, the data
+     * window away from the origin, decreasing lines, 2 x 2 pixels; luminance alone and with
+     * alpha. RgbaInputFile's chroma filter and saturation fix are reproduced exactly. */
+    assert_read_as_openexr((const char *const[]){"rgba.exr", "yc.exr", "yca.exr", "yc-rec2020.exr",
+                                                 "yc-tiny.exr", "y.exr", "ya.exr", NULL});
+}
+END_TEST
+
+START_TEST(exr_from_openexr_other_compressions)
+{
+    /* PXR24, B44, B44A (lossy: both readers decode the same bytes), ZIPS; DWAB at a size
+     * where its chunks are stored as they are. */
+    assert_read_as_openexr((const char *const[]){"rgba-pxr24.exr", "rgba-b44.exr", "yca-b44a.exr",
+                                                 "yc-dwab.exr", "y-zips.exr", NULL});
+    /* OpenEXR 3.1's C library cannot decompress DWAA: refused with its message. */
+    Image img;
+    Error err;
+    if (image_read(&img, "rgba-dwaa.exr", &err)) {
+        image_free(&img);
+        assert_reads_as_openexr("rgba-dwaa.exr");
+    } else {
+        ck_assert_str_eq(err.text, "DWA/A decompression not yet implemented in C");
+    }
+}
+END_TEST
+
+START_TEST(exr_from_openexr_output_file)
+{
+    /* Grey with alpha and depth (once a crash in the library); many channels of all types
+     * and samplings; R, G and B with a Y (R, G and B read); R, G and B with subsampled
+     * channels raytra does not read, compressed and not; tiles with mipmap levels. */
+    assert_read_as_openexr((const char *const[]){"yaz.exr", "many.exr", "rgby.exr", "rgb-sub.exr",
+                                                 "rgb-sub-none.exr", "tiled-mipmap.exr", NULL});
+}
+END_TEST
+
+START_TEST(exr_header_longer_than_4_kib)
+{
+    /* many.exr's header holds its channels and a long comment before the data window. */
+    need_openexr_files();
+    size_t size;
+    unsigned char *data = slurp("many.exr", &size);
+    const unsigned char *at = find_bytes(data, size, "dataWindow", 11);
+    ck_assert_ptr_nonnull(at);
+    ck_assert_int_gt(at - data, 4096);
+    free(data);
+    FILE *f = fopen("many.exr", "rb");
+    int width = 0, height = 0;
+    Error err;
+    ck_assert_msg(image_exr_size(f, &width, &height, &err), "%s", err.text);
+    fclose(f);
+    ck_assert_int_eq(width, 40);
+    ck_assert_int_eq(height, 24);
+}
+END_TEST
+
+START_TEST(exr_layouts_refused)
+{
+    /* Files OpenEXR writes that raytra does not read: each refused, by the size check of
+     * a header too, with what is wrong. */
+    need_openexr_files();
+    static const char *const cases[][2] = {
+        {"two-parts.exr", "it has 2 parts: raytra reads single-part images only"},
+        {"deep.exr", "deep OpenEXR images cannot be read, only scanline and tiled ones"},
+        {"uint-y.exr", "channel Y holds unsigned integers: colour channels must be half or "
+                       "float"},
+        {"chroma-only.exr", "chroma channels RY, BY without the luminance Y (its channels: BY, "
+                            "RY)"},
+        {"rg.exr", "it has some of R, G and B but not all three (its channels: G, R)"},
+        {"y-sub.exr", "channel Y is sampled 2 x 2: raytra reads it sampled 1 x 1"},
+        {"yc-collinear.exr", "its chromaticities are degenerate (collinear primaries)"},
+    };
+    for (size_t k = 0; k < sizeof cases / sizeof cases[0]; k++) {
+        Image img;
+        Error err;
+        ck_assert_msg(!image_read(&img, cases[k][0], &err), "%s was read", cases[k][0]);
+        ck_assert_str_eq(err.text, cases[k][1]);
+        ck_assert_ptr_null(img.pixels);
+        FILE *f = fopen(cases[k][0], "rb");
+        int width, height;
+        ck_assert(!image_exr_size(f, &width, &height, &err));
+        ck_assert_str_eq(err.text, cases[k][1]);
+        fclose(f);
+    }
+}
+END_TEST
+
+/* Where the chunk of line y of the single-part scanline file at path (data, size bytes) is:
+ * the offset of its entry in the offset table (*entry) and of its leader (returned). */
+static size_t find_chunk(const char *path, const unsigned char *data, size_t size, int y,
+                         size_t *entry)
+{
+    exr_context_t ctxt;
+    exr_context_initializer_t init = EXR_DEFAULT_CONTEXT_INITIALIZER;
+    ck_assert_int_eq(exr_start_read(&ctxt, path, &init), 0);
+    exr_chunk_info_t chunk;
+    ck_assert_int_eq(exr_read_scanline_chunk_info(ctxt, 0, y, &chunk), 0);
+    exr_finish(&ctxt);
+    /* A scanline chunk: its line, its size, then its data. */
+    uint64_t leader = chunk.data_offset - 8;
+    unsigned char le[8];
+    for (int b = 0; b < 8; b++)
+        le[b] = (unsigned char)(leader >> (8 * b));
+    const unsigned char *at = find_bytes(data, size, le, 8);
+    ck_assert_ptr_nonnull(at);
+    *entry = (size_t)(at - data);
+    return (size_t)leader;
+}
+
+/* Stores the little-endian 32-bit v at p. */
+static void put32(unsigned char *p, uint32_t v)
+{
+    for (int b = 0; b < 4; b++)
+        p[b] = (unsigned char)(v >> (8 * b));
+}
+
+/* Writes size bytes of data to patched.exr, with the 4 bytes at offset at replaced by v
+ * (none when at is SIZE_MAX), and reads it: false when raytra refuses it (err then says why,
+ * img is empty). */
+static bool read_patched(const unsigned char *data, size_t size, size_t at, uint32_t v, Image *img,
+                         Error *err)
+{
+    unsigned char *copy = malloc(size);
+    memcpy(copy, data, size);
+    if (at != SIZE_MAX)
+        put32(copy + at, v);
+    FILE *f = fopen("patched.exr", "wb");
+    ck_assert_uint_eq(fwrite(copy, 1, size, f), size);
+    fclose(f);
+    free(copy);
+    bool ok = image_read(img, "patched.exr", err);
+    ck_assert(ok || img->pixels == NULL);
+    return ok;
+}
+
+/* Asserts that raytra refuses data patched (see read_patched) with a message holding want. */
+static void assert_patched_refused(const unsigned char *data, size_t size, size_t at, uint32_t v,
+                                   const char *want)
+{
+    Image img;
+    Error err;
+    ck_assert_msg(!read_patched(data, size, at, v, &img, &err), "read with %u at %zu (%s)", v, at,
+                  want);
+    ck_assert_msg(strstr(err.text, want) != NULL, "message '%s' lacks '%s'", err.text, want);
+}
+
+/* Asserts that raytra refuses data patched (see read_patched), or reads it as the file
+ * unpatched (the library rebuilds an offset table that does not hold). */
+static void assert_patched_refused_or_right(const unsigned char *data, size_t size, size_t at,
+                                            uint32_t v, const char *path)
+{
+    Image img, right;
+    Error err;
+    if (!read_patched(data, size, at, v, &img, &err)) {
+        ck_assert_str_ne(err.text, "");
+        return;
+    }
+    ck_assert(image_read(&right, path, &err));
+    ck_assert_int_eq(img.width, right.width);
+    ck_assert_int_eq(img.height, right.height);
+    ck_assert_mem_eq(img.pixels, right.pixels, sizeof(float) * 3 * (size_t)img.width * img.height);
+    image_free(&img);
+    image_free(&right);
+}
+
+START_TEST(exr_broken_chunks_refused)
+{
+    /* Uncompressed floats, 5 x 3: one line a chunk, 60 bytes (R, G and B, 5 x 4 bytes). */
+    write_with_library("none.exr", "RGB", EXR_PIXEL_FLOAT, EXR_COMPRESSION_NONE, 5, 3, 0, 0);
+    size_t size;
+    unsigned char *data = slurp("none.exr", &size);
+    size_t entry0, entry1;
+    size_t leader0 = find_chunk("none.exr", data, size, 0, &entry0);
+    size_t leader1 = find_chunk("none.exr", data, size, 1, &entry1);
+    /* A chunk shorter or longer than its lines, or empty, with the file otherwise whole. */
+    assert_patched_refused(data, size, leader1 + 4, 30,
+                           "the chunk of lines 1 to 1 holds 30 bytes, its lines need 60 "
+                           "(uncompressed)");
+    assert_patched_refused(data, size, leader1 + 4, 59, "holds 59 bytes, its lines need 60");
+    assert_patched_refused(data, size, leader0 + 4, 0, "packed size of 0");
+    assert_patched_refused(data, size, leader1 + 4, 0x7fffffff, "leader");
+    /* Offsets that lie: beyond the file, into the header, at another chunk. */
+    assert_patched_refused_or_right(data, size, entry1, (uint32_t)size + 100, "none.exr");
+    assert_patched_refused_or_right(data, size, entry1, 12, "none.exr");
+    assert_patched_refused_or_right(data, size, entry1, (uint32_t)leader0, "none.exr");
+    /* Cut in the middle of the last chunk. */
+    assert_patched_refused(data, size - 10, SIZE_MAX, 0, "");
+    /* A data window of 40000 x 3 pixels. */
+    const unsigned char *dw = find_bytes(data, size, "dataWindow\0box2i", 17);
+    ck_assert_ptr_nonnull(dw);
+    size_t max_x = (size_t)(dw - data) + 17 + 4 + 8;
+    assert_patched_refused(data, size, max_x, 39999, "");
+    free(data);
+    /* A compressed chunk whose size says less than it holds. */
+    write_with_library("zip.exr", "RGB", EXR_PIXEL_HALF, EXR_COMPRESSION_ZIP, 8, 20, 0, 0);
+    data = slurp("zip.exr", &size);
+    leader0 = find_chunk("zip.exr", data, size, 0, &entry0);
+    uint32_t packed = (uint32_t)data[leader0 + 4] | (uint32_t)data[leader0 + 5] << 8;
+    assert_patched_refused(data, size, leader0 + 4, packed / 2, "");
+    free(data);
+    /* Luminance and chroma, uncompressed: a line with chroma (0) and one without (1). */
+    need_openexr_files();
+    data = slurp("yc-rec2020.exr", &size);
+    leader0 = find_chunk("yc-rec2020.exr", data, size, 0, &entry0);
+    leader1 = find_chunk("yc-rec2020.exr", data, size, 1, &entry1);
+    assert_patched_refused(data, size, leader0 + 4, 60, "holds 60 bytes, its lines need 120");
+    assert_patched_refused(data, size, leader1 + 4, 30, "holds 30 bytes, its lines need 60");
+    assert_patched_refused_or_right(data, size, entry1, (uint32_t)leader0, "yc-rec2020.exr");
+    free(data);
 }
 END_TEST
 
@@ -320,6 +594,12 @@ static Suite *exr_suite(void)
     tcase_add_test(tc, exr_tiled_from_the_library);
     tcase_add_test(tc, exr_grey_is_read_as_rgb);
     tcase_add_test(tc, exr_errors);
+    tcase_add_test(tc, exr_from_openexr_rgba_output_file);
+    tcase_add_test(tc, exr_from_openexr_other_compressions);
+    tcase_add_test(tc, exr_from_openexr_output_file);
+    tcase_add_test(tc, exr_header_longer_than_4_kib);
+    tcase_add_test(tc, exr_layouts_refused);
+    tcase_add_test(tc, exr_broken_chunks_refused);
     tcase_add_test(tc, exr_write_stops_when_asked);
     suite_add_tcase(s, tc);
     return s;

@@ -74,7 +74,7 @@ what="$part: --check" expected=0
 memcheck "$raytra" --check "$top/scenes/demo.scn"
 
 # Every input the fuzzers kept: thousands of small error paths, in two runs.
-for harness in scene obj; do
+for harness in scene obj exr; do
     driver=$top/tests/fuzz/build/regress-$harness
     [ -x "$driver" ] || continue
     what="fuzzing regressions and corpus of the $harness reader" expected=0

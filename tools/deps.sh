@@ -4,8 +4,10 @@
 # Usage: tools/deps.sh [build|test|bench|chromium]
 #   build  needs a C compiler, make, pkg-config, and the headers of libpng and of
 #          OpenEXR 3 (its C API, openexr.h);
-#   test   needs, in addition, the Check unit-test framework, and Chromium, in which
-#          tests/grade-report.sh opens the grading report (headless);
+#   test   needs, in addition, the Check unit-test framework, a C++ compiler (for
+#          tests/exr_writer.cpp, which writes OpenEXR test files with the library's C++
+#          API), and Chromium, in which tests/grade-report.sh opens the grading report
+#          (headless);
 #   bench  needs, in addition to build, Embree 3 for the benchmark's baseline;
 #   chromium  prints the path of the Chromium to run and installs nothing: $CHROMIUM
 #          when set (a path, or a name on PATH), else the first of chromium,
@@ -51,6 +53,9 @@ if ! pkg-config --exists 'OpenEXR >= 3' 2>/dev/null && [ ! -f /usr/include/OpenE
 fi
 if [ $need_check = yes ] && ! pkg-config --exists check 2>/dev/null; then
     missing="$missing check"
+fi
+if [ $need_check = yes ] && ! command -v c++ >/dev/null 2>&1; then
+    missing="$missing g++"
 fi
 if [ $need_embree = yes ] && [ ! -f /usr/include/embree3/rtcore.h ]; then
     missing="$missing libembree-dev"

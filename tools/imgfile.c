@@ -11,7 +11,8 @@
 
 #include "image.h"
 
-/* The largest header read: a PNG's IHDR is at byte 16, an EXR's dataWindow within it. */
+/* The first bytes read: a PNG's IHDR is at byte 16, a PFM's size within them. An EXR's
+ * header, of any length, is parsed by the OpenEXR library. */
 #define HEADER_BYTES 4096
 
 /* Returns what a file that is not a regular one is, in words: "a FIFO". */
@@ -66,39 +67,6 @@ static uint32_t big32(const unsigned char *p)
     return (uint32_t)p[0] << 24 | (uint32_t)p[1] << 16 | (uint32_t)p[2] << 8 | p[3];
 }
 
-/* Returns the little-endian 32-bit number at p (EXR). */
-static int32_t little32(const unsigned char *p)
-{
-    return (int32_t)((uint32_t)p[3] << 24 | (uint32_t)p[2] << 16 | (uint32_t)p[1] << 8 | p[0]);
-}
-
-/* Finds an EXR's size in its header: after the magic and version come attributes, each
- * NAME\0 TYPE\0 SIZE VALUE, until an empty name; dataWindow is a box2i (xmin, ymin, xmax,
- * ymax). False when the header in h[0..n) holds none. */
-static bool exr_size(const unsigned char *h, size_t n, long *width, long *height)
-{
-    size_t p = 8;
-    while (p < n && h[p] != '\0') {
-        const char *name = (const char *)h + p;
-        size_t name_len = strnlen(name, n - p);
-        size_t type = p + name_len + 1;
-        size_t type_len = type < n ? strnlen((const char *)h + type, n - type) : n;
-        size_t value = type + type_len + 5;
-        if (value > n)
-            return false;
-        int32_t size = little32(h + value - 4);
-        if (size < 0 || (size_t)size > n - value)
-            return false;
-        if (strcmp(name, "dataWindow") == 0 && size == 16) {
-            *width = (long)little32(h + value + 8) - little32(h + value) + 1;
-            *height = (long)little32(h + value + 12) - little32(h + value + 4) + 1;
-            return true;
-        }
-        p = value + (size_t)size;
-    }
-    return false;
-}
-
 /* Reads the format and size of the image at path from its header alone, so that sizes are
  * compared, and huge images refused, before anything is decoded: a 0.5 MB PNG may hold
  * 8192 x 8192 pixels. False (err) when the file is not a PNG, PFM or EXR image. */
@@ -111,7 +79,6 @@ bool imgfile_header(const char *path, ImgFileKind *kind, int *width, int *height
     if (fd < 0)
         return false;
     ssize_t got = read(fd, h, HEADER_BYTES);
-    close(fd);
     size_t n = got > 0 ? (size_t)got : 0;
     h[n] = '\0';
     long w = 0, ht = 0;
@@ -125,10 +92,19 @@ bool imgfile_header(const char *path, ImgFileKind *kind, int *width, int *height
         if (sscanf((const char *)h + 2, "%ld %ld", &w, &ht) != 2)
             w = ht = 0;
     } else if (n >= 8 && memcmp(h, exr_magic, 4) == 0) {
+        /* The library parses the header, and checks its size and channels. */
         *kind = IMGFILE_EXR;
-        if (!exr_size(h, n, &w, &ht))
-            w = ht = 0;
+        FILE *f = fdopen(fd, "rb");
+        if (f == NULL) {
+            error_set(err, "%s", strerror(errno));
+            close(fd);
+            return false;
+        }
+        bool ok = image_exr_size(f, width, height, err);
+        fclose(f);
+        return ok;
     }
+    close(fd);
     if (*kind == IMGFILE_UNKNOWN) {
         error_set(err, n == 0 ? "empty file" : "not a PNG, PFM or OpenEXR image");
         return false;

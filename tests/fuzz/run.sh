@@ -1,29 +1,36 @@
 #!/bin/sh
-# run.sh: fuzzes the scene or the OBJ reader for a given time, then minimises the kept corpus.
+# run.sh: fuzzes the scene, OBJ or OpenEXR reader for a given time, then minimises the kept corpus.
 #
-# Usage: tests/fuzz/run.sh scene|obj SECONDS [libFuzzer options...]
+# Usage: tests/fuzz/run.sh scene|obj|exr SECONDS [libFuzzer options...]
 #
 # Builds the fuzzers (make -C tests/fuzz), then runs one on a corpus that grows in
 # tests/fuzz/build-fuzz/corpus-HARNESS/ (kept between runs, not in git), seeded with the
-# project's scenes or meshes, the bad-input corpus, the committed corpus and every
-# regression. Crashes are written to build-fuzz/crash-HARNESS/. At the end the grown corpus
+# project's scenes or meshes, the bad-input corpus (for OpenEXR: the files tests/exr_writer
+# writes with OpenEXR's C++ API), the committed corpus and every regression. Crashes are written to build-fuzz/crash-HARNESS/. At the end the grown corpus
 # is merged (-merge=1: the fewest inputs that keep all coverage) into the committed
 # tests/fuzz/corpus-HARNESS/. The log is build-fuzz/HARNESS.log; its last lines are
 # libFuzzer's final statistics. Exit status: 0 when no crash was found.
 # The fuzzers need clang with its libFuzzer runtime (Debian: clang and libclang-rt-dev).
 set -u
-[ $# -ge 2 ] || { echo "usage: $0 scene|obj SECONDS [libFuzzer options...]" >&2; exit 2; }
+[ $# -ge 2 ] || { echo "usage: $0 scene|obj|exr SECONDS [libFuzzer options...]" >&2; exit 2; }
 harness=$1 seconds=$2
 shift 2
 here=$(cd "$(dirname "$0")" && pwd)
 top=$(cd "$here/../.." && pwd)
+work=$here/build-fuzz
+max_len=8192
 case $harness in
 scene) seeds="$top/scenes $top/tests/bad-input" dict=$here/scene.dict ;;
 obj) seeds="$top/scenes/meshes $here/seed-obj $top/tests/bad-input" dict=$here/obj.dict ;;
-*) echo "run.sh: no harness '$harness' (scene or obj)" >&2; exit 2 ;;
+exr)
+    seeds=$work/seed-exr dict=$here/exr.dict max_len=32768
+    make -s -C "$top/tests" build/exr_writer || exit 2
+    mkdir -p "$seeds" && "$top/tests/build/exr_writer" "$seeds" || exit 2
+    rm -f "$seeds"/*.rgba
+    ;;
+*) echo "run.sh: no harness '$harness' (scene, obj or exr)" >&2; exit 2 ;;
 esac
 make -s -C "$here" fuzzers || exit 2
-work=$here/build-fuzz
 fuzzer=$work/fuzz-$harness
 grown=$work/corpus-$harness
 crashes=$work/crash-$harness
@@ -38,7 +45,7 @@ done
 
 echo "run.sh: fuzzing $harness for $seconds s; log in $log"
 # shellcheck disable=SC2086 # the folders are words by design (paths without blanks)
-"$fuzzer" -max_total_time="$seconds" -dict="$dict" -max_len=8192 -timeout=10 \
+"$fuzzer" -max_total_time="$seconds" -dict="$dict" -max_len=$max_len -timeout=10 \
     -print_final_stats=1 -artifact_prefix="$crashes/" "$@" "$grown" $folders >"$log" 2>&1
 status=$?
 tail -n 20 "$log" | grep -e '^stat::' -e 'DONE' -e 'ERROR' -e 'Test unit written'
@@ -47,7 +54,7 @@ tail -n 20 "$log" | grep -e '^stat::' -e 'DONE' -e 'ERROR' -e 'Test unit written
 merged=$work/merged-$harness
 rm -rf "$merged"
 mkdir -p "$merged"
-"$fuzzer" -merge=1 -max_len=8192 -timeout=10 "$merged" "$here/corpus-$harness" "$grown" \
+"$fuzzer" -merge=1 -max_len=$max_len -timeout=10 "$merged" "$here/corpus-$harness" "$grown" \
     >"$work/$harness-merge.log" 2>&1 || {
     echo "run.sh: the merge failed; see $work/$harness-merge.log" >&2
     exit 1
