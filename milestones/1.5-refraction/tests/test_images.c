@@ -157,6 +157,17 @@ START_TEST(trace_pixel_tells_the_glass)
     ck_assert_contains(text, "times a^t, absorbed inside = (0.0625, 0.0625, 0.0625)");
     /* The reflected ray off the front goes back past the camera into the background. */
     ck_assert_contains(text, "hits nothing: the black background");
+    /* --trace-pixel writes no image: an output it could not write (in a missing folder,
+     * of an unknown format, the scene itself) is no reason to refuse, and is left alone. */
+    ck_assert_int_eq(system("cp glass.scn glass.orig"), 0);
+    const char *outputs[] = {"no-such-folder/out.png", "out.jpg", "glass.scn"};
+    for (int k = 0; k < 3; k++) {
+        snprintf(command, sizeof command,
+                 "'%s' -q --trace-pixel 1,1 glass.scn %s > again 2>&1 && cmp -s tree again && "
+                 "cmp -s glass.scn glass.orig",
+                 RAYTRA, outputs[k]);
+        ck_assert_msg(system(command) == 0, "with the output %s", outputs[k]);
+    }
 }
 END_TEST
 
@@ -206,35 +217,6 @@ START_TEST(a_mirror_of_glass_ends)
 }
 END_TEST
 
-START_TEST(trace_pixel_needs_no_output)
-{
-    /* --trace-pixel writes no image: an output it could not write is no reason to refuse. */
-    FILE *f = fopen("glass.scn", "w");
-    fputs("c 0 0 10  0 0 -1  1  1 1  3 3\nl a 1 1 1\nm 1 1 1  0 0 0  1  0 0 0\np 0 0 1 10\n", f);
-    fclose(f);
-    const char *outputs[] = {"no-such-folder/out.png", "out.jpg", "glass.scn"};
-    for (int k = 0; k < 3; k++) {
-        char command[1024];
-        snprintf(command, sizeof command, "'%s' -q --trace-pixel 1,1 glass.scn %s > tree 2>&1",
-                 RAYTRA, outputs[k]);
-        ck_assert_int_eq(system(command), 0);
-        static char text[1 << 16];
-        f = fopen("tree", "r");
-        size_t n = fread(text, 1, sizeof text - 1, f);
-        text[n] = '\0';
-        fclose(f);
-        ck_assert_contains(text, "pixel 1,1 of 3 x 3");
-        ck_assert_ptr_null(strstr(text, "cannot write"));
-    }
-    /* The scene given as the output is neither refused nor written over. */
-    f = fopen("glass.scn", "r");
-    char first[8] = "";
-    ck_assert(fread(first, 1, 7, f) == 7);
-    fclose(f);
-    ck_assert_str_eq(first, "c 0 0 1");
-}
-END_TEST
-
 /* The image tests. */
 static Suite *images_suite(void)
 {
@@ -247,7 +229,6 @@ static Suite *images_suite(void)
     tcase_add_test(tc, trace_pixel_tells_the_glass);
     tcase_add_test(tc, an_open_glass_mesh_is_warned_about_once);
     tcase_add_test(tc, a_mirror_of_glass_ends);
-    tcase_add_test(tc, trace_pixel_needs_no_output);
     suite_add_tcase(s, tc);
     return s;
 }
