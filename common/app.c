@@ -32,8 +32,9 @@ static int interrupted(const char *output)
 /* Ends the process at once after a stop, when threads given up by the render loop still
  * use the scene and the image: nothing is freed, flushed or written (no file of the image
  * exists yet, and standard error is unbuffered), so nothing they use disappears. */
-static _Noreturn void give_up(const char *output)
+static _Noreturn void give_up(const char *output, const char *what)
 {
+    fprintf(stderr, "raytra: note: stopped without waiting for %s to finish\n", what);
     _exit(interrupted(output));
 }
 
@@ -359,7 +360,7 @@ static bool render(const Program *program, void *ctx, const Options *opts, const
     render_image(img, &job, result);
     /* Threads given up after a stop still use job, view, ctx and img: never return. */
     if (result->abandoned)
-        give_up(output);
+        give_up(output, "the pixels under way");
     if (result->stopped)
         return false;
     if (view.kind != VIEW_NONE)
@@ -440,7 +441,7 @@ int app_main(const Program *program, int argc, char **argv)
         TraceJob trace = {program, ctx, &scene, &opts, trace_x, trace_y, trace_sample};
         /* A trace given up after a stop still prints from the scene: never return. */
         if (!render_call(trace_one_pixel, &trace))
-            give_up(NULL);
+            give_up(NULL, "the trace");
         status = EXIT_SUCCESS;
         goto done;
     }

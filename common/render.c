@@ -17,11 +17,12 @@
 /* More threads than this buys nothing on any machine a course uses. */
 #define RENDER_MAX_THREADS 256
 
-/* The stack of every render thread. A path of the largest --max-depth, 1000, takes about
- * 1.5 MiB of it at -O2 (a kilobyte a bounce in parts 1.5 and 1.6), several times that
+/* The stack of every render thread. A path of the largest --max-depth, 1000, takes less
+ * than 2 MiB of it at -O2 (about 1.5 KiB a bounce in parts 1.5 and 1.6), a few times that
  * under the sanitizers; asking for it explicitly makes the depth work whatever
- * `ulimit -s` gives the main thread, which is also the default of other threads. */
-#define RENDER_STACK_SIZE ((size_t)64 << 20)
+ * `ulimit -s` gives the main thread, which is also the default of other threads. More
+ * costs nothing natively but is slow under valgrind, which marks all of it. */
+#define RENDER_STACK_SIZE ((size_t)16 << 20)
 
 /* After a stop request, how long the waiting thread lets the workers finish their pixel
  * before it gives them up, and how often it looks at the request meanwhile (seconds). */

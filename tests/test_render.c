@@ -201,12 +201,12 @@ static unsigned deep(int n)
     return deep(n - 1) + frame[n % sizeof frame];
 }
 
-/* A pixel that needs 24 MiB of stack: more than a default thread gets (8 MiB, from
- * `ulimit -s`), less than a render thread's. */
+/* A pixel that needs 12 MiB of stack: more than a default thread gets (8 MiB, from
+ * `ulimit -s`), less than a render thread's 16. */
 static Color deep_pixel(const void *ctx, int i, int j, RayStats *stats)
 {
     (void)ctx, (void)i, (void)j, (void)stats;
-    return color(deep(24 * 1024) > 0, 0, 0);
+    return color(deep(12 * 1024) > 0, 0, 0);
 }
 
 START_TEST(render_threads_have_a_deep_stack)
@@ -235,7 +235,7 @@ static void call_me(void *arg)
             nap();
         return;
     }
-    a->depth_result = deep(24 * 1024);
+    a->depth_result = deep(12 * 1024);
 }
 
 START_TEST(render_call_runs_deep_and_gives_up_after_a_stop)
