@@ -160,6 +160,31 @@ interrupt_render() {
 interrupt_render long.scn INT 1 20 "SIGINT (-j 1)" no
 interrupt_render long.scn TERM 2 20 "SIGTERM (-j 2)" no
 
+# Sends SIGINT to raytra, which must end within 1 s with exit status 130 and a standard
+# error that holds each of the patterns after $1, which names the case.
+sigint_ends() {
+    what=$1
+    shift
+    kill -INT "$pid"
+    if ! ends_within 10; then
+        kill -KILL "$pid"
+        wait "$pid"
+        fail "$what: raytra was still running 1 s after SIGINT"
+        return
+    fi
+    wait "$pid"
+    status=$?
+    for pattern; do
+        grep -q -- "$pattern" err || status="$status, without '$pattern'"
+    done
+    if [ "$status" = 130 ]; then
+        ok "$what: stopped within 1 s, exit status 130"
+    else
+        fail "$what: exit status $status; expected 130 and the messages:"
+        sed 's/^/    /' err
+    fi
+}
+
 # SIGINT while loading: the pipe never ends, so only the signal can stop the reading.
 for kind in lines line; do
     start out/image.png
@@ -176,21 +201,7 @@ for kind in lines line; do
     n=0
     while [ ! -e opened ] && [ "$n" -lt 600 ]; do sleep 0.1; n=$((n + 1)); done
     sleep 0.5
-    kill -INT "$pid"
-    if ! ends_within 10; then
-        kill -KILL "$pid"
-        wait "$pid"
-        fail "SIGINT while reading endless $kind: raytra was still running 1 s after it"
-    else
-        wait "$pid"
-        status=$?
-        if [ "$status" -eq 130 ] && grep -q "interrupted; 'out/image.png' was not written" err; then
-            ok "SIGINT while reading endless $kind: stopped within 1 s, exit status 130"
-        else
-            fail "SIGINT while reading endless $kind: exit status $status, expected 130 and the message:"
-            sed 's/^/    /' err
-        fi
-    fi
+    sigint_ends "SIGINT while reading endless $kind" "interrupted; 'out/image.png' was not written"
     kill "$feeder" 2>/dev/null
     wait "$feeder" 2>/dev/null
 done
@@ -299,22 +310,8 @@ EOF
         sed 's/^/    /' err
     else
         sleep 0.5
-        kill -INT "$pid"
-        if ! ends_within 10; then
-            kill -KILL "$pid"
-            wait "$pid"
-            fail "--trace-pixel into a full pipe: raytra was still running 1 s after SIGINT"
-        else
-            wait "$pid"
-            status=$?
-            if [ "$status" -eq 130 ] && grep -q "^raytra: interrupted$" err &&
-                grep -q "stopped without waiting for the trace" err; then
-                ok "--trace-pixel into a full pipe: stopped within 1 s, exit status 130"
-            else
-                fail "--trace-pixel into a full pipe: exit status $status, expected 130 and the message:"
-                sed 's/^/    /' err
-            fi
-        fi
+        sigint_ends "--trace-pixel into a full pipe" "^raytra: interrupted$" \
+            "stopped without waiting for the trace"
     fi
     kill "$reader" 2>/dev/null
     wait "$reader" 2>/dev/null
