@@ -342,9 +342,10 @@ static Color view_pixel(const void *ctx, int i, int j, RayStats *stats)
     return debugview_color(view->kind, &probe);
 }
 
-/* Renders the scene with the part's pixel function, or the view's, into img; false
- * when stopped. Pixels that came out NaN or infinite are told loudly: they are a bug, or
- * a scene the parser should have refused. */
+/* Renders the scene with the part's pixel function, or the view's, into img; false when
+ * stopped (and the process ends at once when pixels under way had to be given up).
+ * Pixels that came out NaN or infinite are told loudly: they are a bug, or a scene the
+ * parser should have refused. */
 static bool render(const Program *program, void *ctx, const Options *opts, const Scene *scene,
                    Image *img, RenderResult *result, const char *output)
 {
