@@ -67,7 +67,7 @@ check-bad-input:
 	@tests/bad-input.sh $(LATEST)
 
 check-interrupt:
-	@tests/interrupt.sh $(FIRST)
+	@tests/interrupt.sh $(FIRST) $(LATEST)
 
 check-nonfinite:
 	@for part in $(PARTS); do \

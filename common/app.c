@@ -14,6 +14,30 @@
 
 enum { EXIT_USAGE = 2 };
 
+/* A --trace-pixel that would print more lines than this is refused: nobody reads them
+ * (at P = S = 64, 17 million lines, 1.5 GB), and tracing one sample (@K) says as much. */
+#define TRACE_MAX_LINES 1000000.0
+
+/* Says that the run was interrupted and that output (if any: --trace-pixel writes none)
+ * was not written; returns the exit status, 128 + the signal's number. */
+static int interrupted(const char *output)
+{
+    if (output != NULL)
+        fprintf(stderr, "raytra: interrupted; '%s' was not written\n", output);
+    else
+        fprintf(stderr, "raytra: interrupted\n");
+    return 128 + stop_signal();
+}
+
+/* Ends the process at once after a stop, when threads given up by the render loop still
+ * use the scene and the image: nothing is freed, flushed or written (no file of the image
+ * exists yet, and standard error is unbuffered), so nothing they use disappears. */
+static _Noreturn void give_up(const char *output, const char *what)
+{
+    fprintf(stderr, "raytra: note: stopped without waiting for %s to finish\n", what);
+    _exit(interrupted(output));
+}
+
 /* Tells the user, once, which parts of the scene this part of the course does not use. */
 static void note_ignored(const Program *program, const Scene *scene)
 {
@@ -190,15 +214,29 @@ static bool parse_pixel(const char *text, const CameraSpec *c, int sample_count,
     return true;
 }
 
-/* Traces the one pixel (x, y) of --trace-pixel, printing its ray tree and its colour
- * before and after clamping and encoding; or, with @SAMPLE, the tree and the colour of
- * that one sample. Row y counts from the top, as in the image; the pixel function's j
- * counts from the bottom, as in the lecture:
- * slide 38 ("relationship of (i, j) th pixel in image plane to u, v"). */
-static void trace_one_pixel(const Program *program, const void *ctx, const Scene *scene,
-                            const Options *opts, int x, int y, int sample)
+/* What --trace-pixel traces: the pixel (x, y), and with sample >= 0 that one sample. */
+typedef struct {
+    const Program *program;
+    const void *ctx;
+    const Scene *scene;
+    const Options *opts;
+    int x, y, sample;
+} TraceJob;
+
+/* Traces the one pixel of --trace-pixel, printing its ray tree and its colour before and
+ * after clamping and encoding; or, with @SAMPLE, the tree and the colour of that one
+ * sample. Row y counts from the top, as in the image; the pixel function's j counts from
+ * the bottom, as in the lecture:
+ * slide 38 ("relationship of (i, j) th pixel in image plane to u, v").
+ * Runs on a render thread (render_call), whose stack holds the deepest path. */
+static void trace_one_pixel(void *arg)
 {
-    const CameraSpec *c = &scene->camera;
+    const TraceJob *t = arg;
+    const Program *program = t->program;
+    const Options *opts = t->opts;
+    const void *ctx = t->ctx;
+    int x = t->x, y = t->y, sample = t->sample;
+    const CameraSpec *c = &t->scene->camera;
     int j = c->ny - 1 - y;
     printf("pixel %d,%d of %d x %d (column from the left, row from the top): i = %d, "
            "j = %d counted from the bottom, its centre at image point (%g, %g)\n",
@@ -220,6 +258,51 @@ static void trace_one_pixel(const Program *program, const void *ctx, const Scene
            fmin(fmax(radiance.g, 0), 1), fmin(fmax(radiance.b, 0), 1),
            opts->linear ? "linear" : "sRGB", image_encode_8bit(radiance.r, enc),
            image_encode_8bit(radiance.g, enc), image_encode_8bit(radiance.b, enc));
+}
+
+/* Tells whether the trace of --trace-pixel is short enough to be read; refuses it (false,
+ * reported) when it would print more than TRACE_MAX_LINES lines, and warns when it may.
+ * The estimate: every sample traced prints its camera ray and its first hit, about 8
+ * lines, 3 for each point, directional and (before part 1.6) area light, and in part 1.6
+ * one for each of the S x S shadow rays to each area light; mirrors and glass add up to
+ * --max-depth more hits a sample. */
+static bool trace_size_ok(const Program *program, const Scene *scene, const Options *opts,
+                          int sample)
+{
+    bool samples = program->sample != NULL;
+    double per_pixel = samples && sample < 0 ? (double)opts->samples * opts->samples : 1;
+    double shadow = samples ? (double)opts->light_samples * opts->light_samples : 3;
+    int area = 0;
+    for (int k = 0; k < scene->light_count; k++)
+        area += scene->lights[k].kind == LIGHT_AREA;
+    double per_hit = 8 + 3.0 * (scene->light_count - area) + shadow * area;
+    double lines = per_pixel * (2 + per_hit);
+    unsigned bounces =
+        scene_features(scene) & program->features & (FEATURE_MIRRORS | FEATURE_REFRACTION);
+    double most = bounces != 0 ? lines + per_pixel * per_hit * opts->max_depth : lines;
+    if (lines <= TRACE_MAX_LINES && most <= TRACE_MAX_LINES)
+        return true;
+    char how[200] = "";
+    if (samples && sample < 0)
+        snprintf(how, sizeof how,
+                 "; trace one of its %d samples with --trace-pixel %s@K (K from 0 to %d)",
+                 opts->samples * opts->samples, opts->trace_pixel,
+                 opts->samples * opts->samples - 1);
+    if (lines > TRACE_MAX_LINES) {
+        fprintf(stderr,
+                "raytra: --trace-pixel %s would print at least %.3g million lines (%.0f at "
+                "each hit%s%s), more than anyone reads: refused%s%s\n",
+                opts->trace_pixel, lines / 1e6, per_hit,
+                per_pixel > 1 ? ", for each of the pixel's samples" : "",
+                samples && area > 0 ? ", with S x S shadow rays to each area light" : "", how,
+                samples ? ", or lower --samples or --light-samples" : "");
+        return false;
+    }
+    fprintf(stderr,
+            "raytra: warning: --trace-pixel %s may print up to %.3g million lines (%.0f at "
+            "each hit, and up to --max-depth %d bounces)%s\n",
+            opts->trace_pixel, most / 1e6, per_hit, opts->max_depth, how);
+    return true;
 }
 
 /* Tells whether the --view asked for, if any, is one this part can draw; says why not. */
@@ -266,11 +349,12 @@ static Color view_pixel(const void *ctx, int i, int j, RayStats *stats)
     return debugview_color(view->kind, &probe);
 }
 
-/* Renders the scene with the part's pixel function, or the view's, into img; false
- * when stopped. Pixels that came out NaN or infinite are told loudly: they are a bug, or
- * a scene the parser should have refused. */
+/* Renders the scene with the part's pixel function, or the view's, into img; false when
+ * stopped (and the process ends at once when pixels under way had to be given up).
+ * Pixels that came out NaN or infinite are told loudly: they are a bug, or a scene the
+ * parser should have refused. */
 static bool render(const Program *program, void *ctx, const Options *opts, const Scene *scene,
-                   Image *img, RenderResult *result)
+                   Image *img, RenderResult *result, const char *output)
 {
     ViewJob view = {program, ctx, VIEW_NONE};
     if (opts->view != NULL)
@@ -282,6 +366,9 @@ static bool render(const Program *program, void *ctx, const Options *opts, const
         .progress = !opts->quiet && isatty(STDERR_FILENO),
     };
     render_image(img, &job, result);
+    /* Threads given up after a stop still use job, view, ctx and img: never return. */
+    if (result->abandoned)
+        give_up(output, "the pixels under way");
     if (result->stopped)
         return false;
     if (view.kind != VIEW_NONE)
@@ -323,7 +410,9 @@ int app_main(const Program *program, int argc, char **argv)
         status = check_scene(program, &opts) ? EXIT_SUCCESS : EXIT_FAILURE;
         goto done;
     }
-    if (image_format_for_path(output) == IMAGE_FORMAT_UNKNOWN) {
+    /* --trace-pixel writes no image: its output is neither checked nor needed. */
+    bool tracing = opts.trace_pixel != NULL;
+    if (!tracing && image_format_for_path(output) == IMAGE_FORMAT_UNKNOWN) {
         fprintf(stderr,
                 "raytra: cannot write '%s': unknown image format (use .png, .pfm or .exr)\n",
                 output);
@@ -331,14 +420,15 @@ int app_main(const Program *program, int argc, char **argv)
         goto done;
     }
     /* Find out now, not after a long render, that the image cannot be written. */
-    if (!outfile_check(output, &err)) {
+    if (!tracing && !outfile_check(output, &err)) {
         fprintf(stderr, "raytra: cannot write '%s': %s\n", output, err.text);
         goto done;
     }
     stop_install();
     SceneLoadOptions load = {opts.convention, opts.convention_given, stderr};
     loaded = scene_load(&scene, opts.scene, &load);
-    if (!loaded || output_is_input(&scene, output, opts.scene) || !apply_scale(&scene, &opts))
+    if (!loaded || (!tracing && output_is_input(&scene, output, opts.scene)) ||
+        !apply_scale(&scene, &opts))
         goto done;
     note_ignored(program, &scene);
     int trace_x = 0, trace_y = 0, trace_sample = -1;
@@ -347,7 +437,8 @@ int app_main(const Program *program, int argc, char **argv)
         int side = program->sample != NULL ? cli_int(&opts, program->samples_option) : 0;
         int samples = side * side;
         if (!parse_pixel(opts.trace_pixel, &scene.camera, samples, &trace_x, &trace_y,
-                         &trace_sample)) {
+                         &trace_sample) ||
+            !trace_size_ok(program, &scene, &opts, trace_sample)) {
             status = EXIT_USAGE;
             goto done;
         }
@@ -355,8 +446,11 @@ int app_main(const Program *program, int argc, char **argv)
     }
     if (program->setup != NULL && !program->setup(&scene, &opts, &ctx))
         goto done;
-    if (opts.trace_pixel != NULL) {
-        trace_one_pixel(program, ctx, &scene, &opts, trace_x, trace_y, trace_sample);
+    if (tracing) {
+        TraceJob trace = {program, ctx, &scene, &opts, trace_x, trace_y, trace_sample};
+        /* A trace given up after a stop still prints from the scene: never return. */
+        if (!render_call(trace_one_pixel, &trace))
+            give_up(NULL, "the trace");
         status = EXIT_SUCCESS;
         goto done;
     }
@@ -366,7 +460,8 @@ int app_main(const Program *program, int argc, char **argv)
         goto done;
     }
     RenderResult result;
-    if (render(program, ctx, &opts, &scene, &img, &result) && write_image(&img, output, &opts)) {
+    if (render(program, ctx, &opts, &scene, &img, &result, output) &&
+        write_image(&img, output, &opts)) {
         /* Under --strict a non-finite pixel fails the run, but the image is still written
          * so that its magenta pixels show where the bug is. */
         status = opts.strict && result.nonfinite > 0 ? EXIT_FAILURE : EXIT_SUCCESS;
@@ -377,10 +472,8 @@ int app_main(const Program *program, int argc, char **argv)
         }
     }
 done:
-    if (stop_requested()) {
-        fprintf(stderr, "raytra: interrupted; '%s' was not written\n", output);
-        status = 128 + stop_signal();
-    }
+    if (stop_requested())
+        status = interrupted(opts.trace_pixel != NULL ? NULL : output);
     image_free(&img);
     if (program->cleanup != NULL && ctx != NULL)
         program->cleanup(ctx);

@@ -260,6 +260,15 @@ static bool light_color(Parser *p, const double *v, int n, char *const *words, C
         ERROR(p, "light intensity must not be negative, got %s", words[3]);
         return false;
     }
+    /* Stored, the light is a number as any other: at most 1e12, so that every pixel stays
+     * far below the largest float (docs/robustness.md), where a light of 1e12 1e12 1e12
+     * 1e12 (1e24) made them overflow. Without i, the lexer has checked the colour. */
+    for (int k = 0; k < 3; k++)
+        if (v[k] * i > LEX_MAX_NUMBER) {
+            ERROR(p, "light colour times intensity must be at most 1e12, got %s x %s = %g",
+                  words[k], words[3], v[k] * i);
+            return false;
+        }
     *out = color_scale(color(v[0], v[1], v[2]), i);
     return true;
 }
@@ -302,7 +311,12 @@ static void parse_ambient_light(Parser *p, const double *v, int n, char *const *
         diag_warn(p->diag, p->path, p->line,
                   "more than one ambient light (l a); they are added together");
     p->ambient_line = p->line;
-    p->scene->ambient = color_add(p->scene->ambient, c);
+    Color sum = color_add(p->scene->ambient, c);
+    if (fmax(sum.r, fmax(sum.g, sum.b)) > LEX_MAX_NUMBER) {
+        ERROR(p, "the ambient lights (l a) add up to more than 1e12");
+        return;
+    }
+    p->scene->ambient = sum;
 }
 
 /* l s x y z nx ny nz ux uy uz len r g b [i]: a square area light facing n. */

@@ -33,10 +33,15 @@ typedef struct {
     long nonfinite; /* pixels whose colour was NaN, infinite or beyond float range,
                        stored magenta (1, 0, 1) */
     int first_nonfinite_x, first_nonfinite_y;
-    bool stopped; /* a stop was requested (stop.h): the image is incomplete */
+    bool stopped;   /* a stop was requested (stop.h): the image is incomplete */
+    bool abandoned; /* stopped, and workers still busy with a pixel were given up: they go
+                       on writing the image and reading the job's ctx, so the caller frees
+                       nothing and ends the process at once (_exit) */
 } RenderResult;
 
 void render_image(Image *img, const RenderJob *job, RenderResult *result);
+bool render_call(void (*fn)(void *arg), void *arg);
+bool render_idle(void);
 int render_default_threads(void);
 unsigned long long render_total_rays(const RayStats *stats);
 const char *render_ray_kind_name(RayKind kind);

@@ -4,10 +4,14 @@
 # Usage: tests/nonfinite.sh pfm FILE...
 #        tests/nonfinite.sh render RAYTRA REFDIR
 #   pfm     checks that every float of each PFM file is finite
-#   render  renders, as PFM, every scene of REFDIR/renders.txt with its options and every
-#           scene of scenes/ with none, and checks that raytra succeeds, does not warn
-#           that pixels came out NaN or infinite (the render loop writes such pixels
-#           magenta, so the floats alone cannot show them), and that every float is finite
+#   render  renders, as PFM, every scene of REFDIR/renders.txt with its options, every
+#           scene of scenes/ with none, and the brightest scene the limits allow (made
+#           here: 2000 point lights of 1e12 a millionth of a unit from a mirror floor
+#           under a mirror ceiling, fall2016's 1/r^2, the largest ambient, directional
+#           and area lights, at the largest --max-depth the part takes), and checks that
+#           raytra succeeds, does not warn that pixels came out NaN or infinite (the
+#           render loop writes such pixels magenta, so the floats alone cannot show
+#           them), and that every float is finite
 set -u
 
 # Prints how many floats of PFM file $1 are NaN or infinite; false when there are any.
@@ -65,10 +69,30 @@ trap 'exit 130' INT TERM
     (cd "$top" && ls scenes/*.scn)
 } | sort -u >"$tmp/renders"
 
+# The brightest scene within the limits (docs/robustness.md): every light as bright as a
+# number may be (colour times intensity at most 1e12), the point lights where 1/r^2 is
+# largest (1e-7 from the point the camera sees, where raytra clamps r^2 to 1e-12), and
+# the path bouncing between two perfect mirrors for as long as --max-depth lets it.
+{
+    echo "o convention fall2016"
+    echo "c 0 5 0  0 -1 0  35  35 35  1 1"
+    echo "l a 1e12 1e12 1e12"
+    echo "l d 0 -1 0  1e6 1e6 1e6 1e6"
+    echo "l s 0 4 0  0 -1 0  1 0 0  1  1e12 1e12 1e12"
+    awk 'BEGIN { for (k = 0; k < 2000; k++) print "l p 0 1e-7 0  1e6 1e6 1e6 1e6" }'
+    echo "m 1 1 1  1 1 1  0  1 1 1"
+    echo "p 0 1 0 0"
+    echo "p 0 -1 0 -10"
+} >"$tmp/brightest.scn"
+depth=
+if "$raytra" --help 2>&1 | grep -q -- --max-depth; then depth="--max-depth 1000"; fi
+echo "$tmp/brightest.scn $depth" >>"$tmp/renders"
+
 passed=0 failed=0
 while read -r scene options; do
+    case $scene in /*) path=$scene ;; *) path=$top/$scene ;; esac
     # shellcheck disable=SC2086 # options are words by design
-    if ! "$raytra" -q -j 2 $options "$top/$scene" "$tmp/out.pfm" 2>"$tmp/err"; then
+    if ! "$raytra" -q -j 2 $options "$path" "$tmp/out.pfm" 2>"$tmp/err"; then
         echo "FAIL $scene $options: raytra failed:"
         sed 's/^/    /' "$tmp/err"
         failed=$((failed + 1))

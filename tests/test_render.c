@@ -1,8 +1,11 @@
 /* test_render.c: the render loop: pixels, thread counts, counts, NaN and overflow, stop. */
 #include <float.h>
 #include <signal.h>
+#include <stdatomic.h>
 #include <string.h>
+#include <time.h>
 
+#include "progress.h"
 #include "render.h"
 #include "stop.h"
 #include "testing.h"
@@ -121,12 +124,136 @@ START_TEST(a_stop_request_ends_the_render)
     Image img;
     RenderResult r = render(&img, 10, 100, stop_midway, 1);
     ck_assert(r.stopped);
+    /* The worker finished its pixel within the grace: nothing was given up. */
+    ck_assert(!r.abandoned);
+    ck_assert(render_idle());
     ck_assert_int_eq(stop_signal(), SIGINT);
     /* With one thread, the rows after the stop were never rendered. */
     ck_assert_color_near(image_get(&img, 0, 99), color(0, 0, 0), 0);
     stop_reset();
     ck_assert(!stop_requested());
     image_free(&img);
+}
+END_TEST
+
+/* Released by the test: until then a stuck pixel never ends. */
+static atomic_bool release;
+
+/* Sleeps a millisecond. */
+static void nap(void)
+{
+    struct timespec ms = {0, 1000000};
+    nanosleep(&ms, NULL);
+}
+
+/* A pixel that asks to stop and then takes as long as the test wants: a pixel that
+ * costs minutes, as 1.6's at P = S = 64, or 1.5's before its energy split. */
+static Color stuck(const void *ctx, int i, int j, RayStats *stats)
+{
+    (void)ctx, (void)i, (void)j, (void)stats;
+    stop_request(SIGTERM);
+    while (!atomic_load(&release))
+        nap();
+    return color(0, 0, 0);
+}
+
+/* Waits until the threads given up have ended, at most 10 s. */
+static void wait_idle(void)
+{
+    for (int k = 0; k < 10000 && !render_idle(); k++)
+        nap();
+    ck_assert(render_idle());
+}
+
+START_TEST(a_stop_ends_the_wait_whatever_a_pixel_costs)
+{
+    Image img;
+    ck_assert(image_init(&img, 4, 4));
+    atomic_store(&release, false);
+    RenderJob job = {.pixel = stuck, .threads = 2};
+    RenderResult r;
+    double start = clock_now();
+    render_image(&img, &job, &r);
+    double waited = clock_now() - start;
+    /* The grace is half a second: the wait ends then, the pixels still running. */
+    ck_assert_msg(waited >= 0.4 && waited < 5, "waited %g s", waited);
+    ck_assert(r.stopped);
+    ck_assert(r.abandoned);
+    ck_assert(!render_idle());
+    /* The workers given up finish their pixel, see the stop and free what they share;
+     * the image must live until then. */
+    atomic_store(&release, true);
+    wait_idle();
+    stop_reset();
+    image_free(&img);
+}
+END_TEST
+
+/* Uses about n kilobytes of stack, a kilobyte a call, as a deep path of rays does; returns
+ * a number that depends on all of it, so that no call can be left out. */
+static unsigned deep(int n)
+{
+    volatile unsigned char frame[1000];
+    for (size_t k = 0; k < sizeof frame; k++)
+        frame[k] = (unsigned char)(n + k);
+    if (n == 0)
+        return frame[7];
+    return deep(n - 1) + frame[n % sizeof frame];
+}
+
+/* A pixel that needs 12 MiB of stack: more than a default thread gets (8 MiB, from
+ * `ulimit -s`), less than a render thread's 16. */
+static Color deep_pixel(const void *ctx, int i, int j, RayStats *stats)
+{
+    (void)ctx, (void)i, (void)j, (void)stats;
+    return color(deep(12 * 1024) > 0, 0, 0);
+}
+
+START_TEST(render_threads_have_a_deep_stack)
+{
+    Image img;
+    RenderResult r = render(&img, 2, 1, deep_pixel, 2);
+    ck_assert(!r.stopped);
+    ck_assert_color_near(image_get(&img, 1, 0), color(1, 0, 0), 0);
+    image_free(&img);
+}
+END_TEST
+
+/* What render_call's function saw. */
+typedef struct {
+    bool stuck;
+    unsigned depth_result;
+} CallArg;
+
+/* render_call's function: deep, or stuck after asking to stop. */
+static void call_me(void *arg)
+{
+    CallArg *a = arg;
+    if (a->stuck) {
+        stop_request(SIGINT);
+        while (!atomic_load(&release))
+            nap();
+        return;
+    }
+    a->depth_result = deep(12 * 1024);
+}
+
+START_TEST(render_call_runs_deep_and_gives_up_after_a_stop)
+{
+    CallArg a = {.stuck = false};
+    ck_assert(render_call(call_me, &a));
+    ck_assert_uint_gt(a.depth_result, 0);
+    ck_assert(render_idle());
+
+    static CallArg stuck_arg = {.stuck = true};
+    atomic_store(&release, false);
+    double start = clock_now();
+    ck_assert(!render_call(call_me, &stuck_arg));
+    double waited = clock_now() - start;
+    ck_assert_msg(waited >= 0.4 && waited < 5, "waited %g s", waited);
+    atomic_store(&release, true);
+    wait_idle();
+    stop_reset();
 }
 END_TEST
 
@@ -147,6 +274,9 @@ static Suite *render_suite(void)
     tcase_add_test(tc, nonfinite_pixels_are_magenta_and_counted);
     tcase_add_test(tc, the_largest_float_is_kept);
     tcase_add_test(tc, a_stop_request_ends_the_render);
+    tcase_add_test(tc, a_stop_ends_the_wait_whatever_a_pixel_costs);
+    tcase_add_test(tc, render_threads_have_a_deep_stack);
+    tcase_add_test(tc, render_call_runs_deep_and_gives_up_after_a_stop);
     tcase_add_test(tc, default_threads);
     suite_add_tcase(s, tc);
     return s;

@@ -105,7 +105,8 @@ static Color glass_radiance(const Refractor *rf, const Hit *hit, const Material 
 /* excerpt: refract-radiance */
 /* Returns the radiance arriving along ray r: the light of the first surface it meets,
  * straight from the lights, plus k_m times the radiance along the mirror-reflected ray,
- * plus, for glass, the Fresnel-weighted radiance along the reflected and refracted rays;
+ * plus, for glass, the Fresnel-weighted radiance along the reflected and refracted rays
+ * (times 1 - max(k_m) when the glass is a mirror too);
  * all of it dimmed by Beer's law when r travelled inside glass. Replaces part 1.3's
  * trace_radiance as the tracer's radiance hook (ctx is the Refractor); depth counts the
  * reflections and refractions before r, and path->weight is r's share of its pixel. */
@@ -136,8 +137,14 @@ Color refract_radiance(const void *ctx, const Tracer *tr, Ray r, int depth, Path
                                     weight * color_max(m->mirror), path);
             radiance = color_add(radiance, color_mul(m->mirror, mirrored));
         }
-        if (refract_is_glass(m))
-            radiance = color_add(radiance, glass_radiance(rf, &found, m, r, depth, weight, path));
+        /* Glass under a mirror coating gets the light that the mirror leaves in its
+         * strongest channel, 1 - max(k_m): with it the weights of r's children add up to
+         * at most r's own, so --min-weight bounds the tree (docs/1.5-refraction.md). */
+        double glass_share = 1 - color_max(m->mirror);
+        if (refract_is_glass(m) && glass_share > 0) {
+            Color glass = glass_radiance(rf, &found, m, r, depth, weight * glass_share, path);
+            radiance = color_add(radiance, color_scale(glass, glass_share));
+        }
     }
     if (found.back_face && refract_is_glass(m))
         explain_color(tr->explain, depth + 1, "times a^t, absorbed inside", absorbed);

@@ -1,6 +1,7 @@
 /* test_images.c: whole renders: a sphere of index 1 vanishes under the exact Fresnel equations only. */
 #include <stdio.h>
 #include <stdlib.h>
+#include <string.h>
 
 #include "camera.h"
 #include "image.h"
@@ -156,6 +157,17 @@ START_TEST(trace_pixel_tells_the_glass)
     ck_assert_contains(text, "times a^t, absorbed inside = (0.0625, 0.0625, 0.0625)");
     /* The reflected ray off the front goes back past the camera into the background. */
     ck_assert_contains(text, "hits nothing: the black background");
+    /* --trace-pixel writes no image: an output it could not write (in a missing folder,
+     * of an unknown format, the scene itself) is no reason to refuse, and is left alone. */
+    ck_assert_int_eq(system("cp glass.scn glass.orig"), 0);
+    const char *outputs[] = {"no-such-folder/out.png", "out.jpg", "glass.scn"};
+    for (int k = 0; k < 3; k++) {
+        snprintf(command, sizeof command,
+                 "'%s' -q --trace-pixel 1,1 glass.scn %s > again 2>&1 && cmp -s tree again && "
+                 "cmp -s glass.scn glass.orig",
+                 RAYTRA, outputs[k]);
+        ck_assert_msg(system(command) == 0, "with the output %s", outputs[k]);
+    }
 }
 END_TEST
 
@@ -181,6 +193,30 @@ START_TEST(an_open_glass_mesh_is_warned_about_once)
 }
 END_TEST
 
+START_TEST(a_mirror_of_glass_ends)
+{
+    /* Three balls of glass under mirror coatings (k_m 0, 0.5, 0.9) that see one another:
+     * when each hit carried 1 + k_m of its light, --min-weight never pruned and the rays
+     * of a pixel grew as 2^depth (this render never ended); with the glass taking
+     * 1 - max(k_m), the children of a ray weigh no more than it does. */
+    char command[1024];
+    snprintf(command, sizeof command,
+             "'%s' -j 2 --scale 0.25 '%s/scenes/glass-mirror.scn' out.png 2> err", RAYTRA,
+             TOP_DIR);
+    ck_assert_int_eq(system(command), 0);
+    static char text[4096];
+    FILE *f = fopen("err", "r");
+    size_t n = fread(text, 1, sizeof text - 1, f);
+    text[n] = '\0';
+    fclose(f);
+    unsigned long long rays = 0;
+    const char *with = strstr(text, " threads: ");
+    ck_assert_msg(with != NULL && sscanf(with, " threads: %llu rays", &rays) == 1, "%s", text);
+    /* 60 x 45 pixels: about 215 rays a pixel (1.2 million a pixel would be 2^20). */
+    ck_assert_uint_lt(rays, 1000ULL * 60 * 45);
+}
+END_TEST
+
 /* The image tests. */
 static Suite *images_suite(void)
 {
@@ -192,6 +228,7 @@ static Suite *images_suite(void)
     tcase_add_test(tc, a_bad_fresnel_model_is_refused);
     tcase_add_test(tc, trace_pixel_tells_the_glass);
     tcase_add_test(tc, an_open_glass_mesh_is_warned_about_once);
+    tcase_add_test(tc, a_mirror_of_glass_ends);
     suite_add_tcase(s, tc);
     return s;
 }

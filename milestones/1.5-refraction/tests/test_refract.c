@@ -257,6 +257,87 @@ START_TEST(the_depth_budget_is_shared)
 }
 END_TEST
 
+/* The depth at which weigh_direct sees the surface as white; black elsewhere. */
+static int weighed_depth;
+
+/* A direct-light hook under which the radiance along a ray is the sum, over the rays at
+ * depth weighed_depth below it, of their weights: the products of the k_m, 1 - max(k_m),
+ * R and 1 - R along their paths (no absorption: a = 1). */
+static Color weigh_direct(const Tracer *tr, const Hit *hit, Ray r, int depth, Path *path)
+{
+    (void)tr, (void)hit, (void)r, (void)path;
+    return depth == weighed_depth ? color(1, 1, 1) : color(0, 0, 0);
+}
+
+START_TEST(a_mirror_of_glass_splits_no_more_than_it_gets)
+{
+    /* A ball both mirror and glass (k_m, n = 1.5) inside a closed room: every ray meets
+     * something, so the rays at depth d carry all of the weight that reaches them. The
+     * mirror takes k_m, the glass 1 - max(k_m): at every depth the weights add up to at
+     * most 1 in every channel, where k_m + R + (1 - R) = 1 + k_m a hit made them grow as
+     * (1 + k_m)^d. A grey k_m loses nothing: the first split adds up to exactly 1. */
+    Color coatings[] = {{0.5, 0.5, 0.5}, {1, 1, 1}, {0.9, 0.2, 0.5}, {0, 0, 0}};
+    for (int k = 0; k < 4; k++) {
+        Material m[] = {{.diffuse = {1, 1, 1}, .attenuation = {1, 1, 1}},
+                        {.mirror = coatings[k], .ior = 1.5, .attenuation = {1, 1, 1}}};
+        Sphere spheres[] = {{.center = {0, 0, 0}, .radius = 100, .material = 0},
+                            {.center = {0, 0, 0}, .radius = 10, .material = 1},
+                            {.center = {25, 5, -3}, .radius = 7, .material = 1}};
+        Scene scene = {.materials = m, .material_count = 2, .spheres = spheres, .sphere_count = 3};
+        for (int depth = 1; depth <= 9; depth++) {
+            Refractor rf = refractor(&scene, depth, FRESNEL_EXACT);
+            rf.tracer.direct = weigh_direct;
+            weighed_depth = depth;
+            RayStats stats = {{0}};
+            Path path = {.stats = &stats};
+            Ray r = ray(vec3(3, 1, 50), vec3_normalize(vec3(0.1, 0, -1)));
+            Color w = refract_radiance(&rf, r, 0, &path);
+            ck_assert_msg(w.r <= 1 + 1e-12 && w.g <= 1 + 1e-12 && w.b <= 1 + 1e-12,
+                          "coating %d, depth %d: weights add up to (%g, %g, %g)", k, depth, w.r,
+                          w.g, w.b);
+            ck_assert(w.r >= 0 && w.g >= 0 && w.b >= 0);
+            if (depth == 1) {
+                /* k_m + (1 - max(k_m)) (R + 1 - R), channel by channel. */
+                Color km = coatings[k];
+                double glass = 1 - fmax(km.r, fmax(km.g, km.b));
+                ck_assert_color_near(w, color(km.r + glass, km.g + glass, km.b + glass), 1e-12);
+            }
+        }
+    }
+}
+END_TEST
+
+START_TEST(a_mirror_of_glass_in_a_furnace_sends_back_what_it_gets)
+{
+    /* In the white furnace, half-silvered clear glass sends back W = 0.5, as a mirror or
+     * clear glass alone does, but for the rays pruned below a weight of 2^-22: they lose
+     * 3 x 10^-4 of W at most here (2 x 10^-3 at --min-weight's default, 2^-16). */
+    Material m[] = {{.diffuse = {1, 1, 1}, .attenuation = {1, 1, 1}},
+                    {.mirror = {0.5, 0.5, 0.5}, .ior = 1.5, .attenuation = {1, 1, 1}}};
+    Sphere spheres[] = {{.center = {0, 0, 0}, .radius = 100, .material = 0},
+                        {.center = {0, 0, 0}, .radius = 10, .material = 1},
+                        {.center = {25, 5, -3}, .radius = 7, .material = 1}};
+    Scene scene = {.materials = m,
+                   .material_count = 2,
+                   .spheres = spheres,
+                   .sphere_count = 3,
+                   .ambient = {0.5, 0.5, 0.5}};
+    Refractor rf = refractor(&scene, 60, FRESNEL_EXACT);
+    rf.min_weight = 0x1p-22;
+    for (double x = -30; x < 30; x += 1.7) {
+        RayStats stats = {{0}};
+        Path path = {.stats = &stats};
+        Ray r = ray(vec3(x * 0.3, -2, 50), vec3_normalize(vec3(x, 0.1 * x, -50)));
+        Color c = refract_radiance(&rf, r, 0, &path);
+        ck_assert_color_near(c, color(0.5, 0.5, 0.5), 1e-3);
+        ck_assert(c.r <= 0.5 + 1e-12);
+        /* The weights of a depth add up to at most 1, so at most 2^22 rays of a depth
+         * count 2^-22 or more: the work is bounded (and in fact far smaller). */
+        ck_assert_uint_lt(render_total_rays(&stats), 60 * 0x1p22);
+    }
+}
+END_TEST
+
 /* The fraction of a point light at (0, 10, 0) that reaches the floor point at the origin,
  * past a sphere of radius 1 at (0, 2, 0) of material ball. */
 static Color light_through(Material ball, FresnelModel model, RayStats *stats)
@@ -332,6 +413,8 @@ static Suite *refract_suite(void)
     tcase_add_test(tc, clear_glass_in_a_furnace_is_invisible);
     tcase_add_test(tc, rays_too_faint_to_see_are_not_followed);
     tcase_add_test(tc, the_depth_budget_is_shared);
+    tcase_add_test(tc, a_mirror_of_glass_splits_no_more_than_it_gets);
+    tcase_add_test(tc, a_mirror_of_glass_in_a_furnace_sends_back_what_it_gets);
     tcase_add_test(tc, shadows_of_glass_are_dimmed_not_dark);
     tcase_add_test(tc, the_inside_of_a_glass_mesh_keeps_its_material);
     suite_add_tcase(s, tc);
