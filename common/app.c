@@ -262,46 +262,35 @@ static void trace_one_pixel(void *arg)
 
 /* Tells whether the trace of --trace-pixel is short enough to be read; refuses it (false,
  * reported) when it would print more than TRACE_MAX_LINES lines, and warns when it may.
- * The estimate: every sample traced prints its camera ray and its first hit, about 8
- * lines, 3 for each point, directional and (before part 1.6) area light, and in part 1.6
- * one for each of the S x S shadow rays to each area light; mirrors and glass add up to
- * --max-depth more hits a sample. */
-static bool trace_size_ok(const Program *program, const Scene *scene, const Options *opts,
+ * The part estimates the lines (Program.trace_lines): at least fewest, and at most most
+ * when every mirror and glass path goes on to the depth limit. */
+static bool trace_size_ok(const Program *program, const void *ctx, const Options *opts,
                           int sample)
 {
-    bool samples = program->sample != NULL;
-    double per_pixel = samples && sample < 0 ? (double)opts->samples * opts->samples : 1;
-    double shadow = samples ? (double)opts->light_samples * opts->light_samples : 3;
-    int area = 0;
-    for (int k = 0; k < scene->light_count; k++)
-        area += scene->lights[k].kind == LIGHT_AREA;
-    double per_hit = 8 + 3.0 * (scene->light_count - area) + shadow * area;
-    double lines = per_pixel * (2 + per_hit);
-    unsigned bounces =
-        scene_features(scene) & program->features & (FEATURE_MIRRORS | FEATURE_REFRACTION);
-    double most = bounces != 0 ? lines + per_pixel * per_hit * opts->max_depth : lines;
-    if (lines <= TRACE_MAX_LINES && most <= TRACE_MAX_LINES)
+    double fewest = 0, most = 0;
+    if (program->trace_lines != NULL)
+        program->trace_lines(ctx, sample, &fewest, &most);
+    if (fewest <= TRACE_MAX_LINES && most <= TRACE_MAX_LINES)
         return true;
     char how[200] = "";
-    if (samples && sample < 0)
+    if (program->sample != NULL && sample < 0) {
+        int side = cli_int(opts, program->samples_option);
         snprintf(how, sizeof how,
-                 "; trace one of its %d samples with --trace-pixel %s@K (K from 0 to %d)",
-                 opts->samples * opts->samples, opts->trace_pixel,
-                 opts->samples * opts->samples - 1);
-    if (lines > TRACE_MAX_LINES) {
+                 "; trace one of its %d samples with --trace-pixel %s@K (K from 0 to %d), or "
+                 "take fewer samples",
+                 side * side, opts->trace_pixel, side * side - 1);
+    }
+    if (fewest > TRACE_MAX_LINES) {
         fprintf(stderr,
-                "raytra: --trace-pixel %s would print at least %.3g million lines (%.0f at "
-                "each hit%s%s), more than anyone reads: refused%s%s\n",
-                opts->trace_pixel, lines / 1e6, per_hit,
-                per_pixel > 1 ? ", for each of the pixel's samples" : "",
-                samples && area > 0 ? ", with S x S shadow rays to each area light" : "", how,
-                samples ? ", or lower --samples or --light-samples" : "");
+                "raytra: --trace-pixel %s would print at least %.3g million lines, more than "
+                "anyone reads: refused%s\n",
+                opts->trace_pixel, fewest / 1e6, how);
         return false;
     }
     fprintf(stderr,
-            "raytra: warning: --trace-pixel %s may print up to %.3g million lines (%.0f at "
-            "each hit, and up to --max-depth %d bounces)%s\n",
-            opts->trace_pixel, most / 1e6, per_hit, opts->max_depth, how);
+            "raytra: warning: --trace-pixel %s may print up to %.3g million lines, when every "
+            "mirror and glass path goes on to the depth limit%s\n",
+            opts->trace_pixel, most / 1e6, how);
     return true;
 }
 
@@ -437,8 +426,7 @@ int app_main(const Program *program, int argc, char **argv)
         int side = program->sample != NULL ? cli_int(&opts, program->samples_option) : 0;
         int samples = side * side;
         if (!parse_pixel(opts.trace_pixel, &scene.camera, samples, &trace_x, &trace_y,
-                         &trace_sample) ||
-            !trace_size_ok(program, &scene, &opts, trace_sample)) {
+                         &trace_sample)) {
             status = EXIT_USAGE;
             goto done;
         }
@@ -446,6 +434,10 @@ int app_main(const Program *program, int argc, char **argv)
     }
     if (program->setup != NULL && !program->setup(&scene, &opts, &ctx))
         goto done;
+    if (tracing && !trace_size_ok(program, ctx, &opts, trace_sample)) {
+        status = EXIT_USAGE;
+        goto done;
+    }
     if (tracing) {
         TraceJob trace = {program, ctx, &scene, &opts, trace_x, trace_y, trace_sample};
         /* A trace given up after a stop still prints from the scene: never return. */

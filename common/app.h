@@ -24,6 +24,9 @@ typedef struct {
     /* Tells what a pixel's camera ray meets first, for --view; NULL if the part cannot. */
     ProbeFn probe;
     unsigned views; /* the views it draws beyond every part's: 1 << VIEW_LIGHT_COUNT, ... */
+    /* Estimates how many lines --trace-pixel prints for a pixel (sample < 0) or one of
+     * its samples: at least *fewest, at most *most; NULL when a trace is a few lines. */
+    void (*trace_lines)(const void *ctx, int sample, double *fewest, double *most);
     /* Prints part-specific figures after the summary line; may be NULL. */
     void (*report)(const void *ctx, const RenderResult *result);
     void (*cleanup)(void *ctx);

@@ -320,11 +320,11 @@ EOF
     # A trace of 4096 samples of 4096 shadow rays is refused; one sample of it is not.
     "$latest" --samples 64 --light-samples 64 --trace-pixel 4,4 slow.scn >tree 2>err
     status=$?
-    if [ "$status" -eq 2 ] && grep -q "at least 16.8 million lines" err &&
+    if [ "$status" -eq 2 ] && grep -q "at least 83.9 million lines" err &&
         grep -q -- "--trace-pixel 4,4@K (K from 0 to 4095)" err && [ ! -s tree ]; then
-        ok "--trace-pixel of 17 million lines: refused, exit status 2, pointing to @K"
+        ok "--trace-pixel of 84 million lines: refused, exit status 2, pointing to @K"
     else
-        fail "--trace-pixel of 17 million lines: exit status $status (expected 2 and the @K hint):"
+        fail "--trace-pixel of 84 million lines: exit status $status (expected 2 and the @K hint):"
         sed 's/^/    /' err
     fi
     if "$latest" --samples 64 --light-samples 64 --trace-pixel 4,4@100 slow.scn >tree 2>err &&

@@ -39,6 +39,13 @@ static void probe_pixel(const void *ctx, int i, int j, Probe *probe)
     trace_probe(&part->tracer, camera_ray(&part->view.camera, i + 0.5, j + 0.5), probe);
 }
 
+/* Estimates the lines --trace-pixel prints: one camera ray a pixel. */
+static void trace_lines(const void *ctx, int sample, double *fewest, double *most)
+{
+    (void)sample;
+    tracer_trace_lines(&((const Part13 *)ctx)->tracer, 1, 0, fewest, most);
+}
+
 static const Program program = {
     .cli = {.part = "1.3-shadows-mirror",
             .options = trace_part_options,
@@ -48,6 +55,7 @@ static const Program program = {
     .pixel = trace_pixel,
     .probe = probe_pixel,
     .views = 1u << VIEW_LIGHT_COUNT,
+    .trace_lines = trace_lines,
     .cleanup = free,
 };
 

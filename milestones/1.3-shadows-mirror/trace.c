@@ -173,6 +173,22 @@ void trace_probe(const Tracer *tr, Ray r, Probe *probe)
     }
 }
 
+/* Estimates, for --trace-pixel, the lines the tree of rays camera rays prints: about 8
+ * for each hit, 5 for each point or directional light, and for each area light 5 for
+ * each of its area_rays samples (none before part 1.6, which samples them); mirrors and
+ * glass add up to max_depth more hits a camera ray, in *most. */
+void tracer_trace_lines(const Tracer *tr, double rays, double area_rays, double *fewest,
+                        double *most)
+{
+    const Scene *scene = tr->scene;
+    double per_hit = 8;
+    for (int k = 0; k < scene->light_count; k++)
+        per_hit += scene->lights[k].kind == LIGHT_AREA ? 2 + 5 * area_rays : 5;
+    *fewest = rays * (2 + per_hit);
+    bool bounces = scene_features(scene) & (FEATURE_MIRRORS | FEATURE_REFRACTION);
+    *most = *fewest + (bounces ? rays * per_hit * tr->max_depth : 0);
+}
+
 /* excerpt: trace-pixel */
 /* Returns the radiance along the camera ray through the centre of pixel (i, j): the
  * pixel of part 1.3, and of every later part that traces with its Tracer. */

@@ -84,6 +84,8 @@ Color tracer_trace(const Tracer *tr, Ray r, RayKind kind, int depth, Path *path)
 Color tracer_light(const Tracer *tr, const Hit *hit, Ray r, int k, int depth, Path *path);
 Color tracer_through(const Tracer *tr, const Hit *hit, Ray r, const Incident *in, int depth,
                      Path *path);
+void tracer_trace_lines(const Tracer *tr, double rays, double area_rays, double *fewest,
+                        double *most);
 void trace_probe(const Tracer *tr, Ray r, Probe *probe);
 Color trace_camera_pixel(const Tracer *tr, const Camera *cam, int i, int j, RayStats *stats);
 

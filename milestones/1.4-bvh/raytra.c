@@ -76,6 +76,13 @@ static void cleanup(void *ctx)
     free(part);
 }
 
+/* Estimates the lines --trace-pixel prints: one camera ray a pixel. */
+static void trace_lines(const void *ctx, int sample, double *fewest, double *most)
+{
+    (void)sample;
+    tracer_trace_lines(&((const Part14 *)ctx)->tracer, 1, 0, fewest, most);
+}
+
 static const Program program = {
     .cli = {.part = "1.4-bvh",
             .options = accel_part_options,
@@ -86,6 +93,7 @@ static const Program program = {
     .probe = probe_pixel,
     .views = 1u << VIEW_LIGHT_COUNT | 1u << VIEW_BOX_TESTS,
     .report = report,
+    .trace_lines = trace_lines,
     .cleanup = cleanup,
 };
 

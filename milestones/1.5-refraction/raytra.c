@@ -67,6 +67,13 @@ static void cleanup(void *ctx)
     free(part);
 }
 
+/* Estimates the lines --trace-pixel prints: one camera ray a pixel. */
+static void trace_lines(const void *ctx, int sample, double *fewest, double *most)
+{
+    (void)sample;
+    tracer_trace_lines(&((const Part15 *)ctx)->refractor.tracer, 1, 0, fewest, most);
+}
+
 static const Program program = {
     .cli = {.part = "1.5-refraction",
             .options = refract_part_options,
@@ -77,6 +84,7 @@ static const Program program = {
     .pixel = refract_pixel,
     .probe = probe_pixel,
     .views = 1u << VIEW_LIGHT_COUNT | 1u << VIEW_BOX_TESTS,
+    .trace_lines = trace_lines,
     .cleanup = cleanup,
 };
 

@@ -68,6 +68,16 @@ static void cleanup(void *ctx)
     free(part);
 }
 
+/* Estimates the lines --trace-pixel prints: P x P camera rays a pixel (one for a sample
+ * alone), S x S samples of each area light at every hit. */
+static void trace_lines(const void *ctx, int sample, double *fewest, double *most)
+{
+    const MonteCarlo *mc = &((const Part16 *)ctx)->mc;
+    double rays = sample < 0 ? (double)mc->pixel_side * mc->pixel_side : 1;
+    tracer_trace_lines(&mc->below.tracer, rays, (double)mc->light_side * mc->light_side, fewest,
+                       most);
+}
+
 static const Program program = {
     .cli = {.part = "1.6-monte-carlo",
             .options = montecarlo_part_options,
@@ -80,6 +90,7 @@ static const Program program = {
     .samples_option = "samples",
     .probe = probe_pixel,
     .views = 1u << VIEW_LIGHT_COUNT | 1u << VIEW_BOX_TESTS,
+    .trace_lines = trace_lines,
     .cleanup = cleanup,
 };
 
