@@ -337,9 +337,9 @@ static void print_figures(const StatDiff *d, const McRef *ref, const Image *img,
                "error %.3g; %.3g allowed for rounding); %d tests fail\n",
                fabs(w->z), where, "RGB"[w->c], w -> diff, d -> codes ? "codes" : "", w->se,
                allowance(d->codes, 0), d->rejected);
-        printf("noise test: the residual's RMS is %.2f times the expected one over %d noisy "
-               "squares of %d x %d pixels and channels (at most %.2f)",
-               d->noise_image, d->noisy, NOISE_SPAN * STATDIFF_BLOCK, NOISE_SPAN * STATDIFF_BLOCK,
+        printf("noise test: the residual's RMS is %.2f times the expected one over the noisy "
+               "squares of %d x %d pixels (%d, a channel each; at most %.2f)",
+               d->noise_image, NOISE_SPAN * STATDIFF_BLOCK, NOISE_SPAN * STATDIFF_BLOCK, d->noisy,
                STATDIFF_NOISE_IMAGE);
         if (n != NULL) {
             square_text(n, img->width, img->height, where, sizeof where);
