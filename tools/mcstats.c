@@ -103,7 +103,8 @@ int main(int argc, char **argv)
         if (image_format_for_path(path) == IMAGE_FORMAT_PNG) {
             fprintf(stderr, "mcstats: %s: a PNG is clamped and rounded: give linear renders\n",
                     path);
-            return 2;
+            ok = false;
+            break;
         }
         if (!image_read(&img, path, &err)) {
             fprintf(stderr, "mcstats: cannot read '%s': %s\n", path, err.text);
