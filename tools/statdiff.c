@@ -52,14 +52,17 @@ typedef struct {
     long nonfinite;
 } StatDiff;
 
-/* The variance floor and the rounding allowance of a pixel whose reference value is m:
- * in codes, a uniform rounding error (1/12 code^2) and one code; linear, the rounding of a
- * half-float file (2^-11 relative, doubled for safety) and 2^-10 (1 + |m|). */
+/* Returns the variance floor of a pixel whose reference value is m: in codes, a uniform
+ * rounding error, 1/12 code^2; linear, the rounding of a half-float file (2^-11 relative,
+ * doubled for safety), (2^-10 (|m| + 1/64))^2 / 12. */
 static double floor_variance(bool codes, double m)
 {
     double step = ldexp(fabs(m) + 1.0 / 64, -10);
     return codes ? 1.0 / 12 : step * step / 12;
 }
+
+/* Returns the rounding allowance of a block whose reference mean is m: the systematic
+ * difference no test counts, one code, or 2^-10 (1 + |m|) linear. */
 static double allowance(bool codes, double m)
 {
     return codes ? 1.0 : ldexp(1 + fabs(m), -10);
