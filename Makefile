@@ -13,6 +13,9 @@
 #   make fuzz        build the libFuzzer harnesses of the scene, OBJ and OpenEXR readers (clang)
 #   make fuzz-run    fuzz each reader for FUZZ_SECONDS (default 1800) s (docs/robustness.md)
 #   make mistakes    render the gallery of common mistakes and write docs/mistakes.md
+#   make check-statistics  part 1.6's grading by statistics: raytra with 20 seeds passes,
+#                    right and wrong solutions pass and fail (tests/mc-variants, a few minutes)
+#   make statistics-figure  draw the z-score heat maps docs/grading.md shows
 #
 # WERROR=1 turns warnings into errors; SANITIZE=1 builds and tests everything
 # with AddressSanitizer and UndefinedBehaviorSanitizer.
@@ -33,7 +36,7 @@ FUZZ_SECONDS ?= 1800
 .PHONY: all test demo check-demo check-chromium references docs check-docs check-slides check-figures check-layout check-course clean \
         check-robust check-fuzz-regressions check-bad-input check-interrupt check-nonfinite \
         check-course-render valgrind fuzz fuzz-run bench mistakes starter check-starter check-starters \
-        check-exercises
+        check-exercises check-statistics statistics-figure
 .NOTPARALLEL:
 
 all:
@@ -180,6 +183,23 @@ mistakes: all
 	@$(SUBMAKE) -C tools/mistakes
 	@tools/mistakes/gallery.sh
 
+# Monte Carlo renders judged by statistics (docs/grading.md): raytra's own with seeds of
+# their own pass, each variant of part 1.6 (tests/mc-variants) passes or fails as it should.
+MC_PART := milestones/1.6-monte-carlo
+check-statistics:
+	$(DEPS_STEP)
+	@$(SUBMAKE) all
+	@$(SUBMAKE) -C tests/mc-variants
+	@tests/mc-variants/run.sh $(call program,1.6-monte-carlo) tests/mc-variants/$(BUILD) \
+	    $(IMGDIFF) $(MC_PART)/references
+
+# The figures of the statistical grading (docs/grading.md, chapter 1.6): z-score heat maps.
+statistics-figure:
+	@$(SUBMAKE) all
+	@$(SUBMAKE) -C tests/mc-variants
+	@tests/mc-variants/figure.sh $(call program,1.6-monte-carlo) tests/mc-variants/$(BUILD) \
+	    $(IMGDIFF) $(MC_PART)/references docs/figures/1.6-monte-carlo
+
 references:
 	$(DEPS_STEP)
 	@for part in $(PARTS); do $(SUBMAKE) -C milestones/$$part references || exit 1; done
@@ -191,5 +211,6 @@ clean:
 	@$(SUBMAKE) -C tools clean
 	@$(SUBMAKE) -C bench clean
 	@$(SUBMAKE) -C tools/mistakes clean
+	@$(SUBMAKE) -C tests/mc-variants clean
 	@for part in $(PARTS); do $(SUBMAKE) -C milestones/$$part clean; done
 	rm -rf out

@@ -8,12 +8,17 @@
 # with SCENE relative to the top of the repository; the arguments (a part's own
 # positional arguments, then raytra options) follow SCENE and OUTPUT on the command line.
 # An IMAGE written !IMAGE is an illustration, which tools/grade does not grade; it is a
-# reference all the same.
+# reference all the same. An IMAGE written ~IMAGE is a Monte Carlo render graded by
+# statistics: beside IMAGE (raytra's render with its default seed), REFDIR holds
+# NAME.stats.exr, its statistical reference (docs/grading.md), made from MCREF_RENDERS
+# (default 64) renders with seeds 1000, 1001, ...
 #   check   renders each scene with 2 threads and compares it with IMAGE, using
 #           imgdiff's default tolerances; renders it again with 1 thread and checks
-#           that the two files are byte for byte the same.
+#           that the two files are byte for byte the same; for ~IMAGE, also judges the
+#           render against NAME.stats.exr, which it must pass.
 #   update  renders each scene, prints imgdiff's comparison with the current image,
-#           then replaces it (make references).
+#           then replaces it (make references); for ~IMAGE, makes NAME.stats.exr anew
+#           (tools/mcref.sh, with mcstats beside IMGDIFF) and judges the render against it.
 set -u
 [ $# -eq 4 ] || { echo "usage: $0 check|update RAYTRA IMGDIFF REFDIR" >&2; exit 2; }
 mode=$1 raytra=$2 imgdiff=$3 refdir=$4
@@ -28,6 +33,8 @@ failed=0
 count=0
 while read -r image scene options; do
     case $image in '' | '#'*) continue ;; esac
+    stats=
+    case $image in '~'*) image=${image#\~} stats=$refdir/${image%.*}.stats.exr ;; esac
     image=${image#!}
     count=$((count + 1))
     two=$tmp/two-$image
@@ -47,6 +54,13 @@ while read -r image scene options; do
             echo "== $image: new"
         fi
         cp "$two" "$refdir/$image"
+        if [ -n "$stats" ]; then
+            echo "== ${stats##*/}: ${MCREF_RENDERS:-64} renders with independent seeds"
+            # shellcheck disable=SC2086
+            "$top/tools/mcref.sh" "$raytra" "$(dirname "$imgdiff")/mcstats" "$stats" \
+                "$top/$scene" "${MCREF_RENDERS:-64}" 1000 $options || exit 1
+            "$imgdiff" "$stats" "$two" | sed 's/^/    /'
+        fi
         continue
     fi
     # shellcheck disable=SC2086
@@ -59,6 +73,10 @@ while read -r image scene options; do
         failed=$((failed + 1))
     elif ! "$imgdiff" "$refdir/$image" "$two" >"$tmp/diff" 2>&1; then
         echo "FAIL $image: differs from the reference:"
+        sed 's/^/    /' "$tmp/diff"
+        failed=$((failed + 1))
+    elif [ -n "$stats" ] && ! "$imgdiff" "$stats" "$two" >"$tmp/diff" 2>&1; then
+        echo "FAIL $image: does not pass its statistical reference ${stats##*/}:"
         sed 's/^/    /' "$tmp/diff"
         failed=$((failed + 1))
     else

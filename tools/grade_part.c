@@ -78,7 +78,9 @@ static void make_argv(Render *r, char *scene_path, char **words, int n,
  * is not a valid one or names a file that is not there. */
 static bool add_render(Grading *g, char **words, int n, const char *where)
 {
-    const char *image = words[0], *dot = strrchr(image, '.');
+    /* ~IMAGE: a Monte Carlo render, judged against its statistical reference NAME.stats.exr. */
+    bool statistical = words[0][0] == '~';
+    const char *image = words[0] + statistical, *dot = strrchr(image, '.');
     int stem = dot != NULL ? (int)(dot - image) : (int)strlen(image);
     if (image[0] == '!') {
         g->illustrations = grade_format("%s%s%.*s", g->illustrations ? g->illustrations : "",
@@ -91,7 +93,8 @@ static bool add_render(Grading *g, char **words, int n, const char *where)
     Render *r = &g->renders[g->render_count++];
     *r = (Render){.image = grade_format("%s", image), .scene = grade_format("%s", words[1])};
     r->name = grade_format("%.*s", stem, image);
-    r->reference = grade_format("%s/%s", g->references, image);
+    r->reference = statistical ? grade_format("%s/%.*s.stats.exr", g->references, stem, image)
+                               : grade_format("%s/%s", g->references, image);
     char *scene_path = words[1][0] == '/' ? r->scene : grade_format("%s/%s", g->top, words[1]);
     make_argv(r, scene_path, words + 2, n - 2, part_options_of(g->part), g->progress);
     if (grade_kind(scene_path) != S_IFREG)

@@ -60,11 +60,13 @@ static void compare_image(const Grading *g, const Submission *s, int k, const ch
                     r->reference, (char *)image, NULL};
     RunResult run = run_program(argv, NULL, log, 600, RUN_OWN_MEMORY(g->memory_limit));
     FILE *in = fmemopen(run.output, strlen(run.output) + 1, "r");
-    char line[1024], *reason = NULL;
+    char line[1024], *reason = NULL, *statistical = NULL;
     int size[4] = {0}; /* the reference's width and height, then the image's, when they differ */
     while (in != NULL && fgets(line, sizeof line, in) != NULL) {
         line[strcspn(line, "\n")] = '\0';
         const char *named = strstr(line, "': "); /* imgdiff: cannot read 'FILE': REASON */
+        if (strncmp(line, "reason ", 7) == 0) /* a statistical comparison says why */
+            statistical = grade_format("%s", line + 7);
         if (reason == NULL && strncmp(line, "imgdiff: ", 9) == 0)
             reason = grade_format("%s", named != NULL ? named + 3 : line + 9);
         /* || stops at the first pattern that fits the line. */
@@ -86,7 +88,9 @@ static void compare_image(const Grading *g, const Submission *s, int k, const ch
     res->compared = run.end == RUN_EXITED && run.status <= 1;
     res->identical = res->compared && f->max[0] == 0 && f->max[1] == 0 && f->max[2] == 0;
     res->copy = res->identical && same_bytes(image, r->reference);
-    if (res->identical)
+    if (res->compared && statistical != NULL)
+        set_verdict(res, v, "%s", statistical);
+    else if (res->identical)
         set_verdict(res, v, "identical to the reference");
     else if (res->compared && f->differing == 0)
         set_verdict(res, v, "no pixel differs by more than %.3g/255", f->threshold * 255);

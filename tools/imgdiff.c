@@ -10,7 +10,9 @@
 #include "imgdiff.h"
 #include "imgfile.h"
 #include "imgmap.h"
+#include "mcref.h"
 #include "outfile.h"
+#include "statdiff.h"
 #include "toolopt.h"
 
 enum { EXIT_MATCH = 0, EXIT_DIFFER = 1, EXIT_TROUBLE = 2 };
@@ -371,6 +373,10 @@ int main(int argc, char **argv)
             return EXIT_TROUBLE;
     if (!check_headers(&o, kind))
         return EXIT_TROUBLE;
+    /* A statistical reference of Monte Carlo renders: judged by statistics (statdiff.c). */
+    if (kind[0] == IMGFILE_EXR && mcref_is(o.paths[0]))
+        return statdiff_run(&(StatDiffRequest){o.paths[0], o.paths[1], kind[1], o.diff_path,
+                                               o.diff_thumb, o.thumb_path, o.quiet, o.machine});
     Image img[2] = {{0}};
     Error err;
     int read = 0;

@@ -3,6 +3,7 @@
 
 #include <math.h>
 #include <stdio.h>
+#include <stdlib.h>
 
 /* The heat map's colours, evenly spread from the smallest difference to the scale's top. */
 static const Color ramp[] = {
@@ -79,16 +80,34 @@ bool imgmap_write_thumb(const Image *img, bool peaks, PngEncoding encoding, cons
 bool imgmap_write_heat(const Image *a, const Image *b, double top, const char *path,
                        const char *thumb_path)
 {
-    Image map;
+    long pixels = (long)a->width * a->height;
+    float *level = malloc((size_t)pixels * sizeof *level);
     double e[3];
-    if (!image_init(&map, a->width, a->height)) {
+    if (level == NULL) {
         fprintf(stderr, "imgdiff: not enough memory for the heat map\n");
         return false;
     }
-    for (int y = 0; y < a->height; y++)
-        for (int x = 0; x < a->width; x++)
-            image_set(&map, x, y,
-                      heat_color(imgmap_pixel_diff(a, b, (long)y * a->width + x, e), top));
+    for (long k = 0; k < pixels; k++)
+        level[k] = (float)imgmap_pixel_diff(a, b, k, e);
+    bool ok = imgmap_write_levels(level, a->width, a->height, top, path, thumb_path);
+    free(level);
+    return ok;
+}
+
+/* Writes the map of level, a value a pixel (width x height, rows from the top), on the heat
+ * map's colours with top white, to path and shrunk to thumb_path (either may be NULL);
+ * false (reported) when it cannot. Statistical comparisons draw their z-scores so. */
+bool imgmap_write_levels(const float *level, int width, int height, double top, const char *path,
+                         const char *thumb_path)
+{
+    Image map;
+    if (!image_init(&map, width, height)) {
+        fprintf(stderr, "imgdiff: not enough memory for the heat map\n");
+        return false;
+    }
+    for (int y = 0; y < height; y++)
+        for (int x = 0; x < width; x++)
+            image_set(&map, x, y, heat_color(level[(long)y * width + x], top));
     Error err;
     bool ok = path == NULL || image_write(&map, path, PNG_ENCODING_LINEAR, &err);
     if (!ok)

@@ -46,6 +46,9 @@ images=0 images_failed=0
 while read -r image scene options; do
     # An illustration (!IMAGE, docs/grading.md) is raytra's own picture, not graded.
     case $image in '' | '#'* | '!'*) continue ;; esac
+    # ~IMAGE: a Monte Carlo render, judged against its statistical reference (docs/grading.md).
+    ref=$refdir/$image
+    case $image in '~'*) image=${image#\~} ref=$refdir/${image%.*}.stats.exr ;; esac
     images=$((images + 1))
     name=${image%.*}
     # shellcheck disable=SC2086 # the options are words by design
@@ -53,7 +56,7 @@ while read -r image scene options; do
         echo "FAIL $image: raytra failed or ran too long on $scene (its output: $out/$name.log):"
         tail -n 5 "$out/$name.log" | sed 's/^/    /'
         images_failed=$((images_failed + 1))
-    elif "$imgdiff" --diff "$out/$name.heat.png" "$refdir/$image" "$out/$image" \
+    elif "$imgdiff" --diff "$out/$name.heat.png" "$ref" "$out/$image" \
         >"$out/$name.diff.txt" 2>&1; then
         echo "ok   $image"
     else
