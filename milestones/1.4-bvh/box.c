@@ -52,24 +52,10 @@ Box box_of_surface(const Scene *scene, int s)
 
 /* Returns a float no greater than x: x rounded, and moved down past x when rounding
  * went up (by 2^-23 of x, at least one float step; 2^-149 for the smallest floats). */
-static float float_below(double x)
+float box_float_below(double x)
 {
     float f = (float)x;
     return (double)f <= x ? f : (float)(x - fabs(x) * 0x1p-23 - 0x1p-149);
-}
-
-/* Returns box b rounded outwards to floats: the float box that holds it. */
-FloatBox box_to_float(Box b)
-{
-    return (FloatBox){{{float_below(b.lo.x), float_below(b.lo.y), float_below(b.lo.z)},
-                       {-float_below(-b.hi.x), -float_below(-b.hi.y), -float_below(-b.hi.z)}}};
-}
-
-/* Returns float box f as a Box of doubles: exactly the same box. */
-Box box_of_float(FloatBox f)
-{
-    return (Box){vec3(f.corner[0][0], f.corner[0][1], f.corner[0][2]),
-                 vec3(f.corner[1][0], f.corner[1][1], f.corner[1][2])};
 }
 
 /* starter: todo */
@@ -163,19 +149,21 @@ FloatRay box_float_ray(Ray r, double tmin, bool in_range)
     in_range = in_range && tmin >= 0;
     for (int a = 0; a < 3; a++) {
         double inv = 1 / d[a];
-        fr.origin[a] = (float)o[a];
-        fr.inv_dir[a] = (float)inv;
-        fr.near[a] = signbit(d[a]) ? 3 + a : a; /* towards -x, the ray enters at hi */
-        fr.far[a] = signbit(d[a]) ? a : 3 + a;
+        float of = (float)o[a], near = (float)inv, far = (float)(inv * (1 + 0x1p-20));
+        fr.origin[a][0] = fr.origin[a][1] = of;
+        fr.inv_near[a][0] = fr.inv_near[a][1] = near;
+        fr.inv_far[a][0] = fr.inv_far[a][1] = far; /* pbrt's tMax *= 1 + 2 gamma(3) */
+        fr.near[a] = signbit(d[a]) ? 6 + 2 * a : 2 * a; /* towards -x, it enters at hi */
+        fr.far[a] = signbit(d[a]) ? 2 * a : 6 + 2 * a;
         in_range = in_range && fabs(o[a]) <= 0x1p60;
         if (d[a] != 0) {
-            shift = fmax(shift, fabs(o[a] - fr.origin[a]) * fabs(inv));
+            shift = fmax(shift, fabs(o[a] - of) * fabs(inv));
             in_range = in_range && fabs(inv) >= 0x1p-60 && fabs(inv) <= 0x1p60;
         }
     }
     fr.slack = (float)(3 * shift) + FLT_MIN;
     if (!in_range) /* every t is 0, and the slack infinite */
-        fr = (FloatRay){.near = {0, 1, 2}, .far = {3, 4, 5}, .slack = INFINITY};
+        fr = (FloatRay){.near = {0, 2, 4}, .far = {6, 8, 10}, .slack = INFINITY};
     return fr;
 }
 /* end excerpt: box-float-ray-make */

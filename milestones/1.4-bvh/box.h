@@ -21,11 +21,6 @@ typedef struct {
 } BoxRay;
 /* end excerpt: box-struct */
 
-/* A box in float, as the BVH's nodes keep it: corner[0] is lo, corner[1] is hi. */
-typedef struct {
-    float corner[2][3];
-} FloatBox;
-
 /* Where a ray meets a box's surface: t, and the face, as axis (0 x, 1 y, 2 z) and the
  * side the unit normal points to, always back towards the ray's origin. */
 typedef struct {
@@ -109,64 +104,39 @@ static inline double box_half_area(Box b)
 }
 
 /* excerpt: box-float-ray */
-/* A ray made ready, once, for the test of float boxes: its origin in float, 1/d, on
- * each axis where the near and far faces are in a box's six floats, and the slack. */
+/* A ray made ready, once, for the BVH's test of float boxes: its origin in float, 1/d
+ * (grown by 2^-20 for the far faces), where on each axis the near and far faces are
+ * among a node's floats, and the slack that rounding the origin needs. Each number is
+ * there twice, one for each of a node's two children. */
 typedef struct {
-    float origin[3], inv_dir[3];
-    int near[3], far[3]; /* lo's coordinate a is corner[0][a], hi's is corner[1][a] */
+    float origin[3][2];
+    float inv_near[3][2], inv_far[3][2];
+    int near[3], far[3];
     float tmin;
-    float slack; /* t0 <= t1 * (1 + 2^-20) + slack: see the chapter */
+    float slack;
 } FloatRay;
 
-/* end excerpt: box-float-ray */
-
-/* excerpt: box-float-hit */
-/* Tells whether an interval [t0, t1] of float t may hold a t of the exact one. */
+/* Tells whether a float interval [t0, t1] may hold a t where the exact ray meets the box:
+ * t1 has been grown by 2^-20 of itself (pbrt's tMax *= 1 + 2 gamma(3)), and the slack
+ * covers the origin's rounding. The chapter gives the argument. */
 static inline bool box_float_reaches(const FloatRay *fr, float t0, float t1)
 {
-    return t0 <= t1 * (1 + 0x1p-20f) + fr->slack;
+    return t0 <= t1 + fr->slack;
 }
 
-/* Returns the larger of a and b, or b when either is NaN: the processor's maxss. */
-static inline float box_float_max(float a, float b)
+/* Returns tmax in float, grown by 2^-20 as the far faces' t are. */
+static inline float box_float_tmax(double tmax)
 {
-    return a > b ? a : b;
+    return (float)(tmax * (1 + 0x1p-20));
 }
-
-/* Returns the smaller of a and b, or b when either is NaN: the processor's minss. */
-static inline float box_float_min(float a, float b)
-{
-    return a < b ? a : b;
-}
-
-/* Tests float box b by the slab test in float: false only when the ray misses it for
- * every t in [tmin, tmax]; *enter gets where it may enter. The max and min, without
- * branches, are taken as a tree, so that the first two run side by side. A NaN
- * (0 * inf: a ray parallel to a face starts in its plane) drops a slab or two, never
- * the limits, so that the box is met on fewer constraints: more often, never less. */
-static inline bool box_float_hit(const FloatBox *b, const FloatRay *fr, float tmax, float *enter)
-{
-    const float *c = &b->corner[0][0];
-    float x0 = (c[fr->near[0]] - fr->origin[0]) * fr->inv_dir[0];
-    float x1 = (c[fr->far[0]] - fr->origin[0]) * fr->inv_dir[0];
-    float y0 = (c[fr->near[1]] - fr->origin[1]) * fr->inv_dir[1];
-    float y1 = (c[fr->far[1]] - fr->origin[1]) * fr->inv_dir[1];
-    float z0 = (c[fr->near[2]] - fr->origin[2]) * fr->inv_dir[2];
-    float z1 = (c[fr->far[2]] - fr->origin[2]) * fr->inv_dir[2];
-    float t0 = box_float_max(box_float_max(x0, y0), box_float_max(z0, fr->tmin));
-    float t1 = box_float_min(box_float_min(x1, y1), box_float_min(z1, tmax));
-    *enter = t0;
-    return box_float_reaches(fr, t0, t1);
-}
-/* end excerpt: box-float-hit */
+/* end excerpt: box-float-ray */
 
 Box box_empty(void);
 Vec3 box_center(Box b);
 bool box_contains(Box outer, Box inner);
 Box box_pad(Box b);
 Box box_of_surface(const Scene *scene, int s);
-FloatBox box_to_float(Box b);
-Box box_of_float(FloatBox f);
+float box_float_below(double x);
 FloatRay box_float_ray(Ray r, double tmin, bool in_range);
 Box box_of_sphere(const Sphere *s);
 Box box_of_triangle(const Triangle *tri);

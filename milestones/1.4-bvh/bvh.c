@@ -25,6 +25,24 @@ static inline int bin_of(double c, double lo, double scale)
     return b < 0 ? 0 : b >= BVH_BINS ? BVH_BINS - 1 : b;
 }
 
+/* Stores child k of node: where it is, and its box rounded outwards to floats. */
+void bvh_node_set(BvhNode *node, int k, Box box, BvhRef ref)
+{
+    double lo[3] = {box.lo.x, box.lo.y, box.lo.z}, hi[3] = {box.hi.x, box.hi.y, box.hi.z};
+    for (int a = 0; a < 3; a++) {
+        node->lo[a][k] = box_float_below(lo[a]);
+        node->hi[a][k] = -box_float_below(-hi[a]);
+    }
+    node->child[k] = ref;
+}
+
+/* Returns the box of child k of node, as doubles: exactly its float box. */
+Box bvh_node_box(const BvhNode *node, int k)
+{
+    return (Box){vec3(node->lo[0][k], node->lo[1][k], node->lo[2][k]),
+                 vec3(node->hi[0][k], node->hi[1][k], node->hi[2][k])};
+}
+
 /* starter: todo */
 /* excerpt: bvh-sah */
 /* Chooses where to split prims[begin, end) by the surface area heuristic: a ray that
@@ -138,8 +156,8 @@ static BvhRef build_node(BvhBuilder *b, int begin, int end, int depth, Box *box_
     Box child_box[2];
     BvhRef left = build_node(b, begin, mid, depth + 1, &child_box[0]); /* node self + 1 */
     BvhRef right = build_node(b, mid, end, depth + 1, &child_box[1]);
-    b->nodes[self] =
-        (BvhNode){{box_to_float(child_box[0]), box_to_float(child_box[1])}, {left, right}};
+    bvh_node_set(&b->nodes[self], 0, child_box[0], left);
+    bvh_node_set(&b->nodes[self], 1, child_box[1], right);
     return (BvhRef){self, 0};
 }
 /* end excerpt: bvh-build-node */
@@ -172,7 +190,8 @@ bool bvh_build(Bvh *bvh, const Scene *scene)
         bvh->root = build_node(&b, 0, n, 0, &box);
     BvhNode *fit = ok ? realloc(b.nodes, (size_t)(b.node_count + 1) * sizeof *fit) : NULL;
     bvh->nodes = fit != NULL ? fit : b.nodes;
-    bvh->box = box_to_float(box);
+    bvh_node_set(&bvh->top, 0, box, bvh->root);
+    bvh_node_set(&bvh->top, 1, box, bvh->root);
     bvh->in_range = vec3_max_abs(box.lo) <= 0x1p60 && vec3_max_abs(box.hi) <= 0x1p60;
     bvh->node_count = b.node_count, bvh->leaf_count = b.leaf_count, bvh->depth = b.depth;
     free(b.boxes);
@@ -197,6 +216,48 @@ size_t bvh_bytes(const Bvh *bvh)
            (size_t)(bvh->prim_count + (int)bvh->planes.count) * sizeof *bvh->prims;
 }
 
+/* excerpt: bvh-node-hit */
+/* Narrows each child k's interval [t0[k], t1[k]] to the t where the ray lies in its slab
+ * on axis a, in float. The two children side by side: the compiler makes each step of
+ * the loop over k one instruction for both. The max is written so that a NaN (0 * inf:
+ * a ray parallel to a face starts in its plane) leaves t0 as it is, the box met on one
+ * constraint fewer: more often, never less; the processor's maxss does just that. */
+static inline void node_slab(const BvhNode *node, const FloatRay *fr, int a, float t0[2],
+                             float t1[2])
+{
+    const float *near = &node->lo[0][0] + fr->near[a], *far = &node->lo[0][0] + fr->far[a];
+    for (int k = 0; k < 2; k++) {
+        float enter = (near[k] - fr->origin[a][k]) * fr->inv_near[a][k];
+        float leave = (far[k] - fr->origin[a][k]) * fr->inv_far[a][k];
+        t0[k] = enter > t0[k] ? enter : t0[k];
+        t1[k] = leave < t1[k] ? leave : t1[k];
+    }
+}
+
+/* Tests both children's boxes of node against the float ray fr, from its tmin to tmax
+ * (from box_float_tmax): returns bit k set when the ray may meet child k's box, and
+ * sets entry[k] to where it may enter. */
+static inline int node_hit(const BvhNode *node, const FloatRay *fr, float tmax, float entry[2])
+{
+    float t0[2] = {fr->tmin, fr->tmin}, t1[2] = {tmax, tmax};
+    node_slab(node, fr, 0, t0, t1);
+    node_slab(node, fr, 1, t0, t1);
+    node_slab(node, fr, 2, t0, t1);
+    entry[0] = t0[0];
+    entry[1] = t0[1];
+    return box_float_reaches(fr, t0[0], t1[0]) | box_float_reaches(fr, t0[1], t1[1]) << 1;
+}
+/* end excerpt: bvh-node-hit */
+
+/* Tests both children's boxes of node against ray r with [tmin, tmax] as the traversal
+ * does: bit k set when child k's box may be met. For the tests. */
+int bvh_node_hit(const BvhNode *node, Ray r, double tmin, double tmax)
+{
+    FloatRay fr = box_float_ray(r, tmin, true);
+    float entry[2];
+    return node_hit(node, &fr, box_float_tmax(tmax), entry);
+}
+
 /* starter: todo */
 /* excerpt: bvh-traverse */
 /* Visits every leaf whose box ray r may meet with tmin <= t <= *tmax, nearer boxes
@@ -204,12 +265,12 @@ size_t bvh_bytes(const Bvh *bvh)
 bool bvh_traverse(const Bvh *bvh, Ray r, double tmin, double *tmax, BvhLeafFn leaf, void *state)
 {
     FloatRay fr = box_float_ray(r, tmin, bvh->in_range);
-    float t_max = (float)*tmax, enter[2];
-    if (bvh->prim_count == 0 || !box_float_hit(&bvh->box, &fr, t_max, &enter[0]))
+    float t_max = box_float_tmax(*tmax), entry[2];
+    if (bvh->prim_count == 0 || !(node_hit(&bvh->top, &fr, t_max, entry) & 1))
         return false;
     struct {
         BvhRef ref;
-        float enter;
+        float entry;
     } stack[BVH_MAX_DEPTH]; /* subtrees still to visit, and where the ray may enter them */
     int top = 0;
     BvhRef at = bvh->root;
@@ -217,28 +278,37 @@ bool bvh_traverse(const Bvh *bvh, Ray r, double tmin, double *tmax, BvhLeafFn le
         if (at.count > 0) {
             if (leaf(bvh, at, r, tmin, tmax, state))
                 return true;
-            t_max = (float)*tmax;
+            t_max = box_float_tmax(*tmax);
         } else {
             /* Both children's boxes are tested: the ray goes on into the nearer one,
              * and the other waits. Branches, not an index computed from the tests: the
              * processor guesses the next node and loads it while the tests still run. */
             const BvhNode *node = &bvh->nodes[at.index];
-            bool hit0 = box_float_hit(&node->box[0], &fr, t_max, &enter[0]);
-            bool hit1 = box_float_hit(&node->box[1], &fr, t_max, &enter[1]);
-            if (hit0 && hit1 && enter[1] < enter[0]) {
+            float t1[2] = {t_max, t_max};
+            entry[0] = entry[1] = fr.tmin;
+            node_slab(node, &fr, 0, entry, t1);
+            node_slab(node, &fr, 1, entry, t1);
+            node_slab(node, &fr, 2, entry, t1);
+            int hits = box_float_reaches(&fr, entry[0], t1[0]) |
+                       box_float_reaches(&fr, entry[1], t1[1]) << 1;
+            if (hits == 3 && entry[1] < entry[0]) {
                 stack[top].ref = node->child[0];
-                stack[top++].enter = enter[0];
+                stack[top++].entry = entry[0];
                 at = node->child[1];
                 continue;
             }
-            if (hit0 && hit1) {
+            if (hits == 3) {
                 stack[top].ref = node->child[1];
-                stack[top++].enter = enter[1];
+                stack[top++].entry = entry[1];
                 at = node->child[0];
                 continue;
             }
-            if (hit0 || hit1) {
-                at = hit0 ? node->child[0] : node->child[1];
+            if (hits == 1) {
+                at = node->child[0];
+                continue;
+            }
+            if (hits == 2) {
+                at = node->child[1];
                 continue;
             }
         }
@@ -247,7 +317,7 @@ bool bvh_traverse(const Bvh *bvh, Ray r, double tmin, double *tmax, BvhLeafFn le
             if (top == 0)
                 return false;
             top--;
-        } while (!box_float_reaches(&fr, stack[top].enter, t_max));
+        } while (!box_float_reaches(&fr, stack[top].entry, t_max));
         at = stack[top].ref;
     }
 }
@@ -330,13 +400,11 @@ static long count_below(const Bvh *bvh, BvhRef at, const FloatRay *fr, Ray r, do
     if (at.index >= (uint32_t)bvh->node_count) /* a tree the build left unfinished */
         return 0;
     const BvhNode *node = &bvh->nodes[at.index];
-    float enter[2];
-    bool hit0 = box_float_hit(&node->box[0], fr, (float)*tmax, &enter[0]);
-    bool hit1 = box_float_hit(&node->box[1], fr, (float)*tmax, &enter[1]);
-    int first = hit0 && hit1 && enter[1] < enter[0], hit[2] = {hit0, hit1};
+    float entry[2];
+    int hits = node_hit(node, fr, box_float_tmax(*tmax), entry);
     long tests = 2;
-    for (int k = first, i = 0; i < 2; i++, k = 1 - k)
-        if (hit[k] && box_float_reaches(fr, enter[k], (float)*tmax))
+    for (int k = hits == 3 && entry[1] < entry[0], i = 0; i < 2; i++, k = 1 - k)
+        if ((hits >> k & 1) && box_float_reaches(fr, entry[k], box_float_tmax(*tmax)))
             tests += count_below(bvh, node->child[k], fr, r, tmax, c);
     return tests;
 }
@@ -348,8 +416,8 @@ long bvh_count_tests(const Bvh *bvh, Ray r)
     FloatRay fr = box_float_ray(r, 0, bvh->in_range);
     Closest c = {.tmax = INFINITY};
     double tmax = INFINITY;
-    float enter;
-    if (bvh->prim_count == 0 || !box_float_hit(&bvh->box, &fr, INFINITY, &enter))
+    float entry[2];
+    if (bvh->prim_count == 0 || !(node_hit(&bvh->top, &fr, INFINITY, entry) & 1))
         return bvh->prim_count > 0;
     return 1 + count_below(bvh, bvh->root, &fr, r, &tmax, &c);
 }

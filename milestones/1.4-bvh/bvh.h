@@ -28,7 +28,8 @@ typedef struct {
  * the children are; 64 bytes, one cache line. Nodes are stored depth first: a first
  * child that is a node comes right after its parent. */
 typedef struct {
-    FloatBox box[2]; /* child k's box, rounded outwards: it holds every box below it */
+    float lo[3][2], hi[3][2]; /* on axis a, child k's box spans lo[a][k] to hi[a][k], in
+                                 float, rounded outwards: it holds every box below it */
     BvhRef child[2];
 } BvhNode;
 
@@ -37,7 +38,7 @@ typedef struct {
  * tree and are tested after it. */
 typedef struct {
     const Scene *scene;
-    FloatBox box;   /* the root's box */
+    BvhNode top;    /* the root's box as both children of a node of its own */
     BvhRef root;    /* a node, or a leaf when there are few primitives */
     BvhNode *nodes; /* the interior nodes; none when the root is a leaf or there is nothing */
     int node_count;
@@ -67,6 +68,9 @@ typedef bool (*BvhLeafFn)(const Bvh *bvh, BvhRef leaf, Ray r, double tmin, doubl
                           void *state);
 
 bool bvh_build(Bvh *bvh, const Scene *scene);
+void bvh_node_set(BvhNode *node, int k, Box box, BvhRef ref);
+Box bvh_node_box(const BvhNode *node, int k);
+int bvh_node_hit(const BvhNode *node, Ray r, double tmin, double tmax);
 int bvh_split(BvhBuilder *b, int begin, int end, Box box, Box centroids);
 void bvh_free(Bvh *bvh);
 bool bvh_traverse(const Bvh *bvh, Ray r, double tmin, double *tmax, BvhLeafFn leaf, void *state);

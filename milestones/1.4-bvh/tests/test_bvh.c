@@ -183,7 +183,7 @@ static bool walk(Walk *w, BvhRef ref, Box box, const char *whose, int depth)
     const BvhNode *node = &bvh->nodes[ref.index];
     w->nodes++;
     for (int c = 0; c < 2; c++) {
-        Box child = box_of_float(node->box[c]);
+        Box child = bvh_node_box(node, c);
         char child_whose[100];
         snprintf(child_whose, sizeof child_whose, "node %u's box of its child %d", ref.index, c);
         if (!box_contains(box, child)) {
@@ -214,7 +214,7 @@ static void check_invariants(const Scene *scene)
     Walk w = {.bvh = &bvh, .leaf_of = malloc((size_t)all * sizeof(int))};
     for (int p = 0; p < all; p++)
         w.leaf_of[p] = -1;
-    bool ok = walk(&w, bvh.root, box_of_float(bvh.box), "the root's box", 0);
+    bool ok = walk(&w, bvh.root, bvh_node_box(&bvh.top, 0), "the root's box", 0);
     char name[100];
     for (int p = 0; ok && p < all; p++)
         if (w.leaf_of[p] < 0 &&
@@ -347,7 +347,7 @@ static void compare_with_brute_force(const Scene *scene, int count, double lo, d
 {
     Bvh bvh;
     ck_assert(bvh_build(&bvh, scene));
-    Box all = box_of_float(bvh.box);
+    Box all = bvh_node_box(&bvh.top, 0);
     int hits = 0;
     for (int k = 0; k < count; k++) {
         Vec3 o = rnd_point(lo, hi), target = vec3_add(all.lo, vec3(rnd() * (all.hi.x - all.lo.x),
@@ -412,45 +412,40 @@ START_TEST(pixels_as_brute_force)
 }
 END_TEST
 
-/* Tells whether ray r may meet float box box with tmin <= t <= tmax, as the BVH tests it. */
-static bool float_may_hit(FloatBox box, Ray r, double tmin, double tmax)
-{
-    FloatRay fr = box_float_ray(r, tmin, true);
-    float enter;
-    return box_float_hit(&box, &fr, (float)tmax, &enter);
-}
-
-/* Returns a random float box: its corners at about scale from the origin, its sides
+/* Returns a random box of floats: its corners at about scale from the origin, its sides
  * from 0 (flat) to about scale. */
-static FloatBox rnd_float_box(double scale)
+static Box rnd_float_box(double scale)
 {
-    FloatBox b;
+    double lo[3], hi[3];
     for (int a = 0; a < 3; a++) {
-        b.corner[0][a] = (float)(scale * (2 * rnd() - 1));
-        b.corner[1][a] = rnd() < 0.1 ? b.corner[0][a] : (float)(b.corner[0][a] + scale * rnd());
+        lo[a] = (float)(scale * (2 * rnd() - 1));
+        hi[a] = rnd() < 0.1 ? lo[a] : (float)(lo[a] + scale * rnd());
     }
-    return b;
+    return (Box){vec3(lo[0], lo[1], lo[2]), vec3(hi[0], hi[1], hi[2])};
 }
 
-/* The float test of a box against the slab test in double, on rays chosen to graze:
- * origins on the box's planes or at no float, rays parallel to a face, aimed at a
- * corner, an edge or a face, with tmax at the box's own entry. Wherever the double test
- * meets a box, so must the float test; and it may meet more, but rarely. */
+/* The float test of a node's two boxes against the exact slab test in double, on rays
+ * chosen to graze: origins on the boxes' planes or at no float, rays parallel to a face,
+ * aimed at a corner, an edge or a face, with tmax at the box's own entry. Wherever the
+ * double test meets a box, so must the float test; and it may meet more, but rarely. */
 START_TEST(float_test_is_conservative)
 {
     long met = 0, extra = 0; /* of the rays in random directions */
     const double scales[] = {1e-3, 1, 1e3, 1e6};
     for (int k = 0; k < 400000; k++) {
         double scale = scales[k % 4];
-        FloatBox fbox = rnd_float_box(scale);
-        Box box = box_of_float(fbox);
+        Box box[2] = {rnd_float_box(scale), rnd_float_box(scale)};
+        BvhNode node;
+        for (int c = 0; c < 2; c++) /* float boxes already: stored as they are */
+            bvh_node_set(&node, c, box[c], (BvhRef){0, 1});
         Vec3 o = vec3_scale(rnd_point(-3, 3), scale);
-        if (rnd() < 0.3) /* on a plane of the box */
-            o.x = rnd() < 0.5 ? box.lo.x : box.hi.x;
-        Vec3 target = vec3(rnd() < 0.5 ? box.lo.x : box.hi.x, rnd() < 0.5 ? box.lo.y : box.hi.y,
-                           rnd() < 0.5 ? box.lo.z : box.hi.z); /* a corner */
-        if (rnd() < 0.5)                                       /* a point of an edge or a face */
-            target.y = box.lo.y + rnd() * (box.hi.y - box.lo.y);
+        if (rnd() < 0.3) /* on a plane of the first box */
+            o.x = rnd() < 0.5 ? box[0].lo.x : box[0].hi.x;
+        Vec3 target =
+            vec3(rnd() < 0.5 ? box[0].lo.x : box[0].hi.x, rnd() < 0.5 ? box[0].lo.y : box[0].hi.y,
+                 rnd() < 0.5 ? box[0].lo.z : box[0].hi.z); /* a corner */
+        if (rnd() < 0.5)                                   /* a point of an edge or a face */
+            target.y = box[0].lo.y + rnd() * (box[0].hi.y - box[0].lo.y);
         Vec3 to = vec3_sub(target, o);
         bool aimed = rnd() < 0.7 && vec3_length(to) > 0;
         Vec3 d = aimed ? vec3_normalize(to) : rnd_dir();
@@ -461,18 +456,22 @@ START_TEST(float_test_is_conservative)
         Ray r = ray(o, d);
         BoxRay br = box_ray(r);
         double tmin = rnd() < 0.5 ? 0 : 1e-9 * scale, tmax = INFINITY, t;
-        if (rnd() < 0.3 && box_hit(box, &br, tmin, INFINITY, &t))
+        if (rnd() < 0.3 && box_hit(box[0], &br, tmin, INFINITY, &t))
             tmax = t; /* the interval ends where the box begins */
         else if (rnd() < 0.3)
             tmax = rnd() * 5 * scale;
-        bool exact = box_hit(box, &br, tmin, tmax, &t), may = float_may_hit(fbox, r, tmin, tmax);
-        ck_assert_msg(!exact || may, "box missed: o (%a, %a, %a) d (%a, %a, %a) t [%a, %a]", o.x,
-                      o.y, o.z, d.x, d.y, d.z, tmin, tmax);
-        met += !aimed && exact;
-        extra += !aimed && !exact && may;
+        int bits = bvh_node_hit(&node, r, tmin, tmax);
+        for (int c = 0; c < 2; c++) {
+            bool exact = box_hit(box[c], &br, tmin, tmax, &t);
+            ck_assert_msg(!exact || (bits >> c & 1),
+                          "box %d missed: o (%a, %a, %a) d (%a, %a, %a) t [%a, %a]", c, o.x, o.y,
+                          o.z, d.x, d.y, d.z, tmin, tmax);
+            met += !aimed && exact;
+            extra += !aimed && !exact && (bits >> c & 1);
+        }
     }
     /* The slack is about 2^-20 of t: a ray in a random direction rarely passes so close. */
-    ck_assert_msg(met > 500 && extra * 10 < met, "%ld boxes met, %ld by the float test alone", met,
+    ck_assert_msg(met > 1000 && extra * 10 < met, "%ld boxes met, %ld by the float test alone", met,
                   extra);
 }
 END_TEST
@@ -481,13 +480,15 @@ END_TEST
  * negative, meets every box: slow, but never wrong. */
 START_TEST(float_test_out_of_range)
 {
-    FloatBox box = {{{0, 0, 0}, {1, 1, 1}}};
-    ck_assert(!float_may_hit(box, ray(vec3(5, 5, -5), vec3(0, 0, 1)), 0, 1));
-    ck_assert(float_may_hit(box, ray(vec3(0.5, 0.5, -5), vec3(0, 0, 1)), 0, INFINITY));
-    ck_assert(!float_may_hit(box, ray(vec3(0.5, 0.5, -5), vec3(0, 0, 1)), 0, 4.9));
-    ck_assert(float_may_hit(box, ray(vec3(0x1p70, 5, -5), vec3(0, 0, 1)), 0, 1));
-    ck_assert(float_may_hit(box, ray(vec3(5, 5, -5), vec3(0x1p-70, 0, 1)), 0, 1));
-    ck_assert(float_may_hit(box, ray(vec3(5, 5, -5), vec3(0, 0, 1)), -1, 1));
+    BvhNode node;
+    bvh_node_set(&node, 0, (Box){vec3(0, 0, 0), vec3(1, 1, 1)}, (BvhRef){0, 1});
+    bvh_node_set(&node, 1, (Box){vec3(10, 10, 10), vec3(11, 11, 11)}, (BvhRef){1, 1});
+    ck_assert_int_eq(bvh_node_hit(&node, ray(vec3(5, 5, -5), vec3(0, 0, 1)), 0, 1), 0);
+    ck_assert_int_eq(bvh_node_hit(&node, ray(vec3(0.5, 0.5, -5), vec3(0, 0, 1)), 0, INFINITY), 1);
+    ck_assert_int_eq(bvh_node_hit(&node, ray(vec3(0.5, 0.5, -5), vec3(0, 0, 1)), 0, 4.9), 0);
+    ck_assert_int_eq(bvh_node_hit(&node, ray(vec3(0x1p70, 5, -5), vec3(0, 0, 1)), 0, 1), 3);
+    ck_assert_int_eq(bvh_node_hit(&node, ray(vec3(5, 5, -5), vec3(0x1p-70, 0, 1)), 0, 1), 3);
+    ck_assert_int_eq(bvh_node_hit(&node, ray(vec3(5, 5, -5), vec3(0, 0, 1)), -1, 1), 3);
 }
 END_TEST
 
