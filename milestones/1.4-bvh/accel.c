@@ -216,14 +216,41 @@ Surfaces accel_surfaces(const Accel *accel)
     return (Surfaces){bvh_surfaces_hit, bvh_surfaces_blocked, accel};
 }
 
+/* Counts the boxes and primitives the BVH's search for a closest hit tests below at,
+ * in bvh_traverse's order: the nearer child first, the other if the hits found since
+ * (which lower *tmax) have not ruled it out. */
+static long count_below(const Bvh *bvh, BvhRef at, const FloatRay *fr, Ray r, double *tmax)
+{
+    Hit hit;
+    for (uint32_t k = at.index; k < at.index + at.count; k++)
+        if (world_intersect(bvh->scene, bvh->prims[k], r, 0, *tmax, &hit))
+            *tmax = hit.t;
+    if (at.count > 0 || at.index >= (uint32_t)bvh->node_count) /* a leaf, or a tree unfinished */
+        return at.count;
+    const BvhNode *node = &bvh->nodes[at.index];
+    float entry[2];
+    int hits = bvh_node_hit(node, fr, box_float_tmax(*tmax), entry);
+    long tests = 2;
+    for (int k = hits == 3 && entry[1] < entry[0], i = 0; i < 2; i++, k = 1 - k)
+        if ((hits >> k & 1) && box_float_reaches(fr, entry[k], box_float_tmax(*tmax)))
+            tests += count_below(bvh, node->child[k], fr, r, tmax);
+    return tests;
+}
+
 /* Returns how many boxes and primitives ray r is tested against to find its closest hit
- * in accel's mode, for --view box-tests: with the BVH (modes 2 and 3) the nodes' boxes
- * and the leaves' primitives it visits (bvh_count_tests), in modes 0 and 1 every
+ * in accel's mode, for --view box-tests: with the BVH (modes 2 and 3) the root's box,
+ * two boxes a node it visits and the leaves' primitives, in modes 0 and 1 every
  * surface's box; and every plane, which has no box. */
 long accel_count_tests(const Accel *accel, Ray r)
 {
     const Scene *s = accel->scene;
-    if (accel->mode == ACCEL_BVH || accel->mode == ACCEL_LEAF_BOXES)
-        return bvh_count_tests(&accel->bvh, r) + s->plane_count;
-    return s->sphere_count + s->triangle_count + s->plane_count;
+    const Bvh *bvh = &accel->bvh;
+    if (accel->mode != ACCEL_BVH && accel->mode != ACCEL_LEAF_BOXES)
+        return s->sphere_count + s->triangle_count + s->plane_count;
+    FloatRay fr = box_float_ray(r, 0, bvh->in_range);
+    double tmax = INFINITY;
+    float entry[2];
+    if (bvh->prim_count == 0 || !(bvh_node_hit(&bvh->top, &fr, INFINITY, entry) & 1))
+        return (bvh->prim_count > 0) + s->plane_count;
+    return 1 + count_below(bvh, bvh->root, &fr, r, &tmax) + s->plane_count;
 }

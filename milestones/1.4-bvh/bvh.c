@@ -237,7 +237,7 @@ static inline void node_slab(const BvhNode *node, const FloatRay *fr, int a, flo
 /* Tests both children's boxes of node against the float ray fr, from its tmin to tmax
  * (from box_float_tmax): returns bit k set when the ray may meet child k's box, and
  * sets entry[k] to where it may enter. */
-static inline int node_hit(const BvhNode *node, const FloatRay *fr, float tmax, float entry[2])
+int bvh_node_hit(const BvhNode *node, const FloatRay *fr, float tmax, float entry[2])
 {
     float t0[2] = {fr->tmin, fr->tmin}, t1[2] = {tmax, tmax};
     node_slab(node, fr, 0, t0, t1);
@@ -249,15 +249,6 @@ static inline int node_hit(const BvhNode *node, const FloatRay *fr, float tmax, 
 }
 /* end excerpt: bvh-node-hit */
 
-/* Tests both children's boxes of node against ray r with [tmin, tmax] as the traversal
- * does: bit k set when child k's box may be met. For the tests. */
-int bvh_node_hit(const BvhNode *node, Ray r, double tmin, double tmax)
-{
-    FloatRay fr = box_float_ray(r, tmin, true);
-    float entry[2];
-    return node_hit(node, &fr, box_float_tmax(tmax), entry);
-}
-
 /* starter: todo */
 /* excerpt: bvh-traverse */
 /* Visits every leaf whose box ray r may meet with tmin <= t <= *tmax, nearer boxes
@@ -266,7 +257,7 @@ bool bvh_traverse(const Bvh *bvh, Ray r, double tmin, double *tmax, BvhLeafFn le
 {
     FloatRay fr = box_float_ray(r, tmin, bvh->in_range);
     float t_max = box_float_tmax(*tmax), entry[2];
-    if (bvh->prim_count == 0 || !(node_hit(&bvh->top, &fr, t_max, entry) & 1))
+    if (bvh->prim_count == 0 || !(bvh_node_hit(&bvh->top, &fr, t_max, entry) & 1))
         return false;
     struct {
         BvhRef ref;
@@ -386,38 +377,4 @@ bool bvh_blocked(const Bvh *bvh, Ray r, double tmin, double tmax)
 {
     return bvh_traverse(bvh, r, tmin, &tmax, leaf_any, NULL) ||
            leaf_any(bvh, bvh->planes, r, tmin, &tmax, NULL);
-}
-
-/* Counts the boxes and primitives tested below at, in bvh_traverse's order: the nearer
- * child first, the other if the hits found since have not ruled it out. */
-static long count_below(const Bvh *bvh, BvhRef at, const FloatRay *fr, Ray r, double *tmax,
-                        Closest *c)
-{
-    if (at.count > 0) {
-        leaf_closest(bvh, at, r, 0, tmax, c);
-        return at.count;
-    }
-    if (at.index >= (uint32_t)bvh->node_count) /* a tree the build left unfinished */
-        return 0;
-    const BvhNode *node = &bvh->nodes[at.index];
-    float entry[2];
-    int hits = node_hit(node, fr, box_float_tmax(*tmax), entry);
-    long tests = 2;
-    for (int k = hits == 3 && entry[1] < entry[0], i = 0; i < 2; i++, k = 1 - k)
-        if ((hits >> k & 1) && box_float_reaches(fr, entry[k], box_float_tmax(*tmax)))
-            tests += count_below(bvh, node->child[k], fr, r, tmax, c);
-    return tests;
-}
-
-/* Returns how many boxes and primitives the search for ray r's closest hit tests in the
- * tree (--view box-tests): the root's box, two boxes a node, and the leaves' primitives. */
-long bvh_count_tests(const Bvh *bvh, Ray r)
-{
-    FloatRay fr = box_float_ray(r, 0, bvh->in_range);
-    Closest c = {.tmax = INFINITY};
-    double tmax = INFINITY;
-    float entry[2];
-    if (bvh->prim_count == 0 || !(node_hit(&bvh->top, &fr, INFINITY, entry) & 1))
-        return bvh->prim_count > 0;
-    return 1 + count_below(bvh, bvh->root, &fr, r, &tmax, &c);
 }

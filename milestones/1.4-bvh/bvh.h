@@ -70,13 +70,12 @@ typedef bool (*BvhLeafFn)(const Bvh *bvh, BvhRef leaf, Ray r, double tmin, doubl
 bool bvh_build(Bvh *bvh, const Scene *scene);
 void bvh_node_set(BvhNode *node, int k, Box box, BvhRef ref);
 Box bvh_node_box(const BvhNode *node, int k);
-int bvh_node_hit(const BvhNode *node, Ray r, double tmin, double tmax);
+int bvh_node_hit(const BvhNode *node, const FloatRay *fr, float tmax, float entry[2]);
 int bvh_split(BvhBuilder *b, int begin, int end, Box box, Box centroids);
 void bvh_free(Bvh *bvh);
 bool bvh_traverse(const Bvh *bvh, Ray r, double tmin, double *tmax, BvhLeafFn leaf, void *state);
 bool bvh_hit(const Bvh *bvh, Ray r, double tmin, double tmax, Hit *hit);
 bool bvh_blocked(const Bvh *bvh, Ray r, double tmin, double tmax);
 size_t bvh_bytes(const Bvh *bvh);
-long bvh_count_tests(const Bvh *bvh, Ray r);
 
 #endif

@@ -286,11 +286,11 @@ START_TEST(tests_counted_for_the_box_tests_view)
     Scene scene;
     random_scene(&scene, 1, 0.05, 0, 0);
     set_triangle(&scene, 0, vec3(-1, -1, -5), vec3(1, -1, -5), vec3(0, 1, -5), 0);
-    Bvh bvh;
-    ck_assert(bvh_build(&bvh, &scene));
-    ck_assert_int_eq(bvh_count_tests(&bvh, ray(vec3(0, 0, 0), vec3(0, 0, -1))), 2);
-    ck_assert_int_eq(bvh_count_tests(&bvh, ray(vec3(0, 0, 0), vec3(0, 0, 1))), 1);
-    bvh_free(&bvh);
+    Accel accel;
+    ck_assert(accel_build(&accel, &scene, ACCEL_BVH));
+    ck_assert_int_eq(accel_count_tests(&accel, ray(vec3(0, 0, 0), vec3(0, 0, -1))), 2);
+    ck_assert_int_eq(accel_count_tests(&accel, ray(vec3(0, 0, 0), vec3(0, 0, 1))), 1);
+    accel_free(&accel);
     scene_free(&scene);
 }
 END_TEST
@@ -412,6 +412,15 @@ START_TEST(pixels_as_brute_force)
 }
 END_TEST
 
+/* Tests node's two boxes against ray r with [tmin, tmax] as the traversal does: bit k set
+ * when child k's box may be met. */
+static int node_hit(const BvhNode *node, Ray r, double tmin, double tmax)
+{
+    FloatRay fr = box_float_ray(r, tmin, true);
+    float entry[2];
+    return bvh_node_hit(node, &fr, box_float_tmax(tmax), entry);
+}
+
 /* Returns a random box of floats: its corners at about scale from the origin, its sides
  * from 0 (flat) to about scale. */
 static Box rnd_float_box(double scale)
@@ -460,7 +469,7 @@ START_TEST(float_test_is_conservative)
             tmax = t; /* the interval ends where the box begins */
         else if (rnd() < 0.3)
             tmax = rnd() * 5 * scale;
-        int bits = bvh_node_hit(&node, r, tmin, tmax);
+        int bits = node_hit(&node, r, tmin, tmax);
         for (int c = 0; c < 2; c++) {
             bool exact = box_hit(box[c], &br, tmin, tmax, &t);
             ck_assert_msg(!exact || (bits >> c & 1),
@@ -483,12 +492,12 @@ START_TEST(float_test_out_of_range)
     BvhNode node;
     bvh_node_set(&node, 0, (Box){vec3(0, 0, 0), vec3(1, 1, 1)}, (BvhRef){0, 1});
     bvh_node_set(&node, 1, (Box){vec3(10, 10, 10), vec3(11, 11, 11)}, (BvhRef){1, 1});
-    ck_assert_int_eq(bvh_node_hit(&node, ray(vec3(5, 5, -5), vec3(0, 0, 1)), 0, 1), 0);
-    ck_assert_int_eq(bvh_node_hit(&node, ray(vec3(0.5, 0.5, -5), vec3(0, 0, 1)), 0, INFINITY), 1);
-    ck_assert_int_eq(bvh_node_hit(&node, ray(vec3(0.5, 0.5, -5), vec3(0, 0, 1)), 0, 4.9), 0);
-    ck_assert_int_eq(bvh_node_hit(&node, ray(vec3(0x1p70, 5, -5), vec3(0, 0, 1)), 0, 1), 3);
-    ck_assert_int_eq(bvh_node_hit(&node, ray(vec3(5, 5, -5), vec3(0x1p-70, 0, 1)), 0, 1), 3);
-    ck_assert_int_eq(bvh_node_hit(&node, ray(vec3(5, 5, -5), vec3(0, 0, 1)), -1, 1), 3);
+    ck_assert_int_eq(node_hit(&node, ray(vec3(5, 5, -5), vec3(0, 0, 1)), 0, 1), 0);
+    ck_assert_int_eq(node_hit(&node, ray(vec3(0.5, 0.5, -5), vec3(0, 0, 1)), 0, INFINITY), 1);
+    ck_assert_int_eq(node_hit(&node, ray(vec3(0.5, 0.5, -5), vec3(0, 0, 1)), 0, 4.9), 0);
+    ck_assert_int_eq(node_hit(&node, ray(vec3(0x1p70, 5, -5), vec3(0, 0, 1)), 0, 1), 3);
+    ck_assert_int_eq(node_hit(&node, ray(vec3(5, 5, -5), vec3(0x1p-70, 0, 1)), 0, 1), 3);
+    ck_assert_int_eq(node_hit(&node, ray(vec3(5, 5, -5), vec3(0, 0, 1)), -1, 1), 3);
 }
 END_TEST
 
