@@ -157,7 +157,8 @@ FloatRay box_float_ray(Ray r, double tmin, bool in_range)
         fr.far[a] = signbit(d[a]) ? 2 * a : 6 + 2 * a;
         in_range = in_range && fabs(o[a]) <= 0x1p60;
         if (d[a] != 0) {
-            shift = fmax(shift, fabs(o[a] - of) * fabs(inv));
+            double moved = fabs(o[a] - of) * fabs(inv);
+            shift = moved > shift ? moved : shift;
             in_range = in_range && fabs(inv) >= 0x1p-60 && fabs(inv) <= 0x1p60;
         }
     }
