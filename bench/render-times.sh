@@ -35,7 +35,8 @@ row() {
     set -- $info
     a=$(seconds "$old" "$scene" "" "$options") b=$(seconds "$new" "$scene" 0 "$options")
     c=$(seconds "$new" "$scene" 3 "$options")
-    speedup=$(echo "$a $c" | awk '{ printf "%.0f", ($2 > 0 ? $1 / $2 : 0) }')
+    # No ">" in a printf's arguments: some awks read it as a redirection into a file "0".
+    speedup=$(echo "$a $c" | awk '{ s = 0; if ($2 > 0) s = $1 / $2; printf "%.0f", s }')
     echo "| $shown | $1 | $2 | $3 | $a | $b | $c | ${speedup}× |"
 }
 

@@ -6,34 +6,49 @@
 #include "triangle.h"
 
 /* starter: todo */
+/* excerpt: world-intersect */
+/* Finds where ray r meets surface number s of scene with tmin < t < tmax, and sets
+ * hit's t, kind and index. The surfaces are numbered spheres first, then planes, then
+ * triangles: the order in which world_hit tests them. */
+bool world_intersect(const Scene *scene, int s, Ray r, double tmin, double tmax, Hit *hit)
+{
+    double t = 0;
+    bool met;
+    SurfaceKind kind;
+    if (s < scene->sphere_count) {
+        kind = SURFACE_SPHERE;
+        met = sphere_intersect(&scene->spheres[s], r, tmin, tmax, &t);
+    } else if ((s -= scene->sphere_count) < scene->plane_count) {
+        kind = SURFACE_PLANE;
+        met = plane_intersect(&scene->planes[s], r, tmin, tmax, &t);
+    } else {
+        kind = SURFACE_TRIANGLE;
+        s -= scene->plane_count;
+        Triangle tri = scene_triangle(scene, s);
+        TriangleHit th;
+        met = triangle_intersect(&tri, r, tmin, tmax, &th);
+        if (met)
+            t = th.t;
+    }
+    if (met)
+        *hit = (Hit){.t = t, .kind = kind, .index = s};
+    return met;
+}
+/* end excerpt: world-intersect */
+
+/* starter: todo */
 /* excerpt: world-hit */
 /* Finds the nearest surface that ray r meets with tmin < t < tmax; fills in hit. */
 bool world_hit(const Scene *scene, Ray r, double tmin, double tmax, Hit *hit)
 {
     /* Each test only looks closer than the best hit so far: tmax shrinks as we go. */
     bool found = false;
-    double t;
-    for (int k = 0; k < scene->sphere_count; k++)
-        if (sphere_intersect(&scene->spheres[k], r, tmin, tmax, &t)) {
-            *hit = (Hit){.t = t, .kind = SURFACE_SPHERE, .index = k};
-            tmax = t;
+    int surfaces = scene->sphere_count + scene->plane_count + scene->triangle_count;
+    for (int s = 0; s < surfaces; s++)
+        if (world_intersect(scene, s, r, tmin, tmax, hit)) {
+            tmax = hit->t;
             found = true;
         }
-    for (int k = 0; k < scene->plane_count; k++)
-        if (plane_intersect(&scene->planes[k], r, tmin, tmax, &t)) {
-            *hit = (Hit){.t = t, .kind = SURFACE_PLANE, .index = k};
-            tmax = t;
-            found = true;
-        }
-    TriangleHit th;
-    for (int k = 0; k < scene->triangle_count; k++) {
-        Triangle tri = scene_triangle(scene, k);
-        if (triangle_intersect(&tri, r, tmin, tmax, &th)) {
-            *hit = (Hit){.t = th.t, .kind = SURFACE_TRIANGLE, .index = k};
-            tmax = th.t;
-            found = true;
-        }
-    }
     /* The point, normal and material are worked out once, for the winner only. */
     if (found)
         world_complete_hit(scene, r, hit);

@@ -9,6 +9,7 @@
 #include "ray.h"
 #include "scene.h"
 
+bool world_intersect(const Scene *scene, int s, Ray r, double tmin, double tmax, Hit *hit);
 bool world_hit(const Scene *scene, Ray r, double tmin, double tmax, Hit *hit);
 void world_complete_hit(const Scene *scene, Ray r, Hit *hit);
 void world_explain_hit(const Explain *e, int depth, const Hit *hit);

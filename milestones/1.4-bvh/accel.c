@@ -1,41 +1,32 @@
 /* accel.c: Surfaces for the course's modes: boxes as rejection tests, boxes drawn, and the BVH. */
 #include "accel.h"
 
-#include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <time.h>
 
-#include "plane.h"
-#include "sphere.h"
-#include "triangle.h"
 #include "world.h"
-
-/* Returns the seconds of a monotonic clock. */
-static double seconds_now(void)
-{
-    struct timespec ts;
-    clock_gettime(CLOCK_MONOTONIC, &ts);
-    return ts.tv_sec + ts.tv_nsec * 1e-9;
-}
 
 /* Builds what mode needs for scene: the surfaces' boxes or the BVH; false (reported, with
  * nothing left to free) when out of memory. */
 bool accel_build(Accel *accel, const Scene *scene, AccelMode mode)
 {
-    double start = seconds_now();
+    struct timespec start, end;
+    clock_gettime(CLOCK_MONOTONIC, &start);
     *accel = (Accel){.mode = mode, .scene = scene};
     bool ok = true;
     if (mode == ACCEL_BOXED || mode == ACCEL_SURFACE_BOXES) {
-        int n = scene->sphere_count + scene->triangle_count;
+        int n = scene->sphere_count + scene->plane_count + scene->triangle_count;
         accel->boxes = malloc((size_t)(n > 0 ? n : 1) * sizeof *accel->boxes);
         ok = accel->boxes != NULL;
-        for (int k = 0; ok && k < n; k++)
-            accel->boxes[k] = bvh_prim_box(scene, (uint32_t)k);
+        for (int s = 0; ok && s < n; s++)
+            accel->boxes[s] = box_of_surface(scene, s);
     } else {
         ok = bvh_build(&accel->bvh, scene);
     }
-    accel->build_seconds = seconds_now() - start;
+    clock_gettime(CLOCK_MONOTONIC, &end);
+    accel->build_seconds =
+        (double)(end.tv_sec - start.tv_sec) + (end.tv_nsec - start.tv_nsec) * 1e-9;
     if (!ok) {
         fprintf(stderr, "raytra: not enough memory for the bounding boxes of %s\n", scene->path);
         accel_free(accel);
@@ -50,76 +41,40 @@ void accel_free(Accel *accel)
     bvh_free(&accel->bvh);
 }
 
-/* Tells whether a hit at t on surface (kind, index) beats best: nearer, or as near and
- * tested first by part 1.2's world_hit (spheres, planes, triangles, each in order). */
-static bool beats(double t, SurfaceKind kind, int index, bool found, const Hit *best)
+/* Fills in the kind, index and material of surface s of scene in hit. */
+static void surface_of(const Scene *scene, int s, Hit *hit)
 {
-    if (!found || t < best->t)
-        return true;
-    return t == best->t && (kind < best->kind || (kind == best->kind && index < best->index));
-}
-
-/* Offers every plane to the closest hit so far: planes have no box and are not in any
- * hierarchy. Hits at exactly best->t are tested too, for the order of ties. */
-static bool planes_hit(const Scene *scene, Ray r, double tmin, double tmax, bool found, Hit *best)
-{
-    for (int k = 0; k < scene->plane_count; k++) {
-        double t, limit = found ? nextafter(best->t, INFINITY) : tmax;
-        if (plane_intersect(&scene->planes[k], r, tmin, limit, &t) &&
-            beats(t, SURFACE_PLANE, k, found, best)) {
-            *best = (Hit){.t = t, .kind = SURFACE_PLANE, .index = k};
-            world_complete_hit(scene, r, best);
-            found = true;
-        }
-    }
-    return found;
-}
-
-/* Tells whether any plane lies on ray r with tmin < t < tmax. */
-static bool planes_blocked(const Scene *scene, Ray r, double tmin, double tmax)
-{
-    double t;
-    for (int k = 0; k < scene->plane_count; k++)
-        if (plane_intersect(&scene->planes[k], r, tmin, tmax, &t))
-            return true;
-    return false;
+    int planes = scene->sphere_count + scene->plane_count;
+    if (s < scene->sphere_count)
+        *hit = (Hit){.kind = SURFACE_SPHERE, .index = s, .material = scene->spheres[s].material};
+    else if (s < planes)
+        *hit = (Hit){.kind = SURFACE_PLANE,
+                     .index = s - scene->sphere_count,
+                     .material = scene->planes[s - scene->sphere_count].material};
+    else
+        *hit = (Hit){.kind = SURFACE_TRIANGLE,
+                     .index = s - planes,
+                     .material = scene->triangles[s - planes].material};
 }
 
 /* excerpt: accel-boxed-hit */
-/* Mode 0: part 1.2's world_hit, but a sphere or triangle is tested only when the ray
- * meets its box; the box is closed and a little larger, so it never rejects a hit. */
+/* Mode 0: part 1.2's world_hit, but a surface is tested only when the ray meets its box;
+ * the box is closed and a little larger, so it never rejects a hit (a plane's box is
+ * all of space). */
 static bool boxed_hit(const void *data, Ray r, double tmin, double tmax, Hit *hit)
 {
     const Accel *accel = data;
     const Scene *scene = accel->scene;
     BoxRay br = box_ray(r);
     bool found = false;
-    double t, t_box;
-    for (int k = 0; k < scene->sphere_count; k++)
-        if (box_hit(accel->boxes[k], &br, tmin, tmax, &t_box) &&
-            sphere_intersect(&scene->spheres[k], r, tmin, tmax, &t)) {
-            *hit = (Hit){.t = t, .kind = SURFACE_SPHERE, .index = k};
-            tmax = t;
+    double t_box;
+    int surfaces = scene->sphere_count + scene->plane_count + scene->triangle_count;
+    for (int s = 0; s < surfaces; s++)
+        if (box_hit(accel->boxes[s], &br, tmin, tmax, &t_box) &&
+            world_intersect(scene, s, r, tmin, tmax, hit)) {
+            tmax = hit->t;
             found = true;
         }
-    for (int k = 0; k < scene->plane_count; k++)
-        if (plane_intersect(&scene->planes[k], r, tmin, tmax, &t)) {
-            *hit = (Hit){.t = t, .kind = SURFACE_PLANE, .index = k};
-            tmax = t;
-            found = true;
-        }
-    const Box *triangle_boxes = accel->boxes + scene->sphere_count;
-    TriangleHit th;
-    for (int k = 0; k < scene->triangle_count; k++) {
-        if (!box_hit(triangle_boxes[k], &br, tmin, tmax, &t_box))
-            continue;
-        Triangle tri = scene_triangle(scene, k);
-        if (triangle_intersect(&tri, r, tmin, tmax, &th)) {
-            *hit = (Hit){.t = th.t, .kind = SURFACE_TRIANGLE, .index = k};
-            tmax = th.t;
-            found = true;
-        }
-    }
     if (found)
         world_complete_hit(scene, r, hit);
     return found;
@@ -132,21 +87,14 @@ static bool boxed_blocked(const void *data, Ray r, double tmin, double tmax)
     const Accel *accel = data;
     const Scene *scene = accel->scene;
     BoxRay br = box_ray(r);
-    double t, t_box;
-    for (int k = 0; k < scene->sphere_count; k++)
-        if (box_hit(accel->boxes[k], &br, tmin, tmax, &t_box) &&
-            sphere_intersect(&scene->spheres[k], r, tmin, tmax, &t))
+    double t_box;
+    Hit hit;
+    int surfaces = scene->sphere_count + scene->plane_count + scene->triangle_count;
+    for (int s = 0; s < surfaces; s++)
+        if (box_hit(accel->boxes[s], &br, tmin, tmax, &t_box) &&
+            world_intersect(scene, s, r, tmin, tmax, &hit))
             return true;
-    const Box *triangle_boxes = accel->boxes + scene->sphere_count;
-    TriangleHit th;
-    for (int k = 0; k < scene->triangle_count; k++) {
-        if (!box_hit(triangle_boxes[k], &br, tmin, tmax, &t_box))
-            continue;
-        Triangle tri = scene_triangle(scene, k);
-        if (triangle_intersect(&tri, r, tmin, tmax, &th))
-            return true;
-    }
-    return planes_blocked(scene, r, tmin, tmax);
+    return false;
 }
 
 /* excerpt: accel-box-hit */
@@ -158,67 +106,101 @@ static bool surface_boxes_hit(const void *data, Ray r, double tmin, double tmax,
     const Accel *accel = data;
     const Scene *scene = accel->scene;
     bool found = false;
-    int n = scene->sphere_count + scene->triangle_count;
-    for (int k = 0; k < n; k++) {
+    int surfaces = scene->sphere_count + scene->plane_count + scene->triangle_count;
+    for (int s = 0; s < surfaces; s++) {
         BoxHit face;
-        if (!box_hit_face(accel->boxes[k], r, tmin, tmax, &face))
+        bool plane = s >= scene->sphere_count && s < scene->sphere_count + scene->plane_count;
+        if (plane && world_intersect(scene, s, r, tmin, tmax, hit)) {
+            world_complete_hit(scene, r, hit);
+        } else if (!plane && box_hit_face(accel->boxes[s], r, tmin, tmax, &face)) {
+            surface_of(scene, s, hit);
+            hit->t = face.t;
+            hit->point = ray_at(r, face.t);
+            hit->normal = box_face_normal(&face);
+        } else {
             continue;
-        Hit h = {.t = face.t, .point = ray_at(r, face.t), .normal = box_face_normal(&face)};
-        bvh_prim_surface(scene, (uint32_t)k, &h);
-        *hit = h;
-        tmax = face.t;
+        }
+        tmax = hit->t;
         found = true;
     }
-    return planes_hit(scene, r, tmin, tmax, found, hit);
+    return found;
 }
 /* end excerpt: accel-box-hit */
 
 /* Mode 1: whether any box or plane lies on the ray. */
 static bool surface_boxes_blocked(const void *data, Ray r, double tmin, double tmax)
 {
-    const Accel *accel = data;
-    int n = accel->scene->sphere_count + accel->scene->triangle_count;
-    BoxHit face;
-    for (int k = 0; k < n; k++)
-        if (box_hit_face(accel->boxes[k], r, tmin, tmax, &face))
-            return true;
-    return planes_blocked(accel->scene, r, tmin, tmax);
+    Hit hit;
+    return surface_boxes_hit(data, r, tmin, tmax, &hit);
 }
 
-/* Mode 2: the BVH's leaf boxes instead of the spheres and triangles; planes as they are. */
+/* The closest leaf box so far: where the ray meets it, and its leaf's first entry. */
+typedef struct {
+    bool found;
+    uint32_t first;
+    BoxHit face;
+    double tmax;
+} LeafBoxes;
+
+/* Tests a leaf's box (its primitives' boxes together) as if it were a surface, as the
+ * BVH's leaf_closest tests primitives: the smaller (t, first entry) wins. */
+static bool leaf_box(const Bvh *bvh, BvhRef leaf, Ray r, double tmin, double *tmax, void *state)
+{
+    LeafBoxes *lb = state;
+    Box box = box_empty();
+    for (uint32_t k = leaf.index; k < leaf.index + leaf.count; k++)
+        box = box_union(box, box_of_surface(bvh->scene, bvh->prims[k]));
+    BoxHit face;
+    if (box_hit_face(box, r, tmin, lb->tmax, &face) &&
+        (!lb->found || face.t < lb->face.t || (face.t == lb->face.t && leaf.index < lb->first))) {
+        *lb = (LeafBoxes){true, leaf.index, face, lb->tmax};
+        *tmax = face.t;
+    }
+    return false;
+}
+
+/* Mode 2: the BVH's leaf boxes instead of the spheres and triangles, each in the material
+ * of its first primitive; planes as they are. */
 static bool leaf_boxes_hit(const void *data, Ray r, double tmin, double tmax, Hit *hit)
 {
     const Accel *accel = data;
-    bool found = bvh_hit_leaf_boxes(&accel->bvh, r, tmin, tmax, hit);
-    return planes_hit(accel->scene, r, tmin, found ? hit->t : tmax, found, hit);
+    const Scene *scene = accel->scene;
+    LeafBoxes lb = {.tmax = tmax};
+    bvh_traverse(&accel->bvh, r, tmin, &tmax, leaf_box, &lb);
+    if (lb.found) {
+        surface_of(scene, accel->bvh.prims[lb.first], hit);
+        hit->t = lb.face.t;
+        hit->point = ray_at(r, lb.face.t);
+        hit->normal = box_face_normal(&lb.face);
+    }
+    bool found = lb.found;
+    for (int k = 0; k < scene->plane_count; k++)
+        if (world_intersect(scene, scene->sphere_count + k, r, tmin, found ? hit->t : lb.tmax,
+                            hit)) {
+            world_complete_hit(scene, r, hit);
+            found = true;
+        }
+    return found;
 }
 
 /* Mode 2: whether any leaf box or plane lies on the ray. */
 static bool leaf_boxes_blocked(const void *data, Ray r, double tmin, double tmax)
 {
-    const Accel *accel = data;
     Hit hit;
-    return bvh_hit_leaf_boxes(&accel->bvh, r, tmin, tmax, &hit) ||
-           planes_blocked(accel->scene, r, tmin, tmax);
+    return leaf_boxes_hit(data, r, tmin, tmax, &hit);
 }
 
 /* excerpt: accel-bvh-hit */
-/* Mode 3: the closest sphere or triangle from the BVH, then the planes, which have no
- * box; the winner's point and normal are worked out once, at the end. */
+/* Mode 3: the closest surface, from the BVH. */
 static bool bvh_surfaces_hit(const void *data, Ray r, double tmin, double tmax, Hit *hit)
 {
-    const Accel *accel = data;
-    bool found = bvh_hit(&accel->bvh, r, tmin, tmax, hit);
-    if (found)
-        world_complete_hit(accel->scene, r, hit);
-    return planes_hit(accel->scene, r, tmin, found ? hit->t : tmax, found, hit);
+    return bvh_hit(&((const Accel *)data)->bvh, r, tmin, tmax, hit);
 }
 
-/* Mode 3: a shadow ray stops at the first surface the BVH finds, or at a plane. */
+/* Mode 3: a shadow ray stops at the first surface the BVH finds. */
 static bool bvh_surfaces_blocked(const void *data, Ray r, double tmin, double tmax)
 {
-    const Accel *accel = data;
-    return bvh_blocked(&accel->bvh, r, tmin, tmax) || planes_blocked(accel->scene, r, tmin, tmax);
+    return bvh_blocked(&((const Accel *)data)->bvh, r, tmin, tmax);
 }
 /* end excerpt: accel-bvh-hit */
 
@@ -234,14 +216,41 @@ Surfaces accel_surfaces(const Accel *accel)
     return (Surfaces){bvh_surfaces_hit, bvh_surfaces_blocked, accel};
 }
 
+/* Counts the boxes and primitives the BVH's search for a closest hit tests below at,
+ * in bvh_traverse's order: the nearer child first, the other if the hits found since
+ * (which lower *tmax) have not ruled it out. */
+static long count_below(const Bvh *bvh, BvhRef at, const FloatRay *fr, Ray r, double *tmax)
+{
+    Hit hit;
+    for (uint32_t k = at.index; k < at.index + at.count; k++)
+        if (world_intersect(bvh->scene, bvh->prims[k], r, 0, *tmax, &hit))
+            *tmax = hit.t;
+    if (at.count > 0 || at.index >= (uint32_t)bvh->node_count) /* a leaf, or a tree unfinished */
+        return at.count;
+    const BvhNode *node = &bvh->nodes[at.index];
+    float entry[2];
+    int hits = bvh_node_hit(node, fr, box_float_tmax(*tmax), entry);
+    long tests = 2;
+    for (int k = hits == 3 && entry[1] < entry[0], i = 0; i < 2; i++, k = 1 - k)
+        if ((hits >> k & 1) && box_float_reaches(fr, entry[k], box_float_tmax(*tmax)))
+            tests += count_below(bvh, node->child[k], fr, r, tmax);
+    return tests;
+}
+
 /* Returns how many boxes and primitives ray r is tested against to find its closest hit
- * in accel's mode, for --view box-tests: with the BVH (modes 2 and 3) the nodes' boxes
- * and the leaves' primitives it visits (bvh_count_tests), in modes 0 and 1 every
+ * in accel's mode, for --view box-tests: with the BVH (modes 2 and 3) the root's box,
+ * two boxes a node it visits and the leaves' primitives, in modes 0 and 1 every
  * surface's box; and every plane, which has no box. */
 long accel_count_tests(const Accel *accel, Ray r)
 {
     const Scene *s = accel->scene;
-    if (accel->mode == ACCEL_BVH || accel->mode == ACCEL_LEAF_BOXES)
-        return bvh_count_tests(&accel->bvh, r) + s->plane_count;
-    return s->sphere_count + s->triangle_count + s->plane_count;
+    const Bvh *bvh = &accel->bvh;
+    if (accel->mode != ACCEL_BVH && accel->mode != ACCEL_LEAF_BOXES)
+        return s->sphere_count + s->triangle_count + s->plane_count;
+    FloatRay fr = box_float_ray(r, 0, bvh->in_range);
+    double tmax = INFINITY;
+    float entry[2];
+    if (bvh->prim_count == 0 || !(bvh_node_hit(&bvh->top, &fr, INFINITY, entry) & 1))
+        return (bvh->prim_count > 0) + s->plane_count;
+    return 1 + count_below(bvh, bvh->root, &fr, r, &tmax) + s->plane_count;
 }

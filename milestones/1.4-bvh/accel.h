@@ -24,8 +24,8 @@ typedef enum {
 typedef struct {
     AccelMode mode;
     const Scene *scene;
-    Box *boxes;    /* modes 0 and 1: the box of every sphere, then of every triangle */
-    Bvh bvh;       /* modes 2 and 3 */
+    Box *boxes; /* modes 0 and 1: the box of every sphere, then of every triangle */
+    Bvh bvh;    /* modes 2 and 3 */
     double build_seconds;
 } Accel;
 

@@ -1,6 +1,8 @@
-/* box.c: building axis-aligned boxes, the boxes of spheres and triangles, and the face a ray meets. */
+/* box.c: building axis-aligned boxes, the boxes of spheres and triangles, and the face a ray meets.
+ */
 #include "box.h"
 
+#include <float.h>
 #include <math.h>
 
 /* Returns the box that holds nothing: lo = +inf, hi = -inf, so that any union undoes it. */
@@ -34,6 +36,27 @@ Box box_pad(Box b)
     return (Box){vec3_sub(b.lo, vec3(m, m, m)), vec3_add(b.hi, vec3(m, m, m))};
 }
 /* end excerpt: box-pad */
+
+/* Returns the box of surface s of scene (a number of world_intersect): its sphere's or
+ * its triangle's; a plane's is all of space, which every ray meets. */
+Box box_of_surface(const Scene *scene, int s)
+{
+    int planes = scene->sphere_count + scene->plane_count;
+    if (s < scene->sphere_count)
+        return box_of_sphere(&scene->spheres[s]);
+    if (s < planes)
+        return (Box){vec3(-INFINITY, -INFINITY, -INFINITY), vec3(INFINITY, INFINITY, INFINITY)};
+    Triangle tri = scene_triangle(scene, s - planes);
+    return box_of_triangle(&tri);
+}
+
+/* Returns a float no greater than x: x rounded, and moved down past x when rounding
+ * went up (by 2^-23 of x, at least one float step; 2^-149 for the smallest floats). */
+float box_float_below(double x)
+{
+    float f = (float)x;
+    return (double)f <= x ? f : (float)(x - fabs(x) * 0x1p-23 - 0x1p-149);
+}
 
 /* starter: todo */
 /* excerpt: box-of */
@@ -110,3 +133,38 @@ Vec3 box_face_normal(const BoxHit *hit)
         n.z = hit->sign;
     return n;
 }
+
+/* excerpt: box-float-ray-make */
+/* Makes ray r, from tmin on, ready for box_float_hit. Rounding the origin moves the
+ * slab planes' t by up to shift = |o - o_float| / |d| on an axis; the slack is
+ * three times that, and FLT_MIN for products too small for a float's 24 digits.
+ * An axis with d = 0 needs none: no float lies between o and its rounding, so the
+ * side of each plane the origin is on stays the same (or the product is 0 * inf,
+ * NaN, which the test leaves out). Out of range, the ray meets every box. */
+FloatRay box_float_ray(Ray r, double tmin, bool in_range)
+{
+    FloatRay fr = {.tmin = (float)tmin};
+    double o[3] = {r.origin.x, r.origin.y, r.origin.z}, d[3] = {r.dir.x, r.dir.y, r.dir.z};
+    double shift = 0;
+    in_range = in_range && tmin >= 0;
+    for (int a = 0; a < 3; a++) {
+        double inv = 1 / d[a];
+        float of = (float)o[a], near = (float)inv, far = (float)(inv * (1 + 0x1p-20));
+        fr.origin[a][0] = fr.origin[a][1] = of;
+        fr.inv_near[a][0] = fr.inv_near[a][1] = near;
+        fr.inv_far[a][0] = fr.inv_far[a][1] = far; /* pbrt's tMax *= 1 + 2 gamma(3) */
+        fr.near[a] = signbit(d[a]) ? 6 + 2 * a : 2 * a; /* towards -x, it enters at hi */
+        fr.far[a] = signbit(d[a]) ? 2 * a : 6 + 2 * a;
+        in_range = in_range && fabs(o[a]) <= 0x1p60;
+        if (d[a] != 0) {
+            double moved = fabs(o[a] - of) * fabs(inv);
+            shift = moved > shift ? moved : shift;
+            in_range = in_range && fabs(inv) >= 0x1p-60 && fabs(inv) <= 0x1p60;
+        }
+    }
+    fr.slack = (float)(3 * shift) + FLT_MIN;
+    if (!in_range) /* every t is 0, and the slack infinite */
+        fr = (FloatRay){.near = {0, 2, 4}, .far = {6, 8, 10}, .slack = INFINITY};
+    return fr;
+}
+/* end excerpt: box-float-ray-make */

@@ -24,49 +24,58 @@ typedef struct {
     uint32_t count; /* leaf: how many primitives (1 to BVH_MAX_LEAF); interior: 0 */
 } BvhRef;
 
-/* An interior node of the flattened hierarchy: its two children's boxes side by side,
- * so that one cache line of 64 bytes answers for both, and where the children are.
- * Nodes are stored depth first: an interior first child comes right after its parent. */
+/* An interior node: its two children's boxes, so that one visit tests both, and where
+ * the children are; 64 bytes, one cache line. Nodes are stored depth first: a first
+ * child that is a node comes right after its parent. */
 typedef struct {
-    float bounds[3][4]; /* on axis a: child 0's lo, child 1's lo, child 0's hi, child 1's hi,
-                           rounded outwards so that each holds every double box below it */
-    uint32_t index[2];  /* child k: its node, or its leaf's first entry of prims */
-    uint16_t count[2];  /* child k: 0 for a node, or its leaf's number of primitives */
-    uint8_t axis;       /* the axis the children were split along */
-    uint8_t unused[3];
+    float lo[3][2], hi[3][2]; /* on axis a, child k's box spans lo[a][k] to hi[a][k], in
+                                 float, rounded outwards: it holds every box below it */
+    BvhRef child[2];
 } BvhNode;
-/* end excerpt: bvh-node */
 
-/* excerpt: bvh-struct */
-/* The hierarchy. A primitive is named by one number: sphere k is k, triangle k is
- * sphere_count + k. Ordering by this number is ordering by (kind, index) as part 1.2's
- * world_hit tests them, which is how ties are broken. Planes have no box: they stay out. */
+/* The hierarchy. A primitive is a surface number of part 1.2's world_intersect:
+ * spheres, then planes, then triangles. Planes have no box: they stay out of the
+ * tree and are tested after it. */
 typedef struct {
     const Scene *scene;
-    Box box;         /* the root's box, rounded outwards to floats */
-    BvhRef root;     /* a node, or a leaf when there are few primitives */
-    BvhNode *nodes;  /* the interior nodes; none when the root is a leaf or there is nothing */
+    BvhNode top;    /* the root's box as both children of a node of its own */
+    BvhRef root;    /* a node, or a leaf when there are few primitives */
+    BvhNode *nodes; /* the interior nodes; none when the root is a leaf or there is nothing */
     int node_count;
-    uint32_t *prims; /* the primitives in leaf order: a leaf holds prims[index .. index+count) */
-    int prim_count;
+    int *prims;     /* surface numbers in leaf order: a leaf holds prims[index .. index+count) */
+    int prim_count; /* in the tree; the planes follow them in prims */
+    BvhRef planes;  /* the planes, as one more run of prims: not in the tree */
     int leaf_count;
-    int depth; /* levels below the root */
-    bool float_safe; /* every coordinate of the box is small enough for the float test */
+    int depth;     /* levels below the root */
+    bool in_range; /* every coordinate of the tree's box is within +-2^100 (see float_ray) */
 } Bvh;
-/* end excerpt: bvh-struct */
+/* end excerpt: bvh-node */
+
+/* What the build works on: every surface's box and centroid, by surface number. */
+typedef struct {
+    Box *boxes;
+    Vec3 *centroids;
+    int *prims;
+    BvhNode *nodes;
+    int node_count;
+    int leaf_count;
+    int depth;
+} BvhBuilder;
+
+/* What a leaf does with a ray: tests its primitives, keeping what it needs in state,
+ * and may lower *tmax, the farthest t still of interest. Returns true to stop there. */
+typedef bool (*BvhLeafFn)(const Bvh *bvh, BvhRef leaf, Ray r, double tmin, double *tmax,
+                          void *state);
 
 bool bvh_build(Bvh *bvh, const Scene *scene);
+void bvh_node_set(BvhNode *node, int k, Box box, BvhRef ref);
+Box bvh_node_box(const BvhNode *node, int k);
+int bvh_node_hit(const BvhNode *node, const FloatRay *fr, float tmax, float entry[2]);
+int bvh_split(BvhBuilder *b, int begin, int end, Box box, Box centroids);
 void bvh_free(Bvh *bvh);
-Box bvh_child_box(const BvhNode *node, int k);
-BvhRef bvh_child(const BvhNode *node, int k);
-void bvh_node_set_child(BvhNode *node, int k, Box box, BvhRef ref);
-Box bvh_prim_box(const Scene *scene, uint32_t prim);
-void bvh_prim_surface(const Scene *scene, uint32_t prim, Hit *hit);
+bool bvh_traverse(const Bvh *bvh, Ray r, double tmin, double *tmax, BvhLeafFn leaf, void *state);
 bool bvh_hit(const Bvh *bvh, Ray r, double tmin, double tmax, Hit *hit);
 bool bvh_blocked(const Bvh *bvh, Ray r, double tmin, double tmax);
-bool bvh_hit_leaf_boxes(const Bvh *bvh, Ray r, double tmin, double tmax, Hit *hit);
 size_t bvh_bytes(const Bvh *bvh);
-long bvh_count_tests(const Bvh *bvh, Ray r);
-int bvh_children_hit(const Bvh *bvh, const BvhNode *node, Ray r, double tmin, double tmax);
 
 #endif

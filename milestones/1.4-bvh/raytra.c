@@ -57,15 +57,16 @@ static void report(const void *ctx, const RenderResult *result)
     (void)result;
     const Accel *a = &((const Part14 *)ctx)->accel;
     if (a->mode == ACCEL_BOXED || a->mode == ACCEL_SURFACE_BOXES) {
-        printf("mode %d: %d boxes, made in %.1f ms\n", a->mode,
-               a->scene->sphere_count + a->scene->triangle_count, a->build_seconds * 1e3);
+        fprintf(stderr, "raytra: mode %d: %d boxes, made in %.1f ms\n", a->mode,
+                a->scene->sphere_count + a->scene->triangle_count, a->build_seconds * 1e3);
         return;
     }
     const Bvh *b = &a->bvh;
-    printf("mode %d: BVH of %d primitives: %d interior nodes, %d leaves, depth %d, %.1f bytes per "
-           "primitive, built in %.1f ms\n",
-           a->mode, b->prim_count, b->node_count, b->leaf_count, b->depth,
-           b->prim_count > 0 ? (double)bvh_bytes(b) / b->prim_count : 0.0, a->build_seconds * 1e3);
+    fprintf(stderr,
+            "raytra: mode %d: BVH of %d primitives: %d interior nodes, %d leaves, depth %d, %.1f "
+            "bytes per primitive, built in %.1f ms\n",
+            a->mode, b->prim_count, b->node_count, b->leaf_count, b->depth,
+            b->prim_count > 0 ? (double)bvh_bytes(b) / b->prim_count : 0.0, a->build_seconds * 1e3);
 }
 
 /* Frees the part's state. */

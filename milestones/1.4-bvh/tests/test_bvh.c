@@ -5,6 +5,7 @@
 
 #include "accel.h"
 #include "bvh.h"
+#include "camera.h"
 #include "testing.h"
 #include "world.h"
 
@@ -92,71 +93,145 @@ static void random_scene(Scene *scene, int n, double size, int spheres, int plan
     scene->material_count = 3;
 }
 
-/* What walking a hierarchy found. */
-typedef struct {
-    const Bvh *bvh;
-    int *seen; /* how often each primitive was met in a leaf */
-    int nodes, leaves, depth;
-} Walk;
-
-/* Checks the subtree at ref, whose box is box, at depth, recursively. */
-static void walk(Walk *w, BvhRef ref, Box box, int depth)
+/* Writes into buf the name of surface s of scene (a number of world_intersect). */
+static const char *surface_name(const Scene *scene, int s, char *buf, size_t size)
 {
-    if (depth > w->depth)
-        w->depth = depth;
-    ck_assert_int_lt(depth, BVH_MAX_DEPTH);
-    if (ref.count > 0) {
-        w->leaves++;
-        ck_assert_int_le(ref.count, BVH_MAX_LEAF);
-        for (uint32_t k = ref.index; k < ref.index + ref.count; k++) {
-            ck_assert_int_lt(k, w->bvh->prim_count);
-            uint32_t p = w->bvh->prims[k];
-            w->seen[p]++;
-            /* Every primitive's own (double) box lies inside its leaf's float box. */
-            ck_assert(box_contains(box, bvh_prim_box(w->bvh->scene, p)));
-        }
-        return;
-    }
-    ck_assert_int_lt(ref.index, w->bvh->node_count);
-    const BvhNode *node = &w->bvh->nodes[ref.index];
-    w->nodes++;
-    for (int c = 0; c < 2; c++) {
-        Box child = bvh_child_box(node, c);
-        ck_assert(box_contains(box, child));
-        /* Depth first: a first child that is a node comes right after its parent. */
-        if (c == 0 && node->count[0] == 0)
-            ck_assert_int_eq(node->index[0], ref.index + 1);
-        walk(w, bvh_child(node, c), child, depth + 1);
-    }
+    int planes = scene->sphere_count + scene->plane_count;
+    if (s >= 0 && s < scene->sphere_count)
+        snprintf(buf, size, "sphere %d", s);
+    else if (s >= scene->sphere_count && s < planes)
+        snprintf(buf, size, "plane %d", s - scene->sphere_count);
+    else if (s >= planes && s < planes + scene->triangle_count)
+        snprintf(buf, size, "triangle %d", s - planes);
+    else
+        snprintf(buf, size, "surface number %d, which the scene does not have", s);
+    return buf;
 }
 
-/* Builds the BVH of scene and checks every invariant of its structure. */
+/* What walking a hierarchy found, and the first thing wrong with it, in words. */
+typedef struct {
+    const Bvh *bvh;
+    int *leaf_of; /* for each surface: the leaf it is in, or -1 */
+    int nodes, leaves, depth;
+    char wrong[400];
+} Walk;
+
+/* Checks the subtree at ref, whose box (named whose) is box, at depth, recursively;
+ * false, with w->wrong said, at the first thing wrong. */
+static bool walk(Walk *w, BvhRef ref, Box box, const char *whose, int depth)
+{
+    const Bvh *bvh = w->bvh;
+    const Scene *scene = bvh->scene;
+    char name[100];
+    if (depth > w->depth)
+        w->depth = depth;
+    if (depth >= BVH_MAX_DEPTH) {
+        snprintf(w->wrong, sizeof w->wrong,
+                 "the tree is %d levels deep or more (BVH_MAX_DEPTH): "
+                 "do two nodes name each other as children?",
+                 BVH_MAX_DEPTH);
+        return false;
+    }
+    if (ref.count > 0) {
+        int leaf = w->leaves++;
+        if (ref.count > BVH_MAX_LEAF ||
+            ref.index + (uint64_t)ref.count > (uint64_t)bvh->prim_count) {
+            snprintf(w->wrong, sizeof w->wrong,
+                     "leaf %d holds prims[%u] to prims[%u], but a leaf "
+                     "holds at most BVH_MAX_LEAF (%d) of the %d entries",
+                     leaf, ref.index, ref.index + ref.count - 1, BVH_MAX_LEAF, bvh->prim_count);
+            return false;
+        }
+        for (uint32_t k = ref.index; k < ref.index + ref.count; k++) {
+            int p = bvh->prims[k];
+            bool plane = p >= scene->sphere_count && p < scene->sphere_count + scene->plane_count;
+            surface_name(scene, p, name, sizeof name);
+            if (plane || p < 0 ||
+                p >= scene->sphere_count + scene->plane_count + scene->triangle_count) {
+                snprintf(w->wrong, sizeof w->wrong,
+                         "leaf %d holds %s: a leaf holds spheres and "
+                         "triangles only",
+                         leaf, name);
+                return false;
+            }
+            if (w->leaf_of[p] >= 0) {
+                if (w->leaf_of[p] == leaf)
+                    snprintf(w->wrong, sizeof w->wrong, "leaf %d holds %s twice", leaf, name);
+                else
+                    snprintf(w->wrong, sizeof w->wrong,
+                             "%s is in leaf %d and in leaf %d: every "
+                             "primitive belongs in one leaf",
+                             name, w->leaf_of[p], leaf);
+                return false;
+            }
+            w->leaf_of[p] = leaf;
+            if (!box_contains(box, box_of_surface(scene, p))) {
+                snprintf(w->wrong, sizeof w->wrong, "%s does not hold %s, which is in leaf %d",
+                         whose, name, leaf);
+                return false;
+            }
+        }
+        return true;
+    }
+    if ((int)ref.index >= bvh->node_count || (int)ref.index < 0) {
+        snprintf(w->wrong, sizeof w->wrong,
+                 "node %u is in the tree (below %s), but the build "
+                 "made %d nodes",
+                 ref.index, whose, bvh->node_count);
+        return false;
+    }
+    const BvhNode *node = &bvh->nodes[ref.index];
+    w->nodes++;
+    for (int c = 0; c < 2; c++) {
+        Box child = bvh_node_box(node, c);
+        char child_whose[100];
+        snprintf(child_whose, sizeof child_whose, "node %u's box of its child %d", ref.index, c);
+        if (!box_contains(box, child)) {
+            snprintf(w->wrong, sizeof w->wrong, "%s does not lie inside %s", child_whose, whose);
+            return false;
+        }
+        if (!walk(w, node->child[c], child, child_whose, depth + 1))
+            return false;
+    }
+    return true;
+}
+
+/* Builds the BVH of scene and checks every invariant of its structure: every sphere and
+ * triangle in exactly one leaf, inside every box above it. */
 static void check_invariants(const Scene *scene)
 {
     Bvh bvh;
-    ck_assert(bvh_build(&bvh, scene));
+    ck_assert_msg(bvh_build(&bvh, scene), "bvh_build failed");
     int n = scene->sphere_count + scene->triangle_count;
+    int all = n + scene->plane_count;
     ck_assert_int_eq(bvh.prim_count, n);
     if (n == 0) {
         ck_assert_int_eq(bvh.node_count, 0);
         ck_assert_int_eq(bvh.leaf_count, 0);
-        Hit hit;
-        ck_assert(!bvh_hit(&bvh, ray(vec3(0, 0, 0), vec3(0, 0, 1)), 0, INFINITY, &hit));
-        ck_assert(!bvh_blocked(&bvh, ray(vec3(0, 0, 0), vec3(0, 0, 1)), 0, INFINITY));
         bvh_free(&bvh);
         return;
     }
-    /* A binary tree of L leaves has L - 1 interior nodes, and L <= n. */
-    ck_assert_int_le(bvh.leaf_count, n);
-    ck_assert_int_eq(bvh.node_count, bvh.leaf_count - 1);
-    Walk w = {&bvh, calloc((size_t)n, sizeof(int)), 0, 0, 0};
-    walk(&w, bvh.root, bvh.box, 0);
-    ck_assert_int_eq(w.nodes, bvh.node_count); /* every node is reached, once */
-    ck_assert_int_eq(w.leaves, bvh.leaf_count);
-    ck_assert_int_eq(w.depth, bvh.depth);
-    for (int p = 0; p < n; p++)
-        ck_assert_msg(w.seen[p] == 1, "primitive %d is in %d leaves", p, w.seen[p]);
-    free(w.seen);
+    Walk w = {.bvh = &bvh, .leaf_of = malloc((size_t)all * sizeof(int))};
+    for (int p = 0; p < all; p++)
+        w.leaf_of[p] = -1;
+    bool ok = walk(&w, bvh.root, bvh_node_box(&bvh.top, 0), "the root's box", 0);
+    char name[100];
+    for (int p = 0; ok && p < all; p++)
+        if (w.leaf_of[p] < 0 &&
+            (p < scene->sphere_count || p >= scene->sphere_count + scene->plane_count)) {
+            snprintf(w.wrong, sizeof w.wrong, "%s is in no leaf",
+                     surface_name(scene, p, name, sizeof name));
+            ok = false;
+        }
+    free(w.leaf_of);
+    ck_assert_msg(ok, "the BVH of %d spheres and %d triangles: %s", scene->sphere_count,
+                  scene->triangle_count, w.wrong);
+    /* What the build counted is what is there; a binary tree of L leaves has L - 1 nodes. */
+    ck_assert_msg(w.nodes == bvh.node_count && w.leaves == bvh.leaf_count && w.depth == bvh.depth,
+                  "the build counted %d nodes, %d leaves and %d levels; the tree has %d, %d and %d",
+                  bvh.node_count, bvh.leaf_count, bvh.depth, w.nodes, w.leaves, w.depth);
+    ck_assert_msg(bvh.node_count == bvh.leaf_count - 1, "%d leaves, but %d interior nodes, not %d",
+                  bvh.leaf_count, bvh.node_count, bvh.leaf_count - 1);
     bvh_free(&bvh);
 }
 
@@ -211,14 +286,59 @@ START_TEST(tests_counted_for_the_box_tests_view)
     Scene scene;
     random_scene(&scene, 1, 0.05, 0, 0);
     set_triangle(&scene, 0, vec3(-1, -1, -5), vec3(1, -1, -5), vec3(0, 1, -5), 0);
-    Bvh bvh;
-    ck_assert(bvh_build(&bvh, &scene));
-    ck_assert_int_eq(bvh_count_tests(&bvh, ray(vec3(0, 0, 0), vec3(0, 0, -1))), 2);
-    ck_assert_int_eq(bvh_count_tests(&bvh, ray(vec3(0, 0, 0), vec3(0, 0, 1))), 1);
-    bvh_free(&bvh);
+    Accel accel;
+    ck_assert(accel_build(&accel, &scene, ACCEL_BVH));
+    ck_assert_int_eq(accel_count_tests(&accel, ray(vec3(0, 0, 0), vec3(0, 0, -1))), 2);
+    ck_assert_int_eq(accel_count_tests(&accel, ray(vec3(0, 0, 0), vec3(0, 0, 1))), 1);
+    accel_free(&accel);
     scene_free(&scene);
 }
 END_TEST
+
+/* Tells whether a and b are the same vector, bit for bit but for the sign of zero. */
+static bool vec3_equal(Vec3 a, Vec3 b)
+{
+    return a.x == b.x && a.y == b.y && a.z == b.z;
+}
+
+/* Writes into buf what a search found: a surface and its t, or nothing. */
+static const char *found_name(const Scene *scene, bool found, const Hit *hit, char *buf,
+                              size_t size)
+{
+    if (!found)
+        return "nothing";
+    char name[100];
+    snprintf(buf, size, "%s at t = %.17g",
+             surface_name(scene, world_surface_id(scene, hit), name, sizeof name), hit->t);
+    return buf;
+}
+
+/* Tells, in why, how the BVH's answers for ray r with [tmin, tmax] differ from brute
+ * force's: the closest hit (and every field of its record), and whether it is blocked. */
+static bool same_as_brute_force(const Bvh *bvh, Ray r, double tmin, double tmax, char *why,
+                                size_t size)
+{
+    const Scene *scene = bvh->scene;
+    Hit want, got;
+    char a[160], b[160];
+    bool wanted = world_hit(scene, r, tmin, tmax, &want), have = bvh_hit(bvh, r, tmin, tmax, &got);
+    if (have != wanted ||
+        (wanted && (got.t != want.t || got.kind != want.kind || got.index != want.index ||
+                    got.material != want.material || got.back_face != want.back_face ||
+                    !vec3_equal(got.point, want.point) || !vec3_equal(got.normal, want.normal)))) {
+        snprintf(why, size, "the BVH finds %s, brute force finds %s",
+                 found_name(scene, have, &got, a, sizeof a),
+                 found_name(scene, wanted, &want, b, sizeof b));
+        return false;
+    }
+    if (bvh_blocked(bvh, r, tmin, tmax) != wanted) {
+        snprintf(why, size, "bvh_blocked says %s, but brute force finds %s",
+                 wanted ? "nothing blocks it" : "something blocks it",
+                 found_name(scene, wanted, &want, b, sizeof b));
+        return false;
+    }
+    return true;
+}
 
 /* Compares the BVH's closest hit and blocked() with brute force for count random rays
  * from points in [lo, hi]^3 on scene, half of them aimed at a point of the scene's box,
@@ -227,8 +347,8 @@ static void compare_with_brute_force(const Scene *scene, int count, double lo, d
 {
     Bvh bvh;
     ck_assert(bvh_build(&bvh, scene));
-    Box all = bvh.box;
-    int hits = 0, blocked = 0;
+    Box all = bvh_node_box(&bvh.top, 0);
+    int hits = 0;
     for (int k = 0; k < count; k++) {
         Vec3 o = rnd_point(lo, hi), target = vec3_add(all.lo, vec3(rnd() * (all.hi.x - all.lo.x),
                                                                    rnd() * (all.hi.y - all.lo.y),
@@ -236,29 +356,72 @@ static void compare_with_brute_force(const Scene *scene, int count, double lo, d
         Vec3 to = vec3_sub(target, o);
         Ray r = ray(o, rnd() < 0.5 && vec3_length(to) > 0 ? vec3_normalize(to) : rnd_dir());
         double tmax = rnd() < 0.5 ? INFINITY : rnd() * (hi - lo);
-        Hit expected, got;
-        bool want = world_hit(scene, r, 0, tmax, &expected);
-        bool have = bvh_hit(&bvh, r, 0, tmax, &got);
-        ck_assert_int_eq(have, want);
-        if (want) {
-            hits++;
-            ck_assert_msg(got.t == expected.t && got.kind == expected.kind &&
-                              got.index == expected.index,
-                          "ray %d: BVH found %d %d at t = %.17g, brute force %d %d at %.17g", k,
-                          got.kind, got.index, got.t, expected.kind, expected.index, expected.t);
-        }
-        bool shadow = bvh_blocked(&bvh, r, 0, tmax);
-        ck_assert_int_eq(shadow, want);
-        blocked += shadow;
+        char why[400];
+        bool same = same_as_brute_force(&bvh, r, 0, tmax, why, sizeof why);
+        ck_assert_msg(same, "random ray %d from (%g, %g, %g) along (%g, %g, %g), tmax %g: %s", k,
+                      o.x, o.y, o.z, r.dir.x, r.dir.y, r.dir.z, tmax, why);
+        Hit hit;
+        hits += world_hit(scene, r, 0, tmax, &hit);
     }
     /* The rays are worth something only if many of them hit and many miss. */
     ck_assert_int_gt(hits, count / 10);
     ck_assert_int_lt(hits, count - count / 10);
-    ck_assert_int_eq(blocked, hits);
     bvh_free(&bvh);
 }
 
-/* Returns a random float box: its corners at about scale from the origin, its sides
+/* Loads scene file name (in scenes/) and compares, for every step-th pixel, its camera
+ * ray and a shadow ray from what it hits towards the first light with brute force. */
+static void compare_pixels(const char *name, int step)
+{
+    char path[600];
+    snprintf(path, sizeof path, "%s/scenes/%s", TOP_DIR, name);
+    Scene scene;
+    SceneLoadOptions opts = {0};
+    ck_assert_msg(scene_load(&scene, path, &opts), "cannot read %s", path);
+    Bvh bvh;
+    ck_assert(bvh_build(&bvh, &scene));
+    Camera camera = camera_make(&scene.camera);
+    int nx = scene.camera.nx, ny = scene.camera.ny;
+    for (int row = 0; row < ny; row += step)
+        for (int i = 0; i < nx; i += step) {
+            /* Pixel (i, row), row counted from the top as --trace-pixel counts it. */
+            Ray r = camera_ray(&camera, i + 0.5, ny - 1 - row + 0.5);
+            char why[400];
+            bool same = same_as_brute_force(&bvh, r, 0, INFINITY, why, sizeof why);
+            Hit hit;
+            if (same && scene.light_count > 0 && world_hit(&scene, r, 0, INFINITY, &hit)) {
+                Vec3 to = vec3_sub(scene.lights[0].position, hit.point);
+                same = same_as_brute_force(&bvh, ray(hit.point, to), 1e-6, 1, why, sizeof why);
+                if (!same)
+                    ck_abort_msg("pixel (%d, %d) of scenes/%s (--trace-pixel %d,%d), the shadow "
+                                 "ray towards light 0: %s",
+                                 i, row, name, i, row, why);
+            }
+            ck_assert_msg(same, "pixel (%d, %d) of scenes/%s (--trace-pixel %d,%d): %s", i, row,
+                          name, i, row, why);
+        }
+    bvh_free(&bvh);
+    scene_free(&scene);
+}
+
+START_TEST(pixels_as_brute_force)
+{
+    compare_pixels("bvh-ties.scn", 1);
+    compare_pixels("demo.scn", 4);
+    compare_pixels("bvh-torus.scn", 3);
+}
+END_TEST
+
+/* Tests node's two boxes against ray r with [tmin, tmax] as the traversal does: bit k set
+ * when child k's box may be met. */
+static int node_hit(const BvhNode *node, Ray r, double tmin, double tmax)
+{
+    FloatRay fr = box_float_ray(r, tmin, true);
+    float entry[2];
+    return bvh_node_hit(node, &fr, box_float_tmax(tmax), entry);
+}
+
+/* Returns a random box of floats: its corners at about scale from the origin, its sides
  * from 0 (flat) to about scale. */
 static Box rnd_float_box(double scale)
 {
@@ -270,28 +433,27 @@ static Box rnd_float_box(double scale)
     return (Box){vec3(lo[0], lo[1], lo[2]), vec3(hi[0], hi[1], hi[2])};
 }
 
-/* The float test of two boxes against the exact slab test in double, on rays chosen to
- * graze: origins on the boxes' planes or at no float, rays parallel to a face, aimed at
- * a corner, an edge or a face, with tmax at the box's own entry. Wherever the double test
- * meets a box, so must the float test; and it may meet more, but rarely. */
+/* The float test of a node's two boxes against the exact slab test in double, on rays
+ * chosen to graze: origins on the boxes' planes or at no float, rays parallel to a face,
+ * aimed at a corner, an edge or a face, with tmax at the box's own entry. Wherever the
+ * double test meets a box, so must the float test; and it may meet more, but rarely. */
 START_TEST(float_test_is_conservative)
 {
-    Bvh bvh = {.float_safe = true};
-    long met = 0, extra = 0, count = 0; /* of the rays in random directions */
+    long met = 0, extra = 0; /* of the rays in random directions */
     const double scales[] = {1e-3, 1, 1e3, 1e6};
     for (int k = 0; k < 400000; k++) {
         double scale = scales[k % 4];
         Box box[2] = {rnd_float_box(scale), rnd_float_box(scale)};
-        BvhNode node = {0};
+        BvhNode node;
         for (int c = 0; c < 2; c++) /* float boxes already: stored as they are */
-            bvh_node_set_child(&node, c, box[c], (BvhRef){0, 1});
+            bvh_node_set(&node, c, box[c], (BvhRef){0, 1});
         Vec3 o = vec3_scale(rnd_point(-3, 3), scale);
         if (rnd() < 0.3) /* on a plane of the first box */
             o.x = rnd() < 0.5 ? box[0].lo.x : box[0].hi.x;
-        Vec3 target = vec3(rnd() < 0.5 ? box[0].lo.x : box[0].hi.x,
-                           rnd() < 0.5 ? box[0].lo.y : box[0].hi.y,
-                           rnd() < 0.5 ? box[0].lo.z : box[0].hi.z); /* a corner */
-        if (rnd() < 0.5) /* a point of an edge or a face */
+        Vec3 target =
+            vec3(rnd() < 0.5 ? box[0].lo.x : box[0].hi.x, rnd() < 0.5 ? box[0].lo.y : box[0].hi.y,
+                 rnd() < 0.5 ? box[0].lo.z : box[0].hi.z); /* a corner */
+        if (rnd() < 0.5)                                   /* a point of an edge or a face */
             target.y = box[0].lo.y + rnd() * (box[0].hi.y - box[0].lo.y);
         Vec3 to = vec3_sub(target, o);
         bool aimed = rnd() < 0.7 && vec3_length(to) > 0;
@@ -307,23 +469,19 @@ START_TEST(float_test_is_conservative)
             tmax = t; /* the interval ends where the box begins */
         else if (rnd() < 0.3)
             tmax = rnd() * 5 * scale;
-        int bits = bvh_children_hit(&bvh, &node, r, tmin, tmax);
+        int bits = node_hit(&node, r, tmin, tmax);
         for (int c = 0; c < 2; c++) {
             bool exact = box_hit(box[c], &br, tmin, tmax, &t);
-            if (exact)
-                ck_assert_msg(bits >> c & 1,
-                              "box %d missed: o (%a, %a, %a) d (%a, %a, %a) t [%a, %a]", c,
-                              o.x, o.y, o.z, d.x, d.y, d.z, tmin, tmax);
-            if (aimed)
-                continue;
-            met += exact;
-            extra += !exact && (bits >> c & 1);
-            count++;
+            ck_assert_msg(!exact || (bits >> c & 1),
+                          "box %d missed: o (%a, %a, %a) d (%a, %a, %a) t [%a, %a]", c, o.x, o.y,
+                          o.z, d.x, d.y, d.z, tmin, tmax);
+            met += !aimed && exact;
+            extra += !aimed && !exact && (bits >> c & 1);
         }
     }
-    /* The margin is about 2^-20 of t: a ray in a random direction rarely passes so close. */
-    ck_assert_msg(met > 1000 && extra * 10 < met, "of %ld boxes, %ld met, %ld by the float test alone",
-                  count, met, extra);
+    /* The slack is about 2^-20 of t: a ray in a random direction rarely passes so close. */
+    ck_assert_msg(met > 1000 && extra * 10 < met, "%ld boxes met, %ld by the float test alone", met,
+                  extra);
 }
 END_TEST
 
@@ -331,19 +489,15 @@ END_TEST
  * negative, meets every box: slow, but never wrong. */
 START_TEST(float_test_out_of_range)
 {
-    Bvh bvh = {.float_safe = true};
-    BvhNode node = {.bounds = {{0, 10, 1, 11}, {0, 10, 1, 11}, {0, 10, 1, 11}}};
-    ck_assert_int_eq(bvh_children_hit(&bvh, &node, ray(vec3(5, 5, -5), vec3(0, 0, 1)), 0, 1), 0);
-    ck_assert_int_eq(bvh_children_hit(&bvh, &node, ray(vec3(0.5, 0.5, -5), vec3(0, 0, 1)), 0,
-                                      INFINITY),
-                     1);
-    ck_assert_int_eq(bvh_children_hit(&bvh, &node, ray(vec3(0x1p60, 5, -5), vec3(0, 0, 1)), 0, 1),
-                     3);
-    ck_assert_int_eq(bvh_children_hit(&bvh, &node, ray(vec3(5, 5, -5), vec3(0x1p-60, 0, 1)), 0, 1),
-                     3);
-    ck_assert_int_eq(bvh_children_hit(&bvh, &node, ray(vec3(5, 5, -5), vec3(0, 0, 1)), -1, 1), 3);
-    bvh.float_safe = false;
-    ck_assert_int_eq(bvh_children_hit(&bvh, &node, ray(vec3(5, 5, -5), vec3(0, 0, 1)), 0, 1), 3);
+    BvhNode node;
+    bvh_node_set(&node, 0, (Box){vec3(0, 0, 0), vec3(1, 1, 1)}, (BvhRef){0, 1});
+    bvh_node_set(&node, 1, (Box){vec3(10, 10, 10), vec3(11, 11, 11)}, (BvhRef){1, 1});
+    ck_assert_int_eq(node_hit(&node, ray(vec3(5, 5, -5), vec3(0, 0, 1)), 0, 1), 0);
+    ck_assert_int_eq(node_hit(&node, ray(vec3(0.5, 0.5, -5), vec3(0, 0, 1)), 0, INFINITY), 1);
+    ck_assert_int_eq(node_hit(&node, ray(vec3(0.5, 0.5, -5), vec3(0, 0, 1)), 0, 4.9), 0);
+    ck_assert_int_eq(node_hit(&node, ray(vec3(0x1p70, 5, -5), vec3(0, 0, 1)), 0, 1), 3);
+    ck_assert_int_eq(node_hit(&node, ray(vec3(5, 5, -5), vec3(0x1p-70, 0, 1)), 0, 1), 3);
+    ck_assert_int_eq(node_hit(&node, ray(vec3(5, 5, -5), vec3(0, 0, 1)), -1, 1), 3);
 }
 END_TEST
 
@@ -370,18 +524,23 @@ START_TEST(modes_0_and_3_as_brute_force)
         Surfaces s = accel_surfaces(&accel);
         for (int k = 0; k < 20000; k++) {
             Ray r = ray(rnd_point(-0.2, 1.2), rnd_dir());
-            Hit expected, got;
-            bool want = world_hit(&scene, r, 0, INFINITY, &expected);
-            ck_assert_int_eq(s.hit(s.data, r, 0, INFINITY, &got), want);
-            ck_assert_int_eq(s.blocked(s.data, r, 0, INFINITY), want);
-            if (want) {
-                /* The whole record, point and normal included, is the same. */
-                ck_assert(got.t == expected.t && got.kind == expected.kind &&
-                          got.index == expected.index && got.material == expected.material &&
-                          got.back_face == expected.back_face);
-                ck_assert_vec3_near(got.point, expected.point, 0);
-                ck_assert_vec3_near(got.normal, expected.normal, 0);
-            }
+            Hit want, got;
+            char a[160], b[160];
+            bool wanted = world_hit(&scene, r, 0, INFINITY, &want);
+            bool have = s.hit(s.data, r, 0, INFINITY, &got);
+            /* The whole record, point and normal included, is the same. */
+            ck_assert_msg(
+                have == wanted &&
+                    (!wanted ||
+                     (got.t == want.t && got.kind == want.kind && got.index == want.index &&
+                      got.material == want.material && got.back_face == want.back_face &&
+                      vec3_equal(got.point, want.point) && vec3_equal(got.normal, want.normal))),
+                "mode %d, random ray %d: finds %s, brute force finds %s", mode, k,
+                found_name(&scene, have, &got, a, sizeof a),
+                found_name(&scene, wanted, &want, b, sizeof b));
+            ck_assert_msg(s.blocked(s.data, r, 0, INFINITY) == wanted,
+                          "mode %d, random ray %d: blocked is wrong; brute force finds %s", mode, k,
+                          found_name(&scene, wanted, &want, b, sizeof b));
         }
         accel_free(&accel);
     }
@@ -424,6 +583,7 @@ static Suite *bvh_suite(void)
     tcase_add_test(tc, float_test_is_conservative);
     tcase_add_test(tc, float_test_out_of_range);
     tcase_add_test(tc, closest_hit_as_brute_force);
+    tcase_add_test(tc, pixels_as_brute_force);
     tcase_add_test(tc, modes_0_and_3_as_brute_force);
     tcase_add_test(tc, bunny_as_brute_force);
     suite_add_tcase(s, tc);
