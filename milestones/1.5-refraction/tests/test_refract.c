@@ -257,16 +257,17 @@ START_TEST(the_depth_budget_is_shared)
 }
 END_TEST
 
-/* The depth at which weigh_direct sees the surface as white; black elsewhere. */
+/* The depth at which weigh_radiance sees white along every ray; below it, the part's own. */
 static int weighed_depth;
 
-/* A direct-light hook under which the radiance along a ray is the sum, over the rays at
- * depth weighed_depth below it, of their weights: the products of the k_m, 1 - max(k_m),
- * R and 1 - R along their paths (no absorption: a = 1). */
-static Color weigh_direct(const Tracer *tr, const Hit *hit, Ray r, int depth, Path *path)
+/* A radiance hook under which the radiance along a ray is the sum, over the rays at depth
+ * weighed_depth below it, of their weights: the products of the k_m, 1 - max(k_m), R and
+ * 1 - R along their paths (no light, no absorption: a = 1). */
+static Color weigh_radiance(const void *ctx, const Tracer *tr, Ray r, int depth, Path *path)
 {
-    (void)tr, (void)hit, (void)r, (void)path;
-    return depth == weighed_depth ? color(1, 1, 1) : color(0, 0, 0);
+    if (depth == weighed_depth)
+        return color(1, 1, 1);
+    return refract_radiance(ctx, tr, r, depth, path);
 }
 
 START_TEST(a_mirror_of_glass_splits_no_more_than_it_gets)
@@ -285,13 +286,14 @@ START_TEST(a_mirror_of_glass_splits_no_more_than_it_gets)
                             {.center = {25, 5, -3}, .radius = 7, .material = 1}};
         Scene scene = {.materials = m, .material_count = 2, .spheres = spheres, .sphere_count = 3};
         for (int depth = 1; depth <= 9; depth++) {
-            Refractor rf = refractor(&scene, depth, FRESNEL_EXACT);
-            rf.tracer.direct = weigh_direct;
+            Refractor rf;
+            refractor(&rf, &scene, depth, FRESNEL_EXACT);
+            rf.tracer.hooks.radiance = weigh_radiance;
             weighed_depth = depth;
             RayStats stats = {{0}};
             Path path = {.stats = &stats};
             Ray r = ray(vec3(3, 1, 50), vec3_normalize(vec3(0.1, 0, -1)));
-            Color w = refract_radiance(&rf, r, 0, &path);
+            Color w = radiance_of(&rf, r, &path);
             ck_assert_msg(w.r <= 1 + 1e-12 && w.g <= 1 + 1e-12 && w.b <= 1 + 1e-12,
                           "coating %d, depth %d: weights add up to (%g, %g, %g)", k, depth, w.r,
                           w.g, w.b);
@@ -322,13 +324,14 @@ START_TEST(a_mirror_of_glass_in_a_furnace_sends_back_what_it_gets)
                    .spheres = spheres,
                    .sphere_count = 3,
                    .ambient = {0.5, 0.5, 0.5}};
-    Refractor rf = refractor(&scene, 60, FRESNEL_EXACT);
+    Refractor rf;
+    refractor(&rf, &scene, 60, FRESNEL_EXACT);
     rf.min_weight = 0x1p-22;
     for (double x = -30; x < 30; x += 1.7) {
         RayStats stats = {{0}};
         Path path = {.stats = &stats};
         Ray r = ray(vec3(x * 0.3, -2, 50), vec3_normalize(vec3(x, 0.1 * x, -50)));
-        Color c = refract_radiance(&rf, r, 0, &path);
+        Color c = radiance_of(&rf, r, &path);
         ck_assert_color_near(c, color(0.5, 0.5, 0.5), 1e-3);
         ck_assert(c.r <= 0.5 + 1e-12);
         /* The weights of a depth add up to at most 1, so at most 2^22 rays of a depth
