@@ -258,9 +258,12 @@ p 0 1 0 0
 m 0.8 0.2 0.1  0 0 0  1  0 0 0
 s 0 4 -5  4
 EOF
+    # The same looking down at the floor, so that every pixel is one of seconds, the first
+    # ones too: the pixels under way are given up, however fast the machine.
+    sed 's/^c 0 10 30  0 -0.3 -1 /c 0 10 30  0 -1 -0.3 /' slow.scn >steep.scn
     program=$latest options="--samples 64 --light-samples 64"
-    interrupt_render slow.scn INT 1 10 "SIGINT in a pixel of seconds (-j 1)" yes
-    interrupt_render slow.scn TERM 2 10 "SIGTERM in a pixel of seconds (-j 2)" yes
+    interrupt_render steep.scn INT 1 10 "SIGINT in a pixel of seconds (-j 1)" yes
+    interrupt_render steep.scn TERM 2 10 "SIGTERM in a pixel of seconds (-j 2)" yes
     if grep -q __asan_init "$latest" "$raytra"; then
         echo "skip memcheck: a sanitized build, which AddressSanitizer checks instead"
     elif command -v valgrind >/dev/null 2>&1; then
