@@ -271,7 +271,7 @@ EOF
         # process ends: no memory error may come of it (what they hold is not freed, on
         # purpose, so leaks are not counted here).
         wrapper="valgrind -q --error-exitcode=99 --leak-check=no"
-        interrupt_render slow.scn INT 2 100 "SIGINT in a pixel of seconds, under memcheck" yes 5
+        interrupt_render slow.scn INT 2 600 "SIGINT in a pixel of seconds, under memcheck" yes 5
         # Workers that finish their pixel within the grace leave nothing behind at all.
         program='' options=''
         wrapper="valgrind -q --error-exitcode=99 --leak-check=full --show-leak-kinds=all"
