@@ -1,4 +1,4 @@
-/* cli.c: the table of the options every part has, and parsing them with a part's own by getopt_long. */
+/* cli.c: the options every part has, and parsing them with a part's own by getopt_long. */
 #include "cli.h"
 
 #include <errno.h>
