@@ -20,7 +20,7 @@
 enum { EXIT_REPORTED = 0, EXIT_TROUBLE = 2, EXIT_INTERRUPTED = 130 };
 
 /* What an option's value is, and so how it is read. */
-typedef enum { OPT_FLAG, OPT_TEXT, OPT_SECONDS, OPT_BYTES } OptKind;
+typedef enum { OPT_FLAG, OPT_TEXT, OPT_COUNT, OPT_SECONDS, OPT_BYTES } OptKind;
 
 /* One option: the common description (toolopt.h), how its value is read, the field of
  * Grading it sets. */
@@ -44,6 +44,16 @@ static const GradeOption options[] = {
       "differs by more than T", IMGDIFF_THRESHOLD_TEXT}, OPT_TEXT, offsetof(Grading, threshold)},
     {{"allow", 0, "F", "imgdiff's: an image passes when at most the fraction\n"
       "F of its pixels differ", IMGDIFF_ALLOW_TEXT}, OPT_TEXT, offsetof(Grading, allow)},
+    {{"jobs", 'j', "N", "grade N submissions at a time, each under the limits\n"
+      "above (docs/grading.md: sharing the cores)", "1"}, OPT_COUNT,
+     offsetof(Grading, jobs)},
+    {{"shard", 0, "K/N", "grade only the K-th of N slices of the class and\n"
+      "write its results for grade merge (default --out:\ngrading-PART-shard-K-of-N)", NULL},
+     OPT_TEXT, offsetof(Grading, shard)},
+    {{"junit", 0, "FILE", "also write the verdicts as JUnit XML: a test case\n"
+      "a submission and scene", NULL}, OPT_TEXT, offsetof(Grading, junit)},
+    {{"gradescope", 0, "FILE", "with --self: also write Gradescope's results.json", NULL},
+     OPT_TEXT, offsetof(Grading, gradescope)},
     {{"self", 0, NULL, "FOLDER is one student's program (or images): grade\nit alone, "
       "print each scene's verdict and heat map,\nand exit 1 unless every scene passes", NULL},
      OPT_FLAG, offsetof(Grading, self)},
@@ -57,13 +67,15 @@ static void print_help(void)
 {
     printf("Usage: grade [options] PART SUBMISSIONS\n"
            "       grade --self [options] PART FOLDER\n"
+           "       grade merge [--out DIR] [--junit FILE] [-q] SHARD...\n"
            "Grades every submission in the folder SUBMISSIONS against the reference images\n"
            "of PART (1.1-spheres-red, 1.1, or a part's folder) and writes a report\n"
            "(report.html) and a table (grades.csv). SUBMISSIONS holds a folder a student:\n"
            "images named as the references (spheres-three.png; .pfm, .exr too), or sources\n"
            "with a Makefile whose make, run in a copy, builds raytra beside it, run as\n"
            "  raytra SCENE OUTPUT [arguments]\n"
-           "for every scene, in a scratch folder, under the limits below.\n\nOptions:\n");
+           "for every scene, in a scratch folder, under the limits below. grade merge\n"
+           "writes one report of the folders of the shards of a class (--shard).\n\nOptions:\n");
     toolopt_print(stdout, options, sizeof options[0], OPTION_COUNT);
     printf("\nExit status: 0 when the report was written, whatever the verdicts; 2 when\n"
            "grading could not be done; 130 when interrupted. See docs/grading.md.\n");
@@ -90,7 +102,7 @@ static bool set_option(void *state, int k, const char *value)
     const GradeOption *o = &options[k];
     void *field = (char *)state + o->field;
     char *end = (char *)value; /* flags have no value */
-    double v = o->kind >= OPT_SECONDS ? strtod(value, &end) : 0;
+    double v = o->kind >= OPT_COUNT ? strtod(value, &end) : 0;
     const char *unit = o->kind == OPT_BYTES && end != value && *end != '\0' ? strchr(units, *end)
                                                                              : NULL;
     if (unit != NULL) {
@@ -101,6 +113,11 @@ static bool set_option(void *state, int k, const char *value)
         *(bool *)field = true;
     else if (o->kind == OPT_TEXT)
         *(const char **)field = value;
+    else if (o->kind == OPT_COUNT && (end == value || *end != '\0' || !(v >= 1 && v <= 64) ||
+                                      v != floor(v)))
+        return grade_fail("--%s takes a whole number from 1 to 64, got '%s'", o->o.name, value);
+    else if (o->kind == OPT_COUNT)
+        *(int *)field = (int)v;
     else if (end == value || *end != '\0' || !isfinite(v) || v < 0 ||
              (o->kind == OPT_BYTES && (v > 1e18 || (v > 0 && v < 1 << 20))))
         return grade_fail("--%s takes %s, got '%s'", o->o.name,
@@ -335,6 +352,8 @@ static bool find_top(Grading *g)
 int main(int argc, char **argv)
 {
     static Grading g;
+    if (argc > 1 && strcmp(argv[1], "merge") == 0)
+        return shard_merge(argc - 1, argv + 1);
     for (int k = 0; k < OPTION_COUNT; k++)
         if (options[k].o.fallback != NULL)
             set_option(&g, k, options[k].o.fallback);
@@ -355,11 +374,14 @@ int main(int argc, char **argv)
     time_t now = time(NULL);
     strftime(g.started, sizeof g.started, "%Y-%m-%d %H:%M", localtime(&now));
     run_init();
-    bool ok = find_top(&g) && part_find(&g, argv[optind]) &&
+    bool ok = find_top(&g) && part_find(&g, argv[optind]) && shard_parse(&g) &&
               (grade_kind(g.submissions) == S_IFDIR ||
                grade_fail("no folder %s", g.submissions)) &&
               part_read_renders(&g) && prepare_work(&g) && show_references(&g) &&
-              submission_list(&g) && submission_grade_all(&g) && report_write(&g);
+              submission_list(&g) && jobs_grade_all(&g) &&
+              (g.shard_n > 0 ? shard_write(&g) : report_write(&g)) &&
+              (g.junit == NULL || export_junit(&g, g.junit)) &&
+              (g.gradescope == NULL || export_gradescope(&g, g.gradescope));
     if (stop_requested()) {
         grade_fail("interrupted: no report written");
         return EXIT_INTERRUPTED;

@@ -100,6 +100,11 @@ typedef struct {
     double build_time_limit; /* seconds for make */
     long long memory_limit;  /* bytes of address space; 0: none */
     bool quiet, self, help;  /* self: submissions is one student's folder */
+    int jobs;                /* submissions graded at a time (--jobs) */
+    const char *shard;       /* --shard K/N as given, or NULL */
+    int shard_k, shard_n;    /* this run grades the k-th of n slices (1 <= k <= n); n 0: all */
+    const char *junit;       /* --junit: a JUnit XML file to write too, or NULL */
+    const char *gradescope;  /* --gradescope: Gradescope's results.json to write too, or NULL */
     FILE *progress;          /* where progress lines and notes go: stderr, or with quiet none */
     char started[32];        /* when grading began, for the report */
 } Grading;
@@ -151,6 +156,18 @@ RunResult run_program(char *const argv[], const char *dir, const char *log, doub
 char *run_describe(const RunResult *r);
 char *run_command_line(char *const argv[], const char *dir);
 char *run_tail(const char *output);
+
+/* grade_jobs.c */
+bool jobs_grade_all(Grading *g);
+
+/* grade_shard.c */
+bool shard_parse(Grading *g);
+bool shard_write(const Grading *g);
+int shard_merge(int argc, char **argv);
+
+/* grade_export.c */
+bool export_junit(const Grading *g, const char *path);
+bool export_gradescope(const Grading *g, const char *path);
 
 /* grade_report.c */
 bool report_write(const Grading *g);
