@@ -16,6 +16,8 @@
 #   make check-statistics  part 1.6's grading by statistics: raytra with 20 seeds passes,
 #                    right and wrong solutions pass and fail (tests/mc-variants, a few minutes)
 #   make statistics-figure  draw the z-score heat maps docs/grading.md shows
+#   make check-slurm  grade a made-up class through tools/slurm/grade-slurm on a Slurm cluster
+#                    of one node it starts (as root; installs slurm-wlm and munge, or skips)
 #
 # WERROR=1 turns warnings into errors; SANITIZE=1 builds and tests everything
 # with AddressSanitizer and UndefinedBehaviorSanitizer.
@@ -36,7 +38,7 @@ FUZZ_SECONDS ?= 1800
 .PHONY: all test demo check-demo check-chromium references docs check-docs check-slides check-figures check-layout check-course clean \
         check-robust check-fuzz-regressions check-bad-input check-interrupt check-nonfinite \
         check-course-render valgrind fuzz fuzz-run bench mistakes starter check-starter check-starters \
-        check-exercises check-statistics statistics-figure
+        check-exercises check-statistics statistics-figure check-slurm
 .NOTPARALLEL:
 
 all:
@@ -192,6 +194,14 @@ check-statistics:
 	@$(SUBMAKE) -C tests/mc-variants
 	@tests/mc-variants/run.sh $(call program,1.6-monte-carlo) tests/mc-variants/$(BUILD) \
 	    $(IMGDIFF) $(MC_PART)/references
+
+# A class graded on Slurm (docs/grading.md): shards and a merge, on a cluster of one node
+# started and stopped by the test, give the report that one run of grade gives.
+check-slurm:
+	$(DEPS_STEP)
+	@$(SUBMAKE) -C tools grade SANITIZE=0
+	@$(SUBMAKE) -C milestones/1.1-spheres-red SANITIZE=0
+	@tests/slurm.sh milestones/1.1-spheres-red/raytra
 
 # The figures of the statistical grading (docs/grading.md, chapter 1.6): z-score heat maps.
 statistics-figure:
