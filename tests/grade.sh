@@ -318,7 +318,8 @@ for case in crashing:CRASHED:'about to crash' hanging:TIMEOUT:'hanging on purpos
     who=${case%%:*} said=${case##*:} verdict=${case#*:}
     verdict=${verdict%%:*}
     dir=$(ls -d "$work"/*-"$who")
-    expected="cd '$dir/run' && '$dir/build/raytra' $top/scenes/demo.scn '$dir/images/demo.png'"
+    command="../build/raytra $top/scenes/demo.scn ../images/demo.png"
+    expected="cd '$dir/run' && $command"
     check "$who: the command line at the top of its log" test "$(head -n 1 "$dir/demo.log")" = "\$ $expected"
     check "$who: its output in its log" grep -qx "$said" "$dir/demo.log"
     # The submission's section, then its scene demo.
@@ -327,7 +328,7 @@ for case in crashing:CRASHED:'about to crash' hanging:TIMEOUT:'hanging on purpos
                        q { print } q && /<\/details>/ { exit }' "$html" >scene.html
     check "$who: $verdict in the report" grep -q ">$verdict<" scene.html
     check "$who: the command line in the report" grep -qF \
-        "Command <code>$(printf '%s' "$expected" | sed "s/&/\&amp;/g; s/'/\&#39;/g")</code>" scene.html
+        "Command <code>cd work/${dir##*/}/run &amp;&amp; $command</code>" scene.html
     check "$who: its last lines in the report" grep -qF "$said" scene.html
 done
 crash=$(ls -d "$work"/*-crashing)
@@ -517,7 +518,7 @@ check "--self: the failure and its heat map" grep -qx ' *heat map: .*/self-out/w
 "$grade" --self -q --out self-out 1.1 class/crashing >stdout.txt 2>stderr.txt
 self=$tmp/self-out/work/1-self
 check "--self: a crash's command line" grep -qxF \
-    "             command: cd $self/run && $self/build/raytra $top/scenes/demo.scn $self/images/demo.png" stdout.txt
+    "             command: cd $self/run && ../build/raytra $top/scenes/demo.scn ../images/demo.png" stdout.txt
 
 # The command line, and troubles found before any grading.
 refuse() {

@@ -243,6 +243,11 @@ static char *out_refusal(const Grading *g, const char *out)
         return grade_format("the output folder %s is the submissions folder: its work folder would "
                             "be graded as a student's; choose an --out outside it",
                             g->out);
+    if (rest != NULL && g->shard_n > 0)
+        return grade_format("the output folder %s of a shard is inside the class %s: the "
+                            "other shards would list it as a submission; choose an --out "
+                            "outside it",
+                            g->out, g->submissions);
     if (rest != NULL && (g->self || strchr(rest, '/') != NULL))
         return grade_format(
             "the output folder %s is inside the submission %s, which grade copies "
@@ -279,7 +284,7 @@ static bool lock_out(const Grading *g, const char *out)
 /* Makes OUT (grading-PART by default), when it may serve, and locks it; makes OUT/work anew,
  * an absolute path as students' programs run elsewhere, removing only a work folder that an
  * earlier run marked. */
-static bool prepare_work(Grading *g)
+bool grade_prepare_out(Grading *g)
 {
     char real[PATH_MAX];
     struct stat st;
@@ -287,7 +292,7 @@ static bool prepare_work(Grading *g)
     bool made = grade_kind(g->out) != S_IFDIR;
     if ((made && !grade_make_folder(g->out)) || realpath(g->out, real) == NULL)
         return false;
-    char *refusal = out_refusal(g, real);
+    char *refusal = g->merging ? NULL : out_refusal(g, real);
     if (refusal != NULL) {
         if (made)
             rmdir(g->out);
@@ -296,6 +301,10 @@ static bool prepare_work(Grading *g)
     g->work = grade_format("%s/work", real);
     if (!lock_out(g, real))
         return false;
+    /* A shard's results go before its work does: they would name pictures no longer there. */
+    if (g->shard_n > 0 && unlink(grade_format("%s/shard.txt", real)) != 0 && errno != ENOENT)
+        return grade_fail("cannot remove the shard's old results in %s: %s", g->out,
+                          strerror(errno));
     /* lstat: a link at the work folder's path is not a work folder grade made. */
     if (lstat(g->work, &st) == 0 &&
         (!S_ISDIR(st.st_mode) || grade_kind(grade_format("%s/.made-by-grade", g->work)) == 0))
@@ -353,7 +362,7 @@ int main(int argc, char **argv)
 {
     static Grading g;
     if (argc > 1 && strcmp(argv[1], "merge") == 0)
-        return shard_merge(argc - 1, argv + 1);
+        return merge_main(argc - 1, argv + 1);
     for (int k = 0; k < OPTION_COUNT; k++)
         if (options[k].o.fallback != NULL)
             set_option(&g, k, options[k].o.fallback);
@@ -377,8 +386,8 @@ int main(int argc, char **argv)
     bool ok = find_top(&g) && part_find(&g, argv[optind]) && shard_parse(&g) &&
               (grade_kind(g.submissions) == S_IFDIR ||
                grade_fail("no folder %s", g.submissions)) &&
-              part_read_renders(&g) && prepare_work(&g) && show_references(&g) &&
-              submission_list(&g) && jobs_grade_all(&g) &&
+              part_read_renders(&g) && grade_prepare_out(&g) && show_references(&g) &&
+              submission_list(&g) && (shard_select(&g), jobs_grade_all(&g)) &&
               (g.shard_n > 0 ? shard_write(&g) : report_write(&g)) &&
               (g.junit == NULL || export_junit(&g, g.junit)) &&
               (g.gradescope == NULL || export_gradescope(&g, g.gradescope));

@@ -61,7 +61,7 @@ typedef struct {
     Figures figures;
     char *image_show, *heat_show; /* where imgdiff put the thumbnails, or NULL */
     char *log_tail;               /* the last lines the program printed, or NULL */
-    char *command;                /* the command line run, shell-quoted, or NULL */
+    char *command; /* the command line run in the submission's run folder, or NULL */
     bool copy; /* the file is byte for byte the reference's: flagged for the instructor */
     double relative_width; /* a wrong-sized image's width over the reference's; else 0 */
     double seconds;        /* how long the program ran; 0 when none was run */
@@ -105,6 +105,10 @@ typedef struct {
     int shard_k, shard_n;    /* this run grades the k-th of n slices (1 <= k <= n); n 0: all */
     const char *junit;       /* --junit: a JUnit XML file to write too, or NULL */
     const char *gradescope;  /* --gradescope: Gradescope's results.json to write too, or NULL */
+    char **members;          /* the names of the whole class, of which subs may be a slice */
+    int member_count;
+    char *heading;           /* a shard read back: what merge checks to be the same in all */
+    bool merging;            /* grade merge: no class is read, no program run */
     FILE *progress;          /* where progress lines and notes go: stderr, or with quiet none */
     char started[32];        /* when grading began, for the report */
 } Grading;
@@ -140,6 +144,7 @@ int grade_kind(const char *path);
 bool grade_make_folder(const char *path);
 const char *grade_fresh_folder(const char *path, FILE *notes);
 char **grade_list_folders(const char *folder, int *count);
+bool grade_prepare_out(Grading *g);
 
 /* grade_part.c */
 bool part_find(Grading *g, const char *part);
@@ -147,7 +152,7 @@ bool part_read_renders(Grading *g);
 
 /* grade_submission.c */
 bool submission_list(Grading *g);
-bool submission_grade_all(Grading *g);
+bool submission_grade(const Grading *g, Submission *s, FILE *f);
 
 /* grade_run.c */
 void run_init(void);
@@ -155,6 +160,7 @@ RunResult run_program(char *const argv[], const char *dir, const char *log, doub
                       long long memory_limit);
 char *run_describe(const RunResult *r);
 char *run_command_line(char *const argv[], const char *dir);
+char *run_quote(const char *word);
 char *run_tail(const char *output);
 
 /* grade_jobs.c */
@@ -162,8 +168,15 @@ bool jobs_grade_all(Grading *g);
 
 /* grade_shard.c */
 bool shard_parse(Grading *g);
+void shard_select(Grading *g);
+void shard_put_text(FILE *f, const char *text);
+void shard_put_submission(FILE *f, const Grading *g, const Submission *s);
+char *shard_read_submission(const Grading *g, Submission *s, const char *path);
 bool shard_write(const Grading *g);
-int shard_merge(int argc, char **argv);
+bool shard_read(Grading *g, const char *folder);
+
+/* grade_merge.c */
+int merge_main(int argc, char **argv);
 
 /* grade_export.c */
 bool export_junit(const Grading *g, const char *path);

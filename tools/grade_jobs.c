@@ -1,8 +1,143 @@
 /* grade_jobs.c: grading the submissions N at a time, each in a worker process of its own. */
 #include "grade.h"
 
-/* Grades every submission, --jobs at a time; false when interrupted or on trouble. */
+#include <errno.h>
+#include <signal.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/wait.h>
+#include <unistd.h>
+#ifdef __linux__
+#include <sys/prctl.h>
+#endif
+
+#include "outfile.h"
+#include "stop.h"
+
+/* Exit statuses of a worker: its results written, or a stop asked for. */
+enum { WORKER_DONE = 0, WORKER_STOPPED = 3, WORKER_TROUBLE = 4 };
+
+/* Returns the file through which worker k hands its submission's results to the grader. */
+static char *results_path(const Grading *g, int k)
+{
+    return grade_format("%s/.results-%d", g->work, k + 1);
+}
+
+/* In a new worker: grades submission k with its progress kept, and writes both to
+ * results_path (whole or not at all); never returns. */
+static void work(Grading *g, int k)
+{
+#ifdef __linux__
+    /* Orphans of the submission's programs come to the worker, which ends them; the worker
+     * ends should the grader die. */
+    prctl(PR_SET_CHILD_SUBREAPER, 1, 0, 0, 0);
+    prctl(PR_SET_PDEATHSIG, SIGTERM, 0, 0, 0);
+#endif
+    char *told = NULL;
+    size_t size = 0;
+    FILE *progress = open_memstream(&told, &size);
+    if (progress == NULL || !submission_grade(g, &g->subs[k], progress))
+        _exit(stop_requested() ? WORKER_STOPPED : WORKER_TROUBLE);
+    fclose(progress);
+    OutFile out;
+    Error err;
+    char *path = results_path(g, k);
+    if (!outfile_open(&out, path, &err))
+        _exit(WORKER_TROUBLE);
+    shard_put_submission(out.file, g, &g->subs[k]);
+    fputs("told", out.file);
+    /* The worker's told text goes through the same escaping as the results. */
+    shard_put_text(out.file, told);
+    fputc('\n', out.file);
+    _exit(outfile_commit(&out, &err) ? WORKER_DONE : WORKER_TROUBLE);
+}
+
+/* Takes in what worker k handed over, and tells its progress; a worker that ended without
+ * its results gets every scene an ERROR saying so. */
+static void collect(Grading *g, int k, int status)
+{
+    Submission *s = &g->subs[k];
+    char *path = results_path(g, k);
+    char *told = WIFEXITED(status) && WEXITSTATUS(status) == WORKER_DONE
+                     ? shard_read_submission(g, s, path)
+                     : NULL;
+    unlink(path);
+    if (told != NULL) {
+        fputs(told, g->progress);
+        return;
+    }
+    if (stop_requested())
+        return;
+    char *why = WIFSIGNALED(status) ? grade_format("it was killed by signal %d", WTERMSIG(status))
+                : WEXITSTATUS(status) == WORKER_DONE
+                    ? "what it wrote could not be read"
+                    : grade_format("its exit status was %d", WEXITSTATUS(status));
+    fprintf(g->progress, "grading %s: the grader's worker ended without its results (%s)\n",
+            s->name, why);
+    s->results = grade_alloc((size_t)g->render_count * sizeof *s->results);
+    memset(s->tally, 0, sizeof s->tally);
+    for (int r = 0; r < g->render_count; r++) {
+        s->results[r].verdict = VERDICT_ERROR;
+        snprintf(s->results[r].message, sizeof s->results[r].message,
+                 "the grader's worker for this submission ended without its results (%s)", why);
+        s->tally[verdict_info[VERDICT_ERROR].tally]++;
+    }
+}
+
+/* Grades the submissions in worker processes, g->jobs at a time; each worker forks from the
+ * grader with all it knows, and hands its results back through a file. False when
+ * interrupted. */
+static bool grade_in_workers(Grading *g)
+{
+    pid_t *pid = grade_alloc((size_t)g->sub_count * sizeof *pid);
+    int next = 0, running = 0;
+    bool told_stop = false;
+    while (next < g->sub_count || running > 0) {
+        for (; running < g->jobs && next < g->sub_count && !stop_requested(); next++, running++) {
+            fflush(NULL);
+            if ((pid[next] = fork()) == 0)
+                work(g, next);
+            if (pid[next] < 0)
+                return grade_fail("cannot start a worker: %s", strerror(errno));
+        }
+        int status, k = 0;
+        pid_t ended = waitpid(-1, &status, 0);
+        if (ended < 0 && errno != EINTR)
+            break;
+        /* A stop asked of the grader alone (kill PID) is passed on to its workers. */
+        if (stop_requested() && !told_stop) {
+            told_stop = true;
+            for (int w = 0; w < next; w++)
+                if (pid[w] > 0)
+                    kill(pid[w], SIGTERM);
+        }
+        while (ended > 0 && k < next && pid[k] != ended)
+            k++;
+        if (ended <= 0 || k == next) /* interrupted, or an orphan the grader adopted */
+            continue;
+        pid[k] = 0;
+        running--;
+        collect(g, k, status);
+    }
+    return !stop_requested();
+}
+
+/* Grades every submission of g (a shard's slice with --shard), --jobs at a time, telling
+ * the progress on g->progress; false when interrupted. */
 bool jobs_grade_all(Grading *g)
 {
-    return submission_grade_all(g);
+    FILE *f = g->progress;
+    fprintf(f, "grade: part %s, %d scene%s, %d submission%s", g->part, g->render_count,
+            g->render_count == 1 ? "" : "s", g->sub_count, g->sub_count == 1 ? "" : "s");
+    if (g->shard_n > 0)
+        fprintf(f, " (shard %d of %d of a class of %d)", g->shard_k, g->shard_n, g->member_count);
+    fprintf(f, g->jobs > 1 ? ", %d at a time\n" : "\n", g->jobs);
+    if (g->illustrations != NULL)
+        fprintf(f, "grade: not graded (illustrations): %s\n", g->illustrations);
+    if (g->jobs > 1 && g->sub_count > 1)
+        return grade_in_workers(g);
+    for (int k = 0; k < g->sub_count; k++)
+        if (!submission_grade(g, &g->subs[k], f))
+            return false;
+    return true;
 }

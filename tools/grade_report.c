@@ -267,9 +267,11 @@ static void write_html(FILE *f, const Grading *g)
             for (char **a = r->argv + RENDER_WORDS; *a != NULL; a++)
                 fprintf(f, " %s", html(*a));
             fputs("</code></p>\n", f);
-            /* What was run, where, to run it again by hand: a shell's command line. */
+            /* What was run, where (from the report's folder), to run it again by hand. */
             if (res->command != NULL)
-                fprintf(f, "<p class=\"file\">Command <code>%s</code></p>\n", html(res->command));
+                fprintf(f, "<p class=\"file\">Command <code>cd %s &amp;&amp; %s</code></p>\n",
+                        html(run_quote(grade_format("work/%s/run", strrchr(s->work, '/') + 1))),
+                        html(res->command));
             if (res->compared || res->relative_width > 0)
                 write_pictures(f, res, k);
             write_log(f, "Program output (the last lines)",
@@ -279,10 +281,10 @@ static void write_html(FILE *f, const Grading *g)
         }
         fputs(broken ? "</div>\n</section>\n" : "</section>\n", f);
     }
-    fprintf(f, "</main>\n<footer>Written by raytra's <code>tools/grade</code> (docs/grading.md). "
-               "The builds, images, logs and heat maps are in <code>%s</code>.</footer>\n</body>\n"
-               "</html>\n",
-            html(g->work));
+    fputs("</main>\n<footer>Written by raytra's <code>tools/grade</code> (docs/grading.md). The "
+          "builds, images, logs and heat maps are in <code>work/</code> beside this report; its "
+          "command lines start there.</footer>\n</body>\n</html>\n",
+          f);
 }
 
 /* Returns text as a CSV field: quoted, its quotes doubled (RFC 4180), when it holds a
@@ -367,7 +369,8 @@ int report_print_self(const Grading *g)
         if (res->verdict != VERDICT_PASS && access(heat, F_OK) == 0)
             printf("%12s heat map: %s\n", "", heat);
         if (res->command != NULL && verdict_info[res->verdict].tally == TALLY_ERROR)
-            printf("%12s command: %s\n", "", res->command);
+            printf("%12s command: cd %s && %s\n", "", run_quote(grade_format("%s/run", s->work)),
+                   res->command);
     }
     printf("%d of %d scenes pass; the report: %s/report.html\n", s->tally[TALLY_PASS],
            g->render_count, g->out);

@@ -319,7 +319,7 @@ char *run_describe(const RunResult *r)
 
 /* Returns word as the shell reads it: as it is when it holds only safe characters, else in
  * single quotes, each of its own written '\''. */
-static char *shell_quote(const char *word)
+char *run_quote(const char *word)
 {
     if (word[0] != '\0' && strspn(word, "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz"
                                         "0123456789_-./=:,+@%") == strlen(word))
@@ -340,9 +340,9 @@ static char *shell_quote(const char *word)
  * every word quoted as it needs, so that it can be pasted to run the same again. */
 char *run_command_line(char *const argv[], const char *dir)
 {
-    char *line = dir != NULL ? grade_format("cd %s &&", shell_quote(dir)) : "";
+    char *line = dir != NULL ? grade_format("cd %s &&", run_quote(dir)) : "";
     for (char *const *a = argv; *a != NULL; a++)
-        line = grade_format("%s%s%s", line, line[0] != '\0' ? " " : "", shell_quote(*a));
+        line = grade_format("%s%s%s", line, line[0] != '\0' ? " " : "", run_quote(*a));
     return line;
 }
 

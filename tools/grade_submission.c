@@ -188,19 +188,21 @@ static bool says_out_of_memory(const char *output)
 
 /* Grades render k of a submission that is a program: runs it on the scene under the
  * limits, in a scratch folder, and judges how it ended and what it wrote. */
-static void run_scene(const Grading *g, Submission *s, int k, char *program)
+static void run_scene(const Grading *g, Submission *s, int k)
 {
     const Render *r = &g->renders[k];
     SceneResult *res = &s->results[k];
     char *log = grade_format("%s/%s.log", s->work, r->name);
     char *image = grade_format("%s/images/%s", s->work, r->image);
-    r->argv[0] = program;
-    r->argv[2] = image;
+    /* The program and its image are named from the run folder, so that neither what it
+     * prints nor its command line depends on where the work folder is (a shard's, merged). */
+    r->argv[0] = "../build/raytra";
+    r->argv[2] = grade_format("../images/%s", r->image);
     char *dir = grade_format("%s/run", s->work);
     RunResult run = run_program(r->argv, dir, log, g->time_limit, g->memory_limit);
     res->seconds = run.seconds;
     res->log_tail = run_tail(run.output);
-    res->command = run_command_line(r->argv, dir);
+    res->command = run_command_line(r->argv, NULL);
     char *how = run_describe(&run);
     struct stat st;
     bool wrote = lstat(image, &st) == 0, exited = run.end == RUN_EXITED;
@@ -261,7 +263,7 @@ static bool grade_one(const Grading *g, Submission *s, const char *trouble, FILE
         else if (!s->program)
             grade_image(g, s, k);
         else if (program != NULL)
-            run_scene(g, s, k, program);
+            run_scene(g, s, k);
         else
             set_verdict(&s->results[k], VERDICT_BUILD_FAILED, "%s", s->build_message);
     }
@@ -292,28 +294,17 @@ static bool grade_one(const Grading *g, Submission *s, const char *trouble, FILE
     return true;
 }
 
-/* Grades every submission, telling the progress on g->progress; false when interrupted or
- * when the grader itself failed (reported). */
-bool submission_grade_all(Grading *g)
+/* Grades submission s, telling the progress on f: its name and kind, then how its scenes
+ * fared ("5 scenes: 4 pass, 1 timeout"); false when grading must stop (interrupted). */
+bool submission_grade(const Grading *g, Submission *s, FILE *f)
 {
-    FILE *f = g->progress;
-    fprintf(f, "grade: part %s, %d scene%s, %d submission%s\n", g->part, g->render_count,
-            g->render_count == 1 ? "" : "s", g->sub_count, g->sub_count == 1 ? "" : "s");
-    if (g->illustrations != NULL)
-        fprintf(f, "grade: not graded (illustrations): %s\n", g->illustrations);
-    for (int k = 0; k < g->sub_count; k++) {
-        Submission *s = &g->subs[k];
-        const char *trouble = make_work(s, f);
-        /* Control characters made '?': a folder's name cannot play tricks on the terminal. */
-        fprintf(f, "grading ");
-        for (const char *p = s->name; *p != '\0'; p++)
-            fputc((unsigned char)*p < 0x20 || *p == 0x7F ? '?' : *p, f);
-        fprintf(f, " (%s): %s", s->program ? "program" : "images",
-                s->program ? "building... " : "");
-        if (!grade_one(g, s, trouble, f))
-            return false;
-    }
-    return true;
+    const char *trouble = make_work(s, f);
+    /* Control characters made '?': a folder's name cannot play tricks on the terminal. */
+    fprintf(f, "grading ");
+    for (const char *p = s->name; *p != '\0'; p++)
+        fputc((unsigned char)*p < 0x20 || *p == 0x7F ? '?' : *p, f);
+    fprintf(f, " (%s): %s", s->program ? "program" : "images", s->program ? "building... " : "");
+    return grade_one(g, s, trouble, f);
 }
 
 /* Lists the submissions, each with a work folder named safely for scripts (03-alice): the
