@@ -45,7 +45,7 @@ check() {
 # Ends the test: the count of checks, and the exit status.
 finish() {
     if [ "$failures" -ne 0 ]; then
-        echo "slurm.sh: $failures of $checks checks failed"
+        echo "slurm.sh: $failures of $checks checks failed${1:+; $1}"
         exit 1
     fi
     echo "slurm.sh: $checks checks passed${1:+; $1}"
@@ -325,6 +325,7 @@ check "the 3 shards completed" \
     test "$(scontrol show job "$shards_job" 2>/dev/null | grep -c 'JobState=COMPLETED')" -eq 3
 check "a report written" test -n "$seen"
 seconds=$(awk -v a="$submitted" -v b="${seen:-$finished}" 'BEGIN { printf "%.1f", b - a }')
+echo "slurm.sh: 7 submissions in 3 shards through Slurm: $seconds s from grade-slurm to the report"
 for k in 1 2 3; do
     check "shard $k's log says it ended well" grep -q "shard $k ended with exit status 0" \
         "$out/slurm/shard-$k.log"
@@ -338,7 +339,7 @@ local_started=$(now)
 local_seconds=$(awk -v a="$local_started" -v b="$(now)" 'BEGIN { printf "%.1f", b - a }')
 check "the CSV has a line a submission and scene" test "$(wc -l <"$tmp/local/grades.csv")" -eq 36
 checks=$((checks + 1))
-if ! "$top/tests/same-grades.sh" "$tmp/local" "$out" >same.txt 2>&1; then
+if ! sh "$top/tests/same-grades.sh" "$tmp/local" "$out" >same.txt 2>&1; then
     fail "the report through Slurm differs from the local one"
     sed 's/^/    | /' same.txt | head -n 20
 fi
@@ -366,7 +367,7 @@ merge_job=$(cd "$broken/slurm" && sbatch --parsable --dependency="afterany:$agai
 wait_job "$merge_job" "$broken/report.html"
 check "the shard graded again: the merge job completed" test "$(job_state "$merge_job")" = COMPLETED
 checks=$((checks + 1))
-if ! "$top/tests/same-grades.sh" "$tmp/local" "$broken" >same.txt 2>&1; then
+if ! sh "$top/tests/same-grades.sh" "$tmp/local" "$broken" >same.txt 2>&1; then
     fail "the report merged again differs from the local one"
     sed 's/^/    | /' same.txt | head -n 20
 fi
