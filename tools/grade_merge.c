@@ -58,9 +58,15 @@ static char *difference(const char *a, const char *b)
         if (a[at] == '\n')
             start = at + 1;
     const char *line = a + start;
-    for (size_t k = 0; k < sizeof keys / sizeof keys[0]; k++)
-        if (strncmp(line, keys[k][0], strlen(keys[k][0])) == 0)
-            return grade_format("%s (%.*s)", keys[k][1], (int)strcspn(line, "\n"), line);
+    /* The line's first word names what differs: a render's image, a member's folder. */
+    for (size_t k = 0; k < sizeof keys / sizeof keys[0]; k++) {
+        size_t len = strlen(keys[k][0]);
+        if (strncmp(line, keys[k][0], len) != 0 || line[len] != ' ')
+            continue;
+        const char *word = line + len + 1 + (line[len + 1] == '=');
+        return grade_format("%s (%s %.*s)", keys[k][1], keys[k][0], (int)strcspn(word, " \n"),
+                            word);
+    }
     return "another heading";
 }
 

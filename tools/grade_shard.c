@@ -205,7 +205,7 @@ static bool get_submission(Reader *r, const Grading *g, Submission *s, const cha
         f->pixels = (long)get_number(r, 21);
         for (int n = 0; n < 4; n++)
             f->box[n] = (int)get_number(r, 22 + n);
-        f->heat_scale = get_number(r, 25);
+        f->heat_scale = get_number(r, 26);
         s->tally[verdict_info[x->verdict].tally]++;
     }
     return !r->bad || grade_fail("%s:%d: a word is not as grade writes it", r->path, r->line);

@@ -1,0 +1,141 @@
+#!/bin/sh
+# grade-class.sh: tests grading a class at scale: --jobs, --shard K/N and grade merge.
+#
+# Usage: tests/grade-class.sh GRADE RAYTRA   (make -C tools test runs it)
+#   GRADE   the grader, tools/build/grade, with imgdiff beside it
+#   RAYTRA  part 1.1's program: it renders the class's images and plays a correct student
+#
+# A made-up class of part 1.1 (images right and wrong, a program, a build that fails, a name
+# that needs quoting) is graded one at a time, two at a time, and in three shards merged:
+# the three reports and tables must be the same apart from times (tests/same-grades.sh).
+# Then shards that do not belong together are given to grade merge, which must refuse each
+# with its reason and write nothing. Exit status 0 when every check passes.
+set -u
+[ $# -eq 2 ] || { echo "usage: $0 GRADE RAYTRA" >&2; exit 2; }
+case $1 in /*) grade=$1 ;; *) grade=$(pwd)/$1 ;; esac
+case $2 in /*) raytra=$2 ;; *) raytra=$(pwd)/$2 ;; esac
+top=$(cd "$(dirname "$0")/.." && pwd)
+same="sh $top/tests/same-grades.sh"
+refs=$top/milestones/1.1-spheres-red/references
+tmp=$(mktemp -d)
+trap '[ -n "${KEEP:-}" ] || rm -rf "$tmp"' EXIT
+trap 'exit 130' INT TERM
+cd "$tmp" || exit 2
+
+checks=0
+failures=0
+
+# Counts a check, failing it with message $1 unless the rest of the line succeeds.
+check() {
+    message=$1
+    shift
+    checks=$((checks + 1))
+    "$@" || { failures=$((failures + 1)); echo "FAIL: $message"; }
+}
+
+# Runs grade merge with the arguments, expecting it to refuse (exit 2) saying $1, and to
+# leave the output folder "refused" as it was.
+check_refused() {
+    said=$1
+    shift
+    "$grade" merge -q --out refused "$@" 2>stderr.txt
+    check "merge $*: exit 2" test $? -eq 2
+    check "merge $*: says '$said'" grep -qF -- "$said" stderr.txt
+    check "merge $*: the earlier report left as it was" cmp -s refused/report.html before.html
+}
+
+# The class: four folders of images (right; one scene missing; one scene another's image,
+# of another size; one a little wrong, with a name to quote), a program (RAYTRA behind a
+# Makefile), a build that fails.
+for who in ann bea "cy o'neil" dee; do
+    mkdir -p "class/$who"
+    cp "$refs"/*.png "class/$who/"
+done
+rm class/bea/demo.png
+cp "$refs/spheres-three.png" class/dee/demo.png
+sed 's/^s 25 -5 -90   10$/s 25.5 -5 -90   10/' "$top/scenes/spheres-three.scn" >moved.scn
+"$raytra" -q moved.scn "class/cy o'neil/spheres-three.png" 2>/dev/null || exit 2
+mkdir class/eli class/fay
+printf 'raytra:\n\tln -s %s raytra\n' "$raytra" >class/eli/Makefile
+printf 'raytra:\n\t@echo no compiler here >&2; exit 1\n' >class/fay/Makefile
+
+# One at a time, two at a time, and three shards (one of them two at a time) merged.
+"$grade" -q --out one 1.1 class 2>stderr.txt
+check "--jobs 1 writes a report" test -f one/report.html
+check "the class's verdicts" test "$(cut -d, -f3 one/grades.csv | sort | uniq -c | tr -s ' ' | tr '\n' ';')" \
+    = " 5 BUILD FAILED; 1 FAIL; 1 MISSING; 22 PASS; 1 WRONG SIZE; 1 verdict;"
+"$grade" -q --jobs 2 --out two 1.1 class 2>stderr.txt
+check "--jobs 2: the same report and table as --jobs 1" $same one two
+check "--jobs 2: no results file left behind" test -z "$(ls -A two/work | grep results)"
+for k in 1 2 3; do
+    "$grade" -q --shard $k/3 --jobs $((k % 2 + 1)) --out "shard $k" 1.1 class 2>stderr.txt
+    check "shard $k of 3 written" test -f "shard $k/shard.txt" -a ! -e "shard $k/report.html"
+done
+check "shard 1 holds every third submission from the first" \
+    test "$(ls "shard 1/work" | tr '\n' ' ')" = "01-ann 04-dee references "
+"$grade" merge -q --out merged "shard 3" "shard 1" "shard 2" 2>stderr.txt
+check "merge: exit 0" test $? -eq 0
+check "merge: the same report and table as one run" $same one merged
+check "merge: the report's command line runs from its folder" \
+    test -f "merged/$(grep -o 'cd work/[^ ]*/run' merged/report.html | head -n 1 | cut -c 4-)/../images/demo.png"
+
+# Merges that are refused: nothing written, the earlier report kept.
+cp merged/report.html before.html
+"$grade" merge -q --out refused "shard 1" "shard 2" "shard 3" 2>stderr.txt
+cp refused/report.html before.html
+check_refused "shard 2 of 3 is missing" "shard 1" "shard 3"
+check_refused "shard 1 of 3 is given twice" "shard 1" "shard 1" "shard 2" "shard 3"
+"$grade" -q --shard 2/2 --out half 1.1 class 2>stderr.txt
+check_refused "half is shard 2 of 2, shard 1 of 3" "shard 1" half "shard 3"
+"$grade" -q --shard 2/3 --out strict --threshold 0.001 1.1 class 2>stderr.txt
+check_refused "other tolerances" "shard 1" strict "shard 3"
+mkdir -p other/1.1-spheres-red
+cp -R "$refs" other/1.1-spheres-red/
+cp "$refs/demo.png" other/1.1-spheres-red/references/spheres-three.png
+"$grade" -q --shard 2/3 --out moved other/1.1-spheres-red class 2>stderr.txt
+check_refused "other references or scenes (render spheres-three.png)" "shard 1" moved "shard 3"
+"$grade" -q --shard 2/3 --out shaded 1.2 class 2>stderr.txt
+check_refused "another part" "shard 1" shaded "shard 3"
+cp -R class smaller
+rm -rf smaller/dee
+"$grade" -q --shard 2/3 --out fewer 1.1 smaller 2>stderr.txt
+check_refused "another class folder" "shard 1" fewer "shard 3"
+rm "shard 2/shard.txt"
+check_refused "did not finish" "shard 1" "shard 2" "shard 3"
+check_refused "no shard folder nowhere" "shard 1" nowhere "shard 3"
+check "no report in a refused merge's new folder" sh -c \
+    '! "$0" merge -q --out new "shard 1" "shard 3" 2>/dev/null && test ! -e new/report.html' "$grade"
+
+# A shard's bad K/N, and a shard whose output would be listed by the others as a student.
+for bad in 0/2 3/2 1/0 x 1/2/3; do
+    "$grade" -q --shard "$bad" 1.1 class 2>stderr.txt
+    check "--shard $bad refused" test $? -eq 2
+    check "--shard $bad: says why" grep -q "^grade: --shard takes K/N" stderr.txt
+done
+"$grade" -q --shard 1/2 --out class/out 1.1 class 2>stderr.txt
+check "a shard's --out inside the class refused" grep -q "inside the class" stderr.txt
+check "... and not made" test ! -e class/out
+"$grade" -q --shard 1/2 --self 1.1 class/ann 2>stderr.txt
+check "--shard with --self refused" grep -q "^grade: --shard cannot go with --self" stderr.txt
+
+# Interrupted with two at a time: every worker ends, and no report is written.
+mkdir -p slow/a slow/b
+for who in a b; do
+    printf 'raytra:\n\tprintf "#!/bin/sh\\nexec sleep 60\\n" >raytra; chmod +x raytra\n' >slow/$who/Makefile
+done
+"$grade" -q --jobs 2 --out stopped 1.1 slow 2>stderr.txt &
+pid=$!
+sleep 2
+kill -INT $pid
+wait $pid
+check "--jobs 2 interrupted: exit 130" test $? -eq 130
+check "--jobs 2 interrupted: no report" test ! -e stopped/report.html
+check "--jobs 2 interrupted: no program left running" \
+    test -z "$(ps -eo args | grep -x 'sleep 60')"
+
+if [ "$failures" -eq 0 ]; then
+    echo "grade-class.sh: all $checks checks passed"
+else
+    echo "grade-class.sh: $failures of $checks checks failed (KEEP=1 keeps $tmp)"
+    exit 1
+fi
