@@ -21,7 +21,7 @@ refs=$top/milestones/1.1-spheres-red/references
 grade_slurm=$top/tools/slurm/grade-slurm
 tmp=$(mktemp -d)
 daemons=""
-trap 'stop_cluster; [ -n "${KEEP:-}" ] || rm -rf "$tmp"' EXIT
+trap '[ -z "$daemons" ] || stop_cluster; [ -n "${KEEP:-}" ] || rm -rf "$tmp"' EXIT
 trap 'exit 130' INT TERM
 cd "$tmp" || exit 2
 
@@ -311,6 +311,7 @@ submitted=$(now)
 checks=$((checks + 1))
 "$grade_slurm" --shards 3 --time-limit 20 1.1 "$class" "$out" >submit.txt 2>&1
 status=$?
+returned=$(now)
 if [ $status -ne 0 ]; then
     fail "grade-slurm exited with $status"
     sed 's/^/    | /' submit.txt
@@ -327,6 +328,17 @@ check "the 3 shards completed" \
 check "a report written" test -n "$seen"
 seconds=$(awk -v a="$submitted" -v b="${seen:-$finished}" 'BEGIN { printf "%.1f", b - a }')
 echo "slurm.sh: 7 submissions in 3 shards through Slurm: $seconds s from grade-slurm to the report"
+# Where the time went, from the times the jobs' logs give to the second.
+stamps=$(for log in "$out"/slurm/shard-*.log "$out/slurm/merge.log"; do
+    sed -n 's/^grade-slurm: .*, \([0-9-]* [0-9:]* UTC\)$/\1/p' "$log" | while read -r stamp; do
+        echo "$(basename "$log") $(date -d "$stamp" +%s)"
+    done
+done)
+echo "$stamps" | awk -v t0="$submitted" -v back="$returned" '
+    /^shard/ { first = first == "" || $2 < first ? $2 : first; last = $2 > last ? $2 : last }
+    /^merge/ { merge = $2 }
+    END { printf "slurm.sh: grade-slurm returned after %.1f s; the shards ran from %.0f to %.0f s, " \
+                 "the merge started at %.0f s\n", back - t0, first - t0, last - t0, merge - t0 }'
 for k in 1 2 3; do
     check "shard $k's log says it ended well" grep -q "shard $k ended with exit status 0" \
         "$out/slurm/shard-$k.log"
