@@ -130,6 +130,8 @@ if [ $status -eq 0 ]; then
     check "the dry run's log" grep -qxF "#SBATCH --output=\"$tmp/dry run/slurm/shard-%a.log\"" \
         "dry run/slurm/shard.sh"
     check "the dry run submitted something" test "$(ls -A "dry run")" = slurm
+    check "a dry run's folder taken again" \
+        "$grade_slurm" --dry-run --time-limit 20 1.1 "$class" "dry run" >/dev/null 2>&1
 else
     fail "grade-slurm --dry-run exited with $status"
     sed 's/^/    | /' dry.txt
@@ -372,6 +374,8 @@ check "a failed shard: the merge job failed: $(job_state "$merge_job")" test "$(
 check "a failed shard: no report" test ! -e "$broken/report.html"
 check "a failed shard: no grades" test ! -e "$broken/grades.csv"
 check "a failed shard: its log says so" grep -q "shard 2 ended with exit status 2" "$broken/slurm/shard-2.log"
+check "a failed shard: the merge's log says why" grep -qF "grade: no shard folder $broken/shards/2" \
+    "$broken/slurm/merge.log"
 check "a failed shard: the merge's log says what to do" grep -q "sbatch --array=K shard.sh" \
     "$broken/slurm/merge.log"
 rm "$broken/shards/2"
