@@ -20,15 +20,19 @@ bool shard_parse(Grading *g)
     int n = 0;
     if (g->shard == NULL)
         return true;
-    if (sscanf(g->shard, "%d/%d%n", &g->shard_k, &g->shard_n, &n) != 2 ||
-        g->shard[n] != '\0' || g->shard_n < 1 || g->shard_n > 10000 || g->shard_k < 1 ||
-        g->shard_k > g->shard_n)
+    if (sscanf(g->shard, "%d/%d%n", &g->shard_k, &g->shard_n, &n) != 2 || g->shard[n] != '\0' ||
+        g->shard_n < 1 || g->shard_n > 10000 || g->shard_k < 1 || g->shard_k > g->shard_n)
         return grade_fail("--shard takes K/N, the K-th of N slices, 1 <= K <= N <= 10000; got "
-                          "'%s'", g->shard);
+                          "'%s'",
+                          g->shard);
     if (g->self || g->junit != NULL || g->gradescope != NULL)
-        return grade_fail("--shard cannot go with %s: %s", g->self ? "--self" : "--junit or "
-                          "--gradescope", g->self ? "a shard is a slice of a class"
-                          : "give it to grade merge, which writes the whole class's verdicts");
+        return grade_fail("--shard cannot go with %s: %s",
+                          g->self ? "--self"
+                                  : "--junit or "
+                                    "--gradescope",
+                          g->self
+                              ? "a shard is a slice of a class"
+                              : "give it to grade merge, which writes the whole class's verdicts");
     if (g->out == NULL)
         g->out = grade_format("grading-%s-shard-%d-of-%d", g->part, g->shard_k, g->shard_n);
     return true;
@@ -91,8 +95,8 @@ void shard_put_submission(FILE *f, const Grading *g, const Submission *s)
         shard_put_text(f, r->log_tail);
         shard_put_text(f, r->command);
         fprintf(f, " %a %a %a %a %a %a %a %a %ld %ld %d %d %d %d %a\n", x->threshold, x->allow,
-                x->max[0], x->max[1], x->max[2], x->mean, x->rmse, x->psnr, x->differing,
-                x->pixels, x->box[0], x->box[1], x->box[2], x->box[3], x->heat_scale);
+                x->max[0], x->max[1], x->max[2], x->mean, x->rmse, x->psnr, x->differing, x->pixels,
+                x->box[0], x->box[1], x->box[2], x->box[3], x->heat_scale);
     }
 }
 
@@ -172,9 +176,12 @@ static bool get_submission(Reader *r, const Grading *g, Submission *s, const cha
 {
     if (!line_is(r, "sub", 7))
         return grade_fail("%s:%d: expected a submission", r->path, r->line);
-    *s = (Submission){.work = get_path(r, 1, work_name), .name = get_text(r, 2),
-                      .path = get_text(r, 3), .program = get_number(r, 4) != 0,
-                      .link = get_text(r, 5), .build_message = get_text(r, 6),
+    *s = (Submission){.work = get_path(r, 1, work_name),
+                      .name = get_text(r, 2),
+                      .path = get_text(r, 3),
+                      .program = get_number(r, 4) != 0,
+                      .link = get_text(r, 5),
+                      .build_message = get_text(r, 6),
                       .build_log_tail = get_text(r, 7)};
     s->results = grade_alloc((size_t)g->render_count * sizeof *s->results);
     for (int k = 0; k < g->render_count && !r->bad; k++) {
@@ -197,8 +204,8 @@ static bool get_submission(Reader *r, const Grading *g, Submission *s, const cha
         x->heat_show = get_path(r, 9, work);
         x->log_tail = get_text(r, 10);
         x->command = get_text(r, 11);
-        double *numbers[] = {&f->threshold, &f->allow, f->max, f->max + 1, f->max + 2,
-                             &f->mean, &f->rmse, &f->psnr};
+        double *numbers[] = {&f->threshold, &f->allow, f->max,   f->max + 1,
+                             f->max + 2,    &f->mean,  &f->rmse, &f->psnr};
         for (int n = 0; n < 8; n++)
             *numbers[n] = get_number(r, 12 + n);
         f->differing = (long)get_number(r, 20);
@@ -321,7 +328,8 @@ static bool get_heading(Reader *r, Grading *g, const char *work)
         else if (line == 5 && line_is(r, "renders", 1) && (renders = (int)get_number(r, 1)) > 0 &&
                  renders < 100000)
             g->renders = grade_alloc((size_t)renders * sizeof *g->renders);
-        else if (line > 5 && line <= 5 + renders && r->count >= 5 && line_is(r, "render", r->count - 1)) {
+        else if (line > 5 && line <= 5 + renders && r->count >= 5 &&
+                 line_is(r, "render", r->count - 1)) {
             Render *x = &g->renders[g->render_count++];
             *x = (Render){.image = get_text(r, 1), .name = get_text(r, 2), .scene = get_text(r, 3)};
             x->argv = grade_alloc((size_t)(r->count - 5 + RENDER_WORDS + 1) * sizeof *x->argv);
@@ -352,7 +360,8 @@ bool shard_read(Grading *g, const char *folder)
         return grade_fail("no shard folder %s", folder);
     if ((r.file = fopen(r.path, "r")) == NULL)
         return grade_fail("no %s: %s is not a folder of grade --shard, or its grading did not "
-                          "finish (its log says why)", r.path, folder);
+                          "finish (its log says why)",
+                          r.path, folder);
     g->out = folder;
     g->work = grade_format("%s/work", real);
     int count = -1;
