@@ -117,6 +117,18 @@ check_refused "no shard folder nowhere" "shard 1" nowhere "shard 3"
 check "no report in a refused merge's new folder" sh -c \
     '! "$0" merge -q --out new "shard 1" "shard 3" 2>/dev/null && test ! -e new/report.html' "$grade"
 
+# A shard.txt damaged: cut anywhere, a word changed, bytes of nothing: refused, never a crash.
+cp -R "mini 1" damaged
+lines=$(wc -l <"mini 1/shard.txt")
+for damage in "head -n 1" "head -n 9" "head -n $((lines - 1))" "head -c 700" \
+    "sed s/^scene.0/scene.99/" "sed s/^sub.=/sub.%%/" "sed s/^shard.1.3/shard.4.3/" "sed s/=ann/-/" \
+    "head -c 300 /dev/urandom"; do
+    $damage "mini 1/shard.txt" >damaged/shard.txt 2>/dev/null
+    "$grade" merge -q --out refused damaged mini-2 "mini 3" 2>stderr.txt
+    check "a shard.txt damaged ($damage): refused" test $? -eq 2
+    check "a shard.txt damaged ($damage): says where" grep -q "damaged/shard.txt" stderr.txt
+done
+
 # A shard's bad K/N, and a shard whose output would be listed by the others as a student.
 for bad in 0/2 3/2 1/0 x 1/2/3; do
     "$grade" -q --shard "$bad" 1.1 class 2>stderr.txt
