@@ -85,26 +85,49 @@ cp merged/report.html before.html
 cp refused/report.html before.html
 check_refused "shard 2 of 3 is missing" "shard 1" "shard 3"
 check_refused "shard 1 of 3 is given twice" "shard 1" "shard 1" "shard 2" "shard 3"
-"$grade" -q --shard 2/2 --out half 1.1 class 2>stderr.txt
-check_refused "half is shard 2 of 2, shard 1 of 3" "shard 1" half "shard 3"
-"$grade" -q --shard 2/3 --out strict --threshold 0.001 1.1 class 2>stderr.txt
-check_refused "other tolerances" "shard 1" strict "shard 3"
+# Shards made otherwise, of a class of images alone (quick): each refused beside the others.
+mkdir mini
+cp -R class/ann class/bea class/dee mini/
+for k in 1 3; do "$grade" -q --shard $k/3 --out "mini $k" 1.1 mini 2>stderr.txt; done
+"$grade" -q --shard 2/3 --out mini-2 1.1 mini 2>stderr.txt
+check "mini: the shards merge" "$grade" merge -q --out mini-merged "mini 1" mini-2 "mini 3"
+"$grade" -q --shard 2/2 --out half 1.1 mini 2>stderr.txt
+check_refused "half is shard 2 of 2, mini 1 of 3" "mini 1" half "mini 3"
+"$grade" -q --shard 2/3 --out strict --threshold 0.001 1.1 mini 2>stderr.txt
+check_refused "other tolerances" "mini 1" strict "mini 3"
 mkdir -p other/1.1-spheres-red
 cp -R "$refs" other/1.1-spheres-red/
 cp "$refs/demo.png" other/1.1-spheres-red/references/spheres-three.png
-"$grade" -q --shard 2/3 --out moved other/1.1-spheres-red class 2>stderr.txt
-check_refused "other references or scenes (render spheres-three.png)" "shard 1" moved "shard 3"
-"$grade" -q --shard 2/3 --out shaded 1.2 class 2>stderr.txt
-check_refused "another part" "shard 1" shaded "shard 3"
-cp -R class smaller
+"$grade" -q --shard 2/3 --out moved other/1.1-spheres-red mini 2>stderr.txt
+check_refused "other references or scenes (render spheres-three.png)" "mini 1" moved "mini 3"
+"$grade" -q --shard 2/3 --out shaded 1.2 mini 2>stderr.txt
+check_refused "another part" "mini 1" shaded "mini 3"
+cp -R mini smaller
 rm -rf smaller/dee
 "$grade" -q --shard 2/3 --out fewer 1.1 smaller 2>stderr.txt
-check_refused "another class folder" "shard 1" fewer "shard 3"
+check_refused "another class folder" "mini 1" fewer "mini 3"
+mv mini mini-moved
+cp -R mini-moved mini
+mkdir mini/abe
+"$grade" -q --shard 2/3 --out grown 1.1 mini 2>stderr.txt
+check_refused "another class: other submissions" "mini 1" grown "mini 3"
 rm "shard 2/shard.txt"
 check_refused "did not finish" "shard 1" "shard 2" "shard 3"
 check_refused "no shard folder nowhere" "shard 1" nowhere "shard 3"
 check "no report in a refused merge's new folder" sh -c \
     '! "$0" merge -q --out new "shard 1" "shard 3" 2>/dev/null && test ! -e new/report.html' "$grade"
+
+# A shard.txt damaged: cut anywhere, a word changed, bytes of nothing: refused, never a crash.
+cp -R "mini 1" damaged
+lines=$(wc -l <"mini 1/shard.txt")
+for damage in "head -n 1" "head -n 9" "head -n $((lines - 1))" "head -c 700" \
+    "sed s/^scene.0/scene.99/" "sed s/^sub.=/sub.%%/" "sed s/^shard.1.3/shard.4.3/" "sed s/=ann/-/" \
+    "head -c 300 /dev/urandom"; do
+    $damage "mini 1/shard.txt" >damaged/shard.txt 2>/dev/null
+    "$grade" merge -q --out refused damaged mini-2 "mini 3" 2>stderr.txt
+    check "a shard.txt damaged ($damage): refused" test $? -eq 2
+    check "a shard.txt damaged ($damage): says where" grep -q "damaged/shard.txt" stderr.txt
+done
 
 # A shard's bad K/N, and a shard whose output would be listed by the others as a student.
 for bad in 0/2 3/2 1/0 x 1/2/3; do

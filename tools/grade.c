@@ -44,16 +44,15 @@ static const GradeOption options[] = {
       "differs by more than T", IMGDIFF_THRESHOLD_TEXT}, OPT_TEXT, offsetof(Grading, threshold)},
     {{"allow", 0, "F", "imgdiff's: an image passes when at most the fraction\n"
       "F of its pixels differ", IMGDIFF_ALLOW_TEXT}, OPT_TEXT, offsetof(Grading, allow)},
-    {{"jobs", 'j', "N", "grade N submissions at a time, each under the limits\n"
-      "above (docs/grading.md: sharing the cores)", "1"}, OPT_COUNT,
-     offsetof(Grading, jobs)},
+    {{"jobs", 'j', "N", "grade N submissions at a time, each under the\n"
+      "limits above (see docs/grading.md)", "1"}, OPT_COUNT, offsetof(Grading, jobs)},
     {{"shard", 0, "K/N", "grade only the K-th of N slices of the class and\n"
       "write its results for grade merge (default --out:\ngrading-PART-shard-K-of-N)", NULL},
      OPT_TEXT, offsetof(Grading, shard)},
     {{"junit", 0, "FILE", "also write the verdicts as JUnit XML: a test case\n"
       "a submission and scene", NULL}, OPT_TEXT, offsetof(Grading, junit)},
-    {{"gradescope", 0, "FILE", "with --self: also write Gradescope's results.json", NULL},
-     OPT_TEXT, offsetof(Grading, gradescope)},
+    {{"gradescope", 0, "FILE", "with --self: also write Gradescope's results.json",
+      NULL}, OPT_TEXT, offsetof(Grading, gradescope)},
     {{"self", 0, NULL, "FOLDER is one student's program (or images): grade\nit alone, "
       "print each scene's verdict and heat map,\nand exit 1 unless every scene passes", NULL},
      OPT_FLAG, offsetof(Grading, self)},

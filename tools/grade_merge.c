@@ -92,7 +92,8 @@ static bool check_shards(Grading *sh, int count, char **folders)
     for (int k = 0; k < n; k++)
         if (seen[k] == 0)
             return grade_fail("shard %d of %d is missing: give every shard's folder (%d of %d "
-                              "given)", k + 1, n, count, n);
+                              "given)",
+                              k + 1, n, count, n);
     return true;
 }
 
@@ -120,8 +121,7 @@ static bool gather(Grading *g, Grading *sh, int count, char **folders)
     }
     for (int k = 0; k < n; k++)
         if (next[k] != of[k]->sub_count)
-            return grade_fail("%s holds more than its slice of the class",
-                              folders[of[k] - sh]);
+            return grade_fail("%s holds more than its slice of the class", folders[of[k] - sh]);
     return true;
 }
 
@@ -132,8 +132,8 @@ static bool lock_shard(const char *folder)
     char *path = grade_format("%s/.grade-lock", folder);
     int fd = open(path, O_RDONLY | O_NOFOLLOW | O_CLOEXEC);
     if (fd >= 0 && flock(fd, LOCK_SH | LOCK_NB) != 0)
-        return grade_fail("%s is still being graded (a grade holds %s): wait for it to end",
-                          folder, path);
+        return grade_fail("%s is still being graded (a grade holds %s): wait for it to end", folder,
+                          path);
     return true; /* the descriptor stays open, the lock held, until the merge ends */
 }
 
@@ -187,9 +187,13 @@ int merge_main(int argc, char **argv)
     g.progress = g.progress != NULL ? g.progress : stderr;
     for (int i = 0; i < count; i++)
         if (realpath(g.out, out_real) != NULL && realpath(folders[i], real) != NULL &&
-            (strcmp(out_real, real) == 0 || strstr(real, grade_format("%s/work/", out_real)) == real))
+            (strcmp(out_real, real) == 0 ||
+             strstr(real, grade_format("%s/work/", out_real)) == real))
             return grade_fail("the output folder %s would replace the work of the shard %s: "
-                              "choose another --out", g.out, folders[i]) ? 0 : 2;
+                              "choose another --out",
+                              g.out, folders[i])
+                       ? 0
+                       : 2;
     run_init();
     ok = grade_prepare_out(&g) && link_work(&g) && report_write(&g) &&
          (g.junit == NULL || export_junit(&g, g.junit));

@@ -20,15 +20,15 @@ bool shard_parse(Grading *g)
     int n = 0;
     if (g->shard == NULL)
         return true;
-    if (sscanf(g->shard, "%d/%d%n", &g->shard_k, &g->shard_n, &n) != 2 ||
-        g->shard[n] != '\0' || g->shard_n < 1 || g->shard_n > 10000 || g->shard_k < 1 ||
-        g->shard_k > g->shard_n)
+    if (sscanf(g->shard, "%d/%d%n", &g->shard_k, &g->shard_n, &n) != 2 || g->shard[n] != '\0' ||
+        g->shard_n < 1 || g->shard_n > 10000 || g->shard_k < 1 || g->shard_k > g->shard_n)
         return grade_fail("--shard takes K/N, the K-th of N slices, 1 <= K <= N <= 10000; got "
-                          "'%s'", g->shard);
+                          "'%s'",
+                          g->shard);
     if (g->self || g->junit != NULL || g->gradescope != NULL)
-        return grade_fail("--shard cannot go with %s: %s", g->self ? "--self" : "--junit or "
-                          "--gradescope", g->self ? "a shard is a slice of a class"
-                          : "give it to grade merge, which writes the whole class's verdicts");
+        return g->self ? grade_fail("--shard cannot go with --self: a shard is a slice of a class")
+                       : grade_fail("--shard cannot go with --junit or --gradescope: give "
+                                    "--junit to grade merge, which writes the class's verdicts");
     if (g->out == NULL)
         g->out = grade_format("grading-%s-shard-%d-of-%d", g->part, g->shard_k, g->shard_n);
     return true;
@@ -91,8 +91,8 @@ void shard_put_submission(FILE *f, const Grading *g, const Submission *s)
         shard_put_text(f, r->log_tail);
         shard_put_text(f, r->command);
         fprintf(f, " %a %a %a %a %a %a %a %a %ld %ld %d %d %d %d %a\n", x->threshold, x->allow,
-                x->max[0], x->max[1], x->max[2], x->mean, x->rmse, x->psnr, x->differing,
-                x->pixels, x->box[0], x->box[1], x->box[2], x->box[3], x->heat_scale);
+                x->max[0], x->max[1], x->max[2], x->mean, x->rmse, x->psnr, x->differing, x->pixels,
+                x->box[0], x->box[1], x->box[2], x->box[3], x->heat_scale);
     }
 }
 
@@ -148,6 +148,14 @@ static char *get_text(Reader *r, int k)
     return out;
 }
 
+/* Returns word k of the line as text that must be there; marks r bad when it is not. */
+static char *get_word(Reader *r, int k)
+{
+    char *text = get_text(r, k);
+    r->bad |= text == NULL;
+    return text != NULL ? text : "";
+}
+
 /* Returns word k of the line as a number; marks r bad when it is not one. */
 static double get_number(Reader *r, int k)
 {
@@ -172,9 +180,12 @@ static bool get_submission(Reader *r, const Grading *g, Submission *s, const cha
 {
     if (!line_is(r, "sub", 7))
         return grade_fail("%s:%d: expected a submission", r->path, r->line);
-    *s = (Submission){.work = get_path(r, 1, work_name), .name = get_text(r, 2),
-                      .path = get_text(r, 3), .program = get_number(r, 4) != 0,
-                      .link = get_text(r, 5), .build_message = get_text(r, 6),
+    *s = (Submission){.work = get_path(r, 1, work_name),
+                      .name = get_word(r, 2),
+                      .path = get_word(r, 3),
+                      .program = get_number(r, 4) != 0,
+                      .link = get_text(r, 5),
+                      .build_message = get_text(r, 6),
                       .build_log_tail = get_text(r, 7)};
     s->results = grade_alloc((size_t)g->render_count * sizeof *s->results);
     for (int k = 0; k < g->render_count && !r->bad; k++) {
@@ -183,11 +194,9 @@ static bool get_submission(Reader *r, const Grading *g, Submission *s, const cha
         if (!next_line(r) || !line_is(r, "scene", 26))
             return grade_fail("%s:%d: expected scene %d of %s", r->path, r->line, k + 1, s->name);
         double v = get_number(r, 1);
-        r->bad |= !(v >= 0 && v < VERDICT_COUNT) || s->work == NULL || s->name == NULL;
+        r->bad |= !(v >= 0 && v < VERDICT_COUNT) || s->work == NULL;
         x->verdict = r->bad ? VERDICT_ERROR : (Verdict)v;
-        const char *message = get_text(r, 2);
-        r->bad |= message == NULL;
-        snprintf(x->message, sizeof x->message, "%s", r->bad ? "" : message);
+        snprintf(x->message, sizeof x->message, "%s", get_word(r, 2));
         x->compared = get_number(r, 3) != 0;
         x->identical = get_number(r, 4) != 0;
         x->copy = get_number(r, 5) != 0;
@@ -197,8 +206,8 @@ static bool get_submission(Reader *r, const Grading *g, Submission *s, const cha
         x->heat_show = get_path(r, 9, work);
         x->log_tail = get_text(r, 10);
         x->command = get_text(r, 11);
-        double *numbers[] = {&f->threshold, &f->allow, f->max, f->max + 1, f->max + 2,
-                             &f->mean, &f->rmse, &f->psnr};
+        double *numbers[] = {&f->threshold, &f->allow, f->max,   f->max + 1,
+                             f->max + 2,    &f->mean,  &f->rmse, &f->psnr};
         for (int n = 0; n < 8; n++)
             *numbers[n] = get_number(r, 12 + n);
         f->differing = (long)get_number(r, 20);
@@ -308,11 +317,11 @@ static bool get_heading(Reader *r, Grading *g, const char *work)
     for (int line = 0; (members < 0 || line < 7 + renders + members) && next_line(r); line++) {
         heading = grade_format("%s%s", heading, r->raw);
         if (line == 0 && line_is(r, "part", 1))
-            g->part = get_text(r, 1);
+            g->part = get_word(r, 1);
         else if (line == 1 && line_is(r, "submissions", 1))
-            g->submissions = get_text(r, 1);
+            g->submissions = get_word(r, 1);
         else if (line == 2 && line_is(r, "tolerances", 2))
-            g->threshold = get_text(r, 1), g->allow = get_text(r, 2);
+            g->threshold = get_word(r, 1), g->allow = get_word(r, 2);
         else if (line == 3 && line_is(r, "limits", 3))
             g->time_limit = get_number(r, 1), g->build_time_limit = get_number(r, 2),
             g->memory_limit = (long long)get_number(r, 3);
@@ -321,18 +330,19 @@ static bool get_heading(Reader *r, Grading *g, const char *work)
         else if (line == 5 && line_is(r, "renders", 1) && (renders = (int)get_number(r, 1)) > 0 &&
                  renders < 100000)
             g->renders = grade_alloc((size_t)renders * sizeof *g->renders);
-        else if (line > 5 && line <= 5 + renders && r->count >= 5 && line_is(r, "render", r->count - 1)) {
+        else if (line > 5 && line <= 5 + renders && r->count >= 5 &&
+                 line_is(r, "render", r->count - 1)) {
             Render *x = &g->renders[g->render_count++];
-            *x = (Render){.image = get_text(r, 1), .name = get_text(r, 2), .scene = get_text(r, 3)};
+            *x = (Render){.image = get_word(r, 1), .name = get_word(r, 2), .scene = get_word(r, 3)};
             x->argv = grade_alloc((size_t)(r->count - 5 + RENDER_WORDS + 1) * sizeof *x->argv);
             for (int k = 5; k < r->count; k++)
-                x->argv[RENDER_WORDS + k - 5] = get_text(r, k);
+                x->argv[RENDER_WORDS + k - 5] = get_word(r, k);
             x->reference_show = grade_format("%s/references/%s.png", work, x->name);
         } else if (line == 6 + renders && line_is(r, "class", 1) &&
                    (members = (int)get_number(r, 1)) >= 0 && members < 1000000)
             g->members = grade_alloc(((size_t)members + 1) * sizeof *g->members);
         else if (line > 6 + renders && line <= 6 + renders + members && line_is(r, "member", 1))
-            g->members[g->member_count++] = get_text(r, 1);
+            g->members[g->member_count++] = get_word(r, 1);
         else
             r->bad = true;
         if (r->bad)
@@ -352,7 +362,8 @@ bool shard_read(Grading *g, const char *folder)
         return grade_fail("no shard folder %s", folder);
     if ((r.file = fopen(r.path, "r")) == NULL)
         return grade_fail("no %s: %s is not a folder of grade --shard, or its grading did not "
-                          "finish (its log says why)", r.path, folder);
+                          "finish (its log says why)",
+                          r.path, folder);
     g->out = folder;
     g->work = grade_format("%s/work", real);
     int count = -1;
@@ -361,8 +372,9 @@ bool shard_read(Grading *g, const char *folder)
     ok = ok && get_heading(&r, g, g->work) && next_line(&r) && line_is(&r, "shard", 2);
     g->shard_k = ok ? (int)get_number(&r, 1) : 0;
     g->shard_n = ok ? (int)get_number(&r, 2) : 0;
-    ok = ok && next_line(&r) && line_is(&r, "started", 1) &&
-         snprintf(g->started, sizeof g->started, "%s", get_text(&r, 1)) >= 0 && next_line(&r) &&
+    ok = ok && g->shard_n >= 1 && g->shard_n <= 10000 && g->shard_k >= 1 &&
+         g->shard_k <= g->shard_n && next_line(&r) && line_is(&r, "started", 1) &&
+         snprintf(g->started, sizeof g->started, "%s", get_word(&r, 1)) >= 0 && next_line(&r) &&
          line_is(&r, "submissions", 1) && (count = (int)get_number(&r, 1)) >= 0 &&
          count <= g->member_count && !r.bad;
     g->subs = grade_alloc(((size_t)count + 1) * sizeof *g->subs);
