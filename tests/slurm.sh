@@ -359,12 +359,12 @@ if ! sh "$top/tests/same-grades.sh" "$tmp/local" "$out" >same.txt 2>&1; then
     sed 's/^/    | /' same.txt | head -n 20
 fi
 
-# A shard that fails: its folder taken by a file while the jobs wait in a partition that
-# is down. The merge must refuse, say why, and write nothing; graded again by hand and
+# A shard that fails (of a grading with --jobs 2): its folder taken by a file while the
+# jobs wait in a partition that is down. The merge must refuse, say why, and write nothing; graded again by hand and
 # merged again, as the merge's log says, the shard gives the report.
 broken="$tmp/broken"
 scontrol update PartitionName=debug State=DOWN
-"$grade_slurm" --quiet --shards 3 --time-limit 20 1.1 "$class" "$broken" >broken.txt 2>&1 ||
+"$grade_slurm" --quiet --jobs 2 --shards 3 --time-limit 20 1.1 "$class" "$broken" >broken.txt 2>&1 ||
     { fail "grade-slurm (the broken shard) exited with $?"; sed 's/^/    | /' broken.txt; }
 : >"$broken/shards/2"
 scontrol update PartitionName=debug State=UP
@@ -378,6 +378,7 @@ check "a failed shard: the merge's log says why" grep -qF "grade: no shard folde
     "$broken/slurm/merge.log"
 check "a failed shard: the merge's log says what to do" grep -q "sbatch --array=K shard.sh" \
     "$broken/slurm/merge.log"
+check "--jobs 2: 2 CPUs a shard" grep -qx '#SBATCH --cpus-per-task="2"' "$broken/slurm/shard.sh"
 rm "$broken/shards/2"
 again=$(cd "$broken/slurm" && sbatch --parsable --array=2 shard.sh)
 merge_job=$(cd "$broken/slurm" && sbatch --parsable --dependency="afterany:$again" merge.sh)
