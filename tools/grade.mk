@@ -31,6 +31,7 @@ grade-test: $(GRADE) $(IMGDIFF)
 	    $(SUBMAKE) -C $$(dirname $$part) SANITIZE=0 || exit 1; done
 	@sh $(TOP)/tests/grade.sh $(GRADE) $(GRADE_PART)/raytra
 	@sh $(TOP)/tests/grade-report.sh $(GRADE) $(GRADE_PART)/raytra
+	@sh $(TOP)/tests/junit.sh $(GRADE)
 
 # The report's picture in docs/grading.md: a made-up class's report, checked in Chromium,
 # then photographed by it.

@@ -332,7 +332,8 @@ static void write_csv(FILE *f, const Grading *g)
 /* Writes the file at path with write, through a temporary renamed onto it so that it
  * appears only complete (outfile_commit fails on a write error too); false (reported) on
  * any failure. */
-static bool write_whole(const char *path, const Grading *g, void (*write)(FILE *, const Grading *))
+bool report_write_whole(const char *path, const Grading *g,
+                        void (*write)(FILE *, const Grading *))
 {
     OutFile out;
     Error err;
@@ -347,7 +348,7 @@ bool report_write(const Grading *g)
 {
     char *table = grade_format("%s/grades.csv", g->out);
     char *page = grade_format("%s/report.html", g->out);
-    if (!write_whole(table, g, write_csv) || !write_whole(page, g, write_html))
+    if (!report_write_whole(table, g, write_csv) || !report_write_whole(page, g, write_html))
         return false;
     fprintf(g->progress, "grade: wrote %s and %s\n", page, table);
     return true;
