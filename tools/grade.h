@@ -171,8 +171,7 @@ bool export_gradescope(const Grading *g, const char *path);
 
 /* grade_report.c */
 bool report_write(const Grading *g);
-bool report_write_whole(const char *path, const Grading *g,
-                        void (*write)(FILE *, const Grading *));
+bool report_write_whole(const char *path, const Grading *g, void (*write)(FILE *, const Grading *));
 int report_print_self(const Grading *g);
 
 #endif

@@ -271,10 +271,10 @@ static char *summary(const Grading *g, const Submission *s)
     return grade_format(
         "%s%sEach test is a scene: %s compared with the reference. A pixel differs when one of "
         "its channels differs by more than %s; an image passes when at most the fraction %s "
-        "of its pixels differ. Limits: %g s a scene, %g s to build, %s of memory.\n",
+        "of its pixels differ. Limits: %g s a scene, %g s to build, %s of address space.\n",
         head, s->program ? "Your folder was copied and built with make. " : "",
-        s->program ? "raytra rendered it as the test's command shows (here with absolute "
-                     "paths), and its image was"
+        s->program ? "raytra rendered it as the test's command shows (given absolute "
+                     "paths here), and its image was"
                    : "the image of its name in your folder was",
         g->threshold, g->allow, g->time_limit, g->build_time_limit,
         grade_size_text(g->memory_limit));

@@ -332,8 +332,7 @@ static void write_csv(FILE *f, const Grading *g)
 /* Writes the file at path with write, through a temporary renamed onto it so that it
  * appears only complete (outfile_commit fails on a write error too); false (reported) on
  * any failure. */
-bool report_write_whole(const char *path, const Grading *g,
-                        void (*write)(FILE *, const Grading *))
+bool report_write_whole(const char *path, const Grading *g, void (*write)(FILE *, const Grading *))
 {
     OutFile out;
     Error err;
