@@ -1,5 +1,5 @@
 #!/bin/sh
-# gradescope.sh: tests part 1.3's Gradescope autograder, unpacked and run as Gradescope runs it, field by field.
+# gradescope.sh: tests part 1.3's Gradescope autograder, run as Gradescope runs it, field by field.
 #
 # Usage: tests/gradescope.sh   (make check-gradescope; needs zip, unzip and jq, which
 #        tools/deps.sh gradescope-test installs)
@@ -8,10 +8,11 @@
 # scripts at its root, tracked files only, no part's model answer, no build output) and
 # unpacked into ROOT/source; setup.sh --build-only builds the grader there (installing
 # nothing when nothing is missing); then run_autograder runs with AUTOGRADER_ROOT=ROOT on
-# five submissions: part 1.3's starter with the solutions written back (correct), the same
-# with a sign flipped in secondary_reflect (buggy: the three scenes with mirrors fail), an
-# empty folder, a program that prints bytes JSON cannot hold as they are and crashes
-# (hostile), and the correct one with a time budget of 5 s (cut short). Each results.json is
+# seven submissions: part 1.3's starter with the solutions written back (correct), the
+# same with a sign flipped in secondary_reflect (buggy: the three scenes with mirrors
+# fail), an empty folder, a folder whose make fails, none at all, a program that prints
+# bytes JSON cannot hold as they are and crashes (hostile), and the correct one with a
+# time budget of 5 s (cut short). Each results.json is
 # parsed with jq and checked as UTF-8 with iconv, then field by field. Run as root, the
 # submissions run as nobody (as no raytra-student user is made here), which is checked;
 # otherwise as the current user, which the test says. The correct submission's grading
@@ -101,14 +102,17 @@ check_results() {
     check "the score is $(field .score), not $score" test "$(field .score)" = "$score"
     check "the score is not the sum of the tests' scores" \
         test "$(field '[.tests[].score] | add')" = "$score"
-    expected=$(awk '$1 !~ /^[#!]/ && NF >= 2 { n = $1; sub(/\.[a-z]+$/, "", n); print n " (" $2 ")" }' \
+    expected=$(awk '$1 !~ /^[#!]/ && NF >= 2 {
+        n = $1; sub(/\.[a-z]+$/, "", n); print n " (" $2 ")" }' \
         "$root/source/milestones/$part/references/renders.txt" | jq -R -s -c 'split("\n")[:-1]')
     check "the tests are $(field '[.tests[].name]'), not $expected" \
         test "$(field '[.tests[].name]')" = "$expected"
     check "a test's max_score is not 1, or its score not 0 or 1" \
-        test "$(field '[.tests[] | select(.max_score != 1 or (.score != 0 and .score != 1))] | length')" = 0
+        test "$(field '[.tests[] | select(.max_score != 1 or (.score != 0 and .score != 1))] |
+        length')" = 0
     check "a test's status does not match its score" test "$(field '[.tests[] |
-        select((.score == 1) != (.status == "passed") or (.status != "passed" and .status != "failed"))] |
+        select((.score == 1) != (.status == "passed") or
+            (.status != "passed" and .status != "failed"))] |
         length')" = 0
     check "a test or the whole is not visible" \
         test "$(field '[.visibility, .tests[].visibility] | unique')" = '["visible"]'
@@ -127,13 +131,16 @@ check_results() {
 }
 
 correct=$tmp/correct buggy=$tmp/buggy hostile=$tmp/hostile
+every="progression-1-diffuse progression-2-specular progression-3-ambient progression-4-mirror"
+every="$every shadow-sphere acne-grazing mirrors-facing demo"
 "$top/tools/starter.sh" --solution 1.3 "$correct" >/dev/null || exit 2
 cp -R "$correct" "$buggy"
 sed -i 's/add_scaled(d, n, -2 \* vec3_dot(d, n))/add_scaled(d, n, 2 * vec3_dot(d, n))/' \
     "$buggy/milestones/$part/secondary.c"
 check "the buggy copy has no flipped sign" \
     grep -q 'add_scaled(d, n, 2 \* vec3_dot' "$buggy/milestones/$part/secondary.c"
-mkdir "$tmp/empty" "$hostile"
+mkdir "$tmp/empty" "$hostile" "$tmp/unbuilt"
+printf 'raytra:\n\t@echo "main.c:1: error: no main" >&2; false\n' >"$tmp/unbuilt/Makefile"
 printf 'raytra: raytra.sh\n\tcp raytra.sh raytra\n\tchmod +x raytra\n' >"$hostile/Makefile"
 cat >"$hostile/raytra.sh" <<'EOF'
 #!/bin/sh
@@ -146,10 +153,12 @@ start=$(date +%s)
 autograde "$correct"
 seconds=$(($(date +%s) - start))
 check_results 8 "" ""
-check "the summary does not say 8 of 8" test "$(field '.output | startswith("Part 1.3-shadows-mirror: 8 of 8 scenes pass.")')" = true
-check "a correct scene is not identical" test "$(field '[.tests[].output | startswith("PASS: identical to the reference.")] | all')" = true
-echo "gradescope.sh: the correct submission took $seconds s to grade (budget: $(sed -n 's/^BUDGET=//p' \
-    "$root/source/gradescope.conf") s)"
+check "the summary does not say 8 of 8" test "$(field '.output |
+    startswith("Part 1.3-shadows-mirror: 8 of 8 scenes pass.")')" = true
+check "a correct scene is not identical" test "$(field '[.tests[].output |
+    startswith("PASS: identical to the reference.")] | all')" = true
+budget=$(sed -n 's/^BUDGET=//p' "$root/source/gradescope.conf")
+echo "gradescope.sh: the correct submission took $seconds s to grade (budget: $budget s)"
 
 echo "== buggy: a sign flipped in secondary_reflect"
 autograde "$buggy"
@@ -157,13 +166,21 @@ check_results 5 "progression-4-mirror mirrors-facing demo" FAIL
 check "a failure says no box, what to do or the command" test "$(field '[.tests[] |
     select(.status == "failed") | .output | test("in the box \\(\\d+,\\d+\\)-\\(\\d+,\\d+\\)") and
     test("\nWhat to do: .*out/check/[a-z0-9-]+\\.heat\\.png") and
-    test("\nCommand \\(from the top of the folder\\): ./raytra scenes/[a-z0-9-]+\\.scn [a-z0-9-]+\\.png\n")] | all')" = true
+    test("\nCommand \\(from the top of the folder\\): ./raytra scenes/[a-z0-9-]+\\.scn " +
+        "[a-z0-9-]+\\.png\n")] | all')" = true
 
 echo "== empty"
 autograde "$tmp/empty"
-check_results 0 "progression-1-diffuse progression-2-specular progression-3-ambient progression-4-mirror shadow-sphere acne-grazing mirrors-facing demo" MISSING
+check_results 0 "$every" MISSING
 check "the summary does not say the folder has no Makefile" \
     test "$(field '.output | test("no Makefile at its top")')" = true
+
+echo "== unbuilt: make fails"
+autograde "$tmp/unbuilt"
+check_results 0 "$every" "BUILD FAILED"
+check "the summary does not say that the build failed, with make's output" test "$(field '.output |
+    test("The build failed: make failed ") and
+    test("\nThe end of make.s output:\n(.*\n)*main.c:1: error: no main")')" = true
 
 echo "== no submission folder at all"
 autograde ""
@@ -171,7 +188,7 @@ check "no folder: the score is not 0" test "$(field .score)" = 0
 
 echo "== hostile: prints control characters and invalid UTF-8, then crashes"
 autograde "$hostile"
-check_results 0 "progression-1-diffuse progression-2-specular progression-3-ambient progression-4-mirror shadow-sphere acne-grazing mirrors-facing demo" CRASHED
+check_results 0 "$every" CRASHED
 check "the bytes are not escaped as \\u0001, \\u001b and \\ufffd" \
     grep -q 'bytes \\u0001\\u001b\[31m\\ufffd \\"q\\" \\\\ ]]>' "$root/results/results.json"
 check "a crash does not show the program's output" test "$(field '[.tests[].output |

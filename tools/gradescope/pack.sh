@@ -1,5 +1,5 @@
 #!/bin/sh
-# pack.sh: writes a part's Gradescope autograder, a zip with setup.sh and run_autograder at its root.
+# pack.sh: writes a part's Gradescope autograder: a zip, setup.sh and run_autograder at its root.
 #
 # Usage: tools/gradescope/pack.sh PART [ZIP]   (make gradescope PART=1.3 [OUT=ZIP])
 #   PART  one part: 1.3, 1.3-shadows-mirror or milestones/1.3-shadows-mirror
@@ -34,7 +34,8 @@ case $part in
 *-*) ;;
 *) part=$(cd "$top/milestones" && for d in "$part"-*; do [ -d "$d" ] && echo "$d"; done) ;;
 esac
-[ -n "$part" ] && [ "$(echo "$part" | wc -l)" -eq 1 ] && [ -f "$top/milestones/$part/references/renders.txt" ] ||
+[ -n "$part" ] && [ "$(echo "$part" | wc -l)" -eq 1 ] &&
+    [ -f "$top/milestones/$part/references/renders.txt" ] ||
     die "no part '$1' with references in $top/milestones"
 zip=${2:-$top/out/gradescope-$part.zip}
 case $zip in /*) ;; *) zip=$(pwd)/$zip ;; esac
@@ -63,8 +64,8 @@ cp "$top/tools/gradescope/setup.sh" "$top/tools/gradescope/run_autograder" "$sta
     echo "BUDGET=$budget"
     echo "BUILD_TIME_LIMIT=$build_limit"
 } >"$stage/root/gradescope.conf"
-chmod -R u+rwX,go-w,a+rX "$stage/root" && chmod a+x "$stage/root/setup.sh" "$stage/root/run_autograder" ||
-    exit 2
+chmod -R u+rwX,go-w,a+rX "$stage/root" &&
+    chmod a+x "$stage/root/setup.sh" "$stage/root/run_autograder" || exit 2
 
 mkdir -p "$(dirname "$zip")" || exit 2
 rm -f "$stage/out.zip"

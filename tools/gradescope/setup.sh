@@ -1,5 +1,5 @@
 #!/bin/sh
-# setup.sh: Gradescope's setup of raytra's autograder: installs what is missing, builds the grader, makes its user.
+# setup.sh: sets up raytra's Gradescope autograder: the packages missing, the grader, its user.
 #
 # Usage: setup.sh [--build-only]
 # Gradescope runs it once, as root, when it builds the autograder's image, from the zip
