@@ -118,8 +118,8 @@ static char *student_command(const Render *r)
     return run_command_line(argv, NULL);
 }
 
-/* Returns what a student does about the verdict of scene k: a sentence or two, concrete,
- * naming the file or the command to look at; "" for a pass. */
+/* Returns what a student does about a scene's verdict: a sentence or two, concrete, naming
+ * the file or the command to look at; "" for a pass. */
 static char *advice(const Grading *g, const Render *r, const SceneResult *res)
 {
     switch (res->verdict) {
@@ -174,12 +174,15 @@ static char *scene_text(const Grading *g, const Submission *s, int k, bool build
     const char *todo = advice(g, r, res);
     bool ran = res->command != NULL;
     bool show_log = ran && verdict_info[res->verdict].tally >= TALLY_MISSING;
+    /* The command that renders the scene, for a scene run or an image to make again. */
+    bool command = ran || (res->verdict != VERDICT_PASS && res->verdict != VERDICT_BUILD_FAILED);
     build = build && s->build_message != NULL && s->build_log_tail != NULL;
     return grade_format(
         "%s: %s.\n%s%s%s%s%s%s%s%s%s%s", verdict_info[res->verdict].name, res->message,
         figures_text(res), res->seconds > 0 ? grade_format("It ran %.2f s.\n", res->seconds) : "",
         todo[0] != '\0' ? grade_format("What to do: %s\n", todo) : "",
-        ran ? grade_format("Command (from the top of the folder): %s\n", student_command(r)) : "",
+        command ? grade_format("Command (from the top of the folder): %s\n", student_command(r))
+                : "",
         show_log ? "The program's last output:\n" : "",
         show_log ? (res->log_tail != NULL ? res->log_tail : "(nothing)") : "", show_log ? "\n" : "",
         build ? "The end of make's output:\n" : "", build ? s->build_log_tail : "",
