@@ -16,6 +16,10 @@
 #   make check-statistics  part 1.6's grading by statistics: raytra with 20 seeds passes,
 #                    right and wrong solutions pass and fail (tests/mc-variants, a few minutes)
 #   make statistics-figure  draw the z-score heat maps docs/grading.md shows
+#   make gradescope PART=1.3 [OUT=file.zip]  write the part's Gradescope autograder, by
+#                    default out/gradescope-<part>.zip (docs/grading.md, section 7)
+#   make check-gradescope  that autograder, unpacked and run on a correct, a buggy and an
+#                    empty submission of part 1.3 (a few minutes)
 #
 # WERROR=1 turns warnings into errors; SANITIZE=1 builds and tests everything
 # with AddressSanitizer and UndefinedBehaviorSanitizer.
@@ -36,7 +40,7 @@ FUZZ_SECONDS ?= 1800
 .PHONY: all test demo check-demo check-chromium references docs check-docs check-slides check-figures check-layout check-course clean \
         check-robust check-fuzz-regressions check-bad-input check-interrupt check-nonfinite \
         check-course-render valgrind fuzz fuzz-run bench mistakes starter check-starter check-starters \
-        check-exercises check-statistics statistics-figure
+        check-exercises check-statistics statistics-figure gradescope check-gradescope
 .NOTPARALLEL:
 
 all:
@@ -192,6 +196,21 @@ check-statistics:
 	@$(SUBMAKE) -C tests/mc-variants
 	@tests/mc-variants/run.sh $(call program,1.6-monte-carlo) tests/mc-variants/$(BUILD) \
 	    $(IMGDIFF) $(MC_PART)/references
+
+# A part's Gradescope autograder: a zip with setup.sh and run_autograder at its root.
+# PART is one word, as for a starter; OUT is quoted.
+gradescope:
+	@if [ -z "$(PART)" ]; then echo "usage: make gradescope PART=1.3 [OUT=file.zip]" >&2; exit 2; fi
+	@if [ $(words $(PART)) -ne 1 ]; then echo "make gradescope: PART is one part (PART=1.3)," \
+	    "got '$(PART)'" >&2; exit 2; fi
+	@tools/deps.sh gradescope
+	@tools/gradescope/pack.sh '$(PART)' $(if $(OUT),'$(subst ','\'',$(OUT))')
+
+# The autograder of part 1.3 unpacked, set up and run as Gradescope would, on a correct, a
+# buggy, an empty and a hostile submission (tests/gradescope.sh); not part of make test.
+check-gradescope:
+	@tools/deps.sh gradescope-test
+	@tests/gradescope.sh
 
 # The figures of the statistical grading (docs/grading.md, chapter 1.6): z-score heat maps.
 statistics-figure:
