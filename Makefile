@@ -18,6 +18,10 @@
 #   make statistics-figure  draw the z-score heat maps docs/grading.md shows
 #   make check-slurm  grade a made-up class through tools/slurm/grade-slurm on a Slurm cluster
 #                    of one node it starts (as root; installs slurm-wlm and munge, or skips)
+#   make gradescope PART=1.3 [OUT=file.zip]  write the part's Gradescope autograder, by
+#                    default out/gradescope-<part>.zip (docs/grading.md, section 7)
+#   make check-gradescope  that autograder, unpacked and run on a correct, a buggy and an
+#                    empty submission of part 1.3 (a few minutes)
 #
 # WERROR=1 turns warnings into errors; SANITIZE=1 builds and tests everything
 # with AddressSanitizer and UndefinedBehaviorSanitizer.
@@ -38,7 +42,7 @@ FUZZ_SECONDS ?= 1800
 .PHONY: all test demo check-demo check-chromium references docs check-docs check-slides check-figures check-layout check-course clean \
         check-robust check-fuzz-regressions check-bad-input check-interrupt check-nonfinite \
         check-course-render valgrind fuzz fuzz-run bench mistakes starter check-starter check-starters \
-        check-exercises check-statistics statistics-figure check-slurm
+        check-exercises check-statistics statistics-figure gradescope check-gradescope check-slurm
 .NOTPARALLEL:
 
 all:
@@ -202,6 +206,21 @@ check-slurm:
 	@$(SUBMAKE) -C tools grade SANITIZE=0
 	@$(SUBMAKE) -C milestones/1.1-spheres-red SANITIZE=0
 	@tests/slurm.sh milestones/1.1-spheres-red/raytra
+
+# A part's Gradescope autograder: a zip with setup.sh and run_autograder at its root.
+# PART is one word, as for a starter; OUT is quoted.
+gradescope:
+	@if [ -z "$(PART)" ]; then echo "usage: make gradescope PART=1.3 [OUT=file.zip]" >&2; exit 2; fi
+	@if [ $(words $(PART)) -ne 1 ]; then echo "make gradescope: PART is one part (PART=1.3)," \
+	    "got '$(PART)'" >&2; exit 2; fi
+	@tools/deps.sh gradescope
+	@tools/gradescope/pack.sh '$(PART)' $(if $(OUT),'$(subst ','\'',$(OUT))')
+
+# The autograder of part 1.3 unpacked, set up and run as Gradescope would, on a correct, a
+# buggy, an empty and a hostile submission (tests/gradescope.sh); not part of make test.
+check-gradescope:
+	@tools/deps.sh gradescope-test
+	@tests/gradescope.sh
 
 # The figures of the statistical grading (docs/grading.md, chapter 1.6): z-score heat maps.
 statistics-figure:

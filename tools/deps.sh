@@ -1,7 +1,7 @@
 #!/bin/sh
 # deps.sh: makes sure the packages raytra builds with are installed.
 #
-# Usage: tools/deps.sh [build|test|bench|chromium]
+# Usage: tools/deps.sh [build|test|bench|gradescope|gradescope-test|chromium]
 #   build  needs a C compiler, make, pkg-config, and the headers of libpng and of
 #          OpenEXR 3 (its C API, openexr.h);
 #   test   needs, in addition, the Check unit-test framework, a C++ compiler (for
@@ -9,6 +9,9 @@
 #          API), and Chromium, in which tests/grade-report.sh opens the grading report
 #          (headless);
 #   bench  needs, in addition to build, Embree 3 for the benchmark's baseline;
+#   gradescope  needs, in addition to build, zip, to pack a Gradescope autograder;
+#   gradescope-test  needs, in addition, unzip and jq, with which tests/gradescope.sh
+#          unpacks the autograder and reads the results.json it writes;
 #   chromium  prints the path of the Chromium to run and installs nothing: $CHROMIUM
 #          when set (a path, or a name on PATH), else the first of chromium,
 #          chromium-browser, google-chrome and google-chrome-stable on PATH; fails when
@@ -43,6 +46,15 @@ need_embree=no
 [ "${1:-build}" = bench ] && need_embree=yes
 
 missing=""
+# The Gradescope autograder's tools, as COMMAND:PACKAGE.
+case ${1:-build} in
+gradescope) tools="zip:zip" ;;
+gradescope-test) tools="zip:zip unzip:unzip jq:jq" ;;
+*) tools="" ;;
+esac
+for tool in $tools; do
+    command -v "${tool%%:*}" >/dev/null 2>&1 || missing="$missing ${tool#*:}"
+done
 command -v cc >/dev/null 2>&1 || missing="$missing gcc"
 command -v pkg-config >/dev/null 2>&1 || missing="$missing pkg-config"
 if ! pkg-config --exists libpng 2>/dev/null && [ ! -f /usr/include/png.h ]; then

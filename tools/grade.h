@@ -183,7 +183,9 @@ bool export_junit(const Grading *g, const char *path);
 bool export_gradescope(const Grading *g, const char *path);
 
 /* grade_report.c */
+char *report_command(const Submission *s, const SceneResult *res);
 bool report_write(const Grading *g);
+bool report_write_whole(const char *path, const Grading *g, void (*write)(FILE *, const Grading *));
 int report_print_self(const Grading *g);
 
 #endif

@@ -32,6 +32,7 @@ grade-test: $(GRADE) $(IMGDIFF)
 	@sh $(TOP)/tests/grade.sh $(GRADE) $(GRADE_PART)/raytra
 	@sh $(TOP)/tests/grade-report.sh $(GRADE) $(GRADE_PART)/raytra
 	@sh $(TOP)/tests/grade-class.sh $(GRADE) $(GRADE_PART)/raytra
+	@sh $(TOP)/tests/junit.sh $(GRADE)
 
 # The report's picture in docs/grading.md: a made-up class's report, checked in Chromium,
 # then photographed by it.

@@ -224,6 +224,14 @@ static void write_pictures(FILE *f, const SceneResult *res, int k)
     fputs("</div>\n", f);
 }
 
+/* Returns the command line a scene was run with, from the report's folder: "cd
+ * work/03-alice/run && ../build/raytra SCENE ../images/IMAGE". */
+char *report_command(const Submission *s, const SceneResult *res)
+{
+    char *run = grade_format("work/%s/run", strrchr(s->work, '/') + 1);
+    return grade_format("cd %s && %s", run_quote(run), res->command);
+}
+
 /* Writes a block of a program's output, or nothing when there is none. */
 static void write_log(FILE *f, const char *title, const char *log, bool open)
 {
@@ -269,9 +277,8 @@ static void write_html(FILE *f, const Grading *g)
             fputs("</code></p>\n", f);
             /* What was run, where (from the report's folder), to run it again by hand. */
             if (res->command != NULL)
-                fprintf(f, "<p class=\"file\">Command <code>cd %s &amp;&amp; %s</code></p>\n",
-                        html(run_quote(grade_format("work/%s/run", strrchr(s->work, '/') + 1))),
-                        html(res->command));
+                fprintf(f, "<p class=\"file\">Command <code>%s</code></p>\n",
+                        html(report_command(s, res)));
             if (res->compared || res->relative_width > 0)
                 write_pictures(f, res, k);
             write_log(f, "Program output (the last lines)",
@@ -334,7 +341,7 @@ static void write_csv(FILE *f, const Grading *g)
 /* Writes the file at path with write, through a temporary renamed onto it so that it
  * appears only complete (outfile_commit fails on a write error too); false (reported) on
  * any failure. */
-static bool write_whole(const char *path, const Grading *g, void (*write)(FILE *, const Grading *))
+bool report_write_whole(const char *path, const Grading *g, void (*write)(FILE *, const Grading *))
 {
     OutFile out;
     Error err;
@@ -349,7 +356,7 @@ bool report_write(const Grading *g)
 {
     char *table = grade_format("%s/grades.csv", g->out);
     char *page = grade_format("%s/report.html", g->out);
-    if (!write_whole(table, g, write_csv) || !write_whole(page, g, write_html))
+    if (!report_write_whole(table, g, write_csv) || !report_write_whole(page, g, write_html))
         return false;
     fprintf(g->progress, "grade: wrote %s and %s\n", page, table);
     return true;

@@ -1,0 +1,213 @@
+#!/bin/sh
+# gradescope.sh: tests part 1.3's Gradescope autograder, run as Gradescope runs it, field by field.
+#
+# Usage: tests/gradescope.sh   (make check-gradescope; needs zip, unzip and jq, which
+#        tools/deps.sh gradescope-test installs)
+#
+# In a temporary folder: `make gradescope PART=1.3` writes the zip, which is checked (the
+# scripts at its root, tracked files only, no part's model answer, no build output) and
+# unpacked into ROOT/source; setup.sh --build-only builds the grader there (installing
+# nothing when nothing is missing); then run_autograder runs with AUTOGRADER_ROOT=ROOT on
+# seven submissions: part 1.3's starter with the solutions written back (correct), the
+# same with a sign flipped in secondary_reflect (buggy: the three scenes with mirrors
+# fail), an empty folder, a folder whose make fails, none at all, a program that prints
+# bytes JSON cannot hold as they are and crashes (hostile), and the correct one with a
+# time budget of 5 s (cut short). Each results.json is
+# parsed with jq and checked as UTF-8 with iconv, then field by field. Run as root, the
+# submissions run as nobody (as no raytra-student user is made here), which is checked;
+# otherwise as the current user, which the test says. The correct submission's grading
+# time is printed.
+set -u
+top=$(cd "$(dirname "$0")/.." && pwd) || exit 2
+for tool in zip unzip jq iconv; do
+    command -v $tool >/dev/null 2>&1 ||
+        { echo "gradescope.sh: $tool is missing (tools/deps.sh gradescope-test)" >&2; exit 2; }
+done
+tmp=$(mktemp -d) || exit 2
+# The submissions' user (nobody, when run as root) must reach the autograder's folder.
+chmod 755 "$tmp" || exit 2
+trap '[ -n "${KEEP:-}" ] || rm -rf "$tmp"' EXIT
+trap 'exit 130' INT TERM
+root=$tmp/root
+part=1.3-shadows-mirror
+
+checks=0
+failures=0
+fail() {
+    failures=$((failures + 1))
+    echo "FAIL: $1"
+}
+# Counts a check, failing it with message $1 unless the rest of the line succeeds.
+check() {
+    message=$1
+    shift
+    checks=$((checks + 1))
+    "$@" || fail "$message"
+}
+# Prints what jq's filter $1 gives for the results of the last run, compact.
+field() {
+    jq -c "$1" "$root/results/results.json"
+}
+
+# The zip, and what it holds.
+make --no-print-directory -s -C "$top" gradescope PART=1.3 OUT="$tmp/autograder.zip" ||
+    { echo "gradescope.sh: make gradescope failed" >&2; exit 1; }
+unzip -Z1 "$tmp/autograder.zip" | grep -v '/$' | sort >"$tmp/zipped"
+for file in setup.sh run_autograder gradescope.conf tools/grade.c tools/deps.sh \
+    milestones/$part/references/renders.txt milestones/$part/references/demo.png \
+    milestones/1.4-bvh/accel_options.c scenes/demo.scn common/Makefile; do
+    check "the zip has no $file" grep -qx "$file" "$tmp/zipped"
+done
+(cd "$top" && git ls-files) | sort >"$tmp/tracked"
+untracked=$(grep -v -x -e setup.sh -e run_autograder -e gradescope.conf "$tmp/zipped" |
+    comm -23 - "$tmp/tracked" | head -n 3)
+check "the zip holds files git does not track: $untracked" test -z "$untracked"
+answers=$(grep -E '^milestones/[^/]+/[^/]+\.c$' "$tmp/zipped" | grep -v '_options\.c$' | head -n 3)
+check "the zip holds a part's model answer: $answers" test -z "$answers"
+built=$(grep -E '(^|/)build/|\.o$|\.a$|(^|/)raytra$' "$tmp/zipped" | head -n 3)
+check "the zip holds build outputs: $built" test -z "$built"
+
+mkdir -p "$root/source" && unzip -q "$tmp/autograder.zip" -d "$root/source" || exit 2
+check "run_autograder is not executable" test -x "$root/source/run_autograder"
+check "gradescope.conf does not name the part" grep -qx "PART=$part" "$root/source/gradescope.conf"
+if ! sh "$root/source/setup.sh" --build-only >"$tmp/setup.log" 2>&1; then
+    echo "gradescope.sh: setup.sh --build-only failed:" >&2
+    tail -n 20 "$tmp/setup.log" >&2
+    exit 1
+fi
+if [ "$(id -u)" -eq 0 ]; then
+    echo "gradescope.sh: run as root: the submissions run as nobody"
+else
+    echo "gradescope.sh: not root: the submissions run as $(id -un), the user running the test"
+fi
+
+# Runs the autograder on folder $1 (none: no submission folder) with the environment
+# $2..., as Gradescope does: the submission in ROOT/submission, no results before.
+autograde() {
+    rm -rf "$root/submission" "$root/results"
+    [ -n "$1" ] && cp -R "$1" "$root/submission"
+    shift
+    env AUTOGRADER_ROOT="$root" "$@" sh "$root/source/run_autograder" >"$tmp/run.log" 2>&1
+    check "run_autograder's exit status is not 0 ($(tail -n 3 "$tmp/run.log"))" test $? -eq 0
+    check "results.json is not JSON" jq -e . "$root/results/results.json" >/dev/null
+    check "results.json is not UTF-8" iconv -f UTF-8 -t UTF-8 "$root/results/results.json" \
+        -o /dev/null
+}
+
+# Checks the fields of a grading's results.json: the score $1, the scenes in the order of
+# renders.txt, a point each, passed exactly when scored, visible; the tests that failed
+# named in $2 (space-separated), each output starting with verdict $3.
+check_results() {
+    score=$1 failing=$2 verdict=$3
+    check "the score is $(field .score), not $score" test "$(field .score)" = "$score"
+    check "the score is not the sum of the tests' scores" \
+        test "$(field '[.tests[].score] | add')" = "$score"
+    expected=$(awk '$1 !~ /^[#!]/ && NF >= 2 {
+        n = $1; sub(/\.[a-z]+$/, "", n); print n " (" $2 ")" }' \
+        "$root/source/milestones/$part/references/renders.txt" | jq -R -s -c 'split("\n")[:-1]')
+    check "the tests are $(field '[.tests[].name]'), not $expected" \
+        test "$(field '[.tests[].name]')" = "$expected"
+    check "a test's max_score is not 1, or its score not 0 or 1" \
+        test "$(field '[.tests[] | select(.max_score != 1 or (.score != 0 and .score != 1))] |
+        length')" = 0
+    check "a test's status does not match its score" test "$(field '[.tests[] |
+        select((.score == 1) != (.status == "passed") or
+            (.status != "passed" and .status != "failed"))] |
+        length')" = 0
+    check "a test or the whole is not visible" \
+        test "$(field '[.visibility, .tests[].visibility] | unique')" = '["visible"]'
+    check "a test has no output" test "$(field '[.tests[].output | strings | select(length > 20)] |
+        length')" = "$(field '.tests | length')"
+    got=$(jq -r '[.tests[] | select(.status == "failed") | .name | sub(" .*"; "")] | join(" ")' \
+        "$root/results/results.json")
+    check "the failed tests are '$got', not '$failing'" test "$got" = "$failing"
+    if [ -n "$verdict" ]; then
+        check "a failed test's output does not start with $verdict" test "$(field "[.tests[] |
+            select(.status == \"failed\") | .output | startswith(\"$verdict: \")] | all")" = true
+    fi
+    check "a passed test does not give the figures" test "$(field '[.tests[] |
+        select(.status == "passed") | .output | test("^PASS: .*\nMax diff R, G, B: .*PSNR")] |
+        all')" = true
+}
+
+correct=$tmp/correct buggy=$tmp/buggy hostile=$tmp/hostile
+every="progression-1-diffuse progression-2-specular progression-3-ambient progression-4-mirror"
+every="$every shadow-sphere acne-grazing mirrors-facing demo"
+"$top/tools/starter.sh" --solution 1.3 "$correct" >/dev/null || exit 2
+cp -R "$correct" "$buggy"
+sed -i 's/add_scaled(d, n, -2 \* vec3_dot(d, n))/add_scaled(d, n, 2 * vec3_dot(d, n))/' \
+    "$buggy/milestones/$part/secondary.c"
+check "the buggy copy has no flipped sign" \
+    grep -q 'add_scaled(d, n, 2 \* vec3_dot' "$buggy/milestones/$part/secondary.c"
+mkdir "$tmp/empty" "$hostile" "$tmp/unbuilt"
+printf 'raytra:\n\t@echo "main.c:1: error: no main" >&2; false\n' >"$tmp/unbuilt/Makefile"
+printf 'raytra: raytra.sh\n\tcp raytra.sh raytra\n\tchmod +x raytra\n' >"$hostile/Makefile"
+cat >"$hostile/raytra.sh" <<'EOF'
+#!/bin/sh
+printf 'uid %s; bytes \001\033[31m\377 "q" \\ ]]>\n' "$(id -u)"
+kill -SEGV $$
+EOF
+
+echo "== correct: part 1.3's solution"
+start=$(date +%s)
+autograde "$correct"
+seconds=$(($(date +%s) - start))
+check_results 8 "" ""
+check "the summary does not say 8 of 8" test "$(field '.output |
+    startswith("Part 1.3-shadows-mirror: 8 of 8 scenes pass.")')" = true
+check "a correct scene is not identical" test "$(field '[.tests[].output |
+    startswith("PASS: identical to the reference.")] | all')" = true
+budget=$(sed -n 's/^BUDGET=//p' "$root/source/gradescope.conf")
+echo "gradescope.sh: the correct submission took $seconds s to grade (budget: $budget s)"
+
+echo "== buggy: a sign flipped in secondary_reflect"
+autograde "$buggy"
+check_results 5 "progression-4-mirror mirrors-facing demo" FAIL
+check "a failure says no box, what to do or the command" test "$(field '[.tests[] |
+    select(.status == "failed") | .output | test("in the box \\(\\d+,\\d+\\)-\\(\\d+,\\d+\\)") and
+    test("\nWhat to do: .*out/check/[a-z0-9-]+\\.heat\\.png") and
+    test("\nCommand \\(from the top of the folder\\): ./raytra scenes/[a-z0-9-]+\\.scn " +
+        "[a-z0-9-]+\\.png\n")] | all')" = true
+
+echo "== empty"
+autograde "$tmp/empty"
+check_results 0 "$every" MISSING
+check "the summary does not say the folder has no Makefile" \
+    test "$(field '.output | test("no Makefile at its top")')" = true
+
+echo "== unbuilt: make fails"
+autograde "$tmp/unbuilt"
+check_results 0 "$every" "BUILD FAILED"
+check "the summary does not say that the build failed, with make's output" test "$(field '.output |
+    test("The build failed: make failed ") and
+    test("\nThe end of make.s output:\n(.*\n)*main.c:1: error: no main")')" = true
+
+echo "== no submission folder at all"
+autograde ""
+check "no folder: the score is not 0" test "$(field .score)" = 0
+
+echo "== hostile: prints control characters and invalid UTF-8, then crashes"
+autograde "$hostile"
+check_results 0 "$every" CRASHED
+check "the bytes are not escaped as \\u0001, \\u001b and \\ufffd" \
+    grep -q 'bytes \\u0001\\u001b\[31m\\ufffd \\"q\\" \\\\ ]]>' "$root/results/results.json"
+check "a crash does not show the program's output" test "$(field '[.tests[].output |
+    test("The program.s last output:\nuid [0-9]+; bytes ")] | all')" = true
+if [ "$(id -u)" -eq 0 ]; then
+    check "the program did not run as nobody" test "$(field '.tests[0].output |
+        test("uid '"$(id -u nobody)"';")')" = true
+fi
+
+echo "== cut short: the correct one, with a time budget of 5 s"
+autograde "$correct" AUTOGRADER_TIME_BUDGET=5
+check "cut short: the score is not 0" test "$(field .score)" = 0
+check "cut short: the output does not say why" \
+    test "$(field '.output | test("did not finish within 5 s")')" = true
+check "cut short: tests were given" test "$(field '.tests')" = '[]'
+
+if [ $failures -eq 0 ]; then
+    echo "gradescope.sh: all $checks checks passed"
+else
+    echo "gradescope.sh: $failures of $checks checks failed (KEEP=1 keeps $tmp)"
+    exit 1
+fi

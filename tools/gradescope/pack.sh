@@ -1,0 +1,75 @@
+#!/bin/sh
+# pack.sh: writes a part's Gradescope autograder: a zip, setup.sh and run_autograder at its root.
+#
+# Usage: tools/gradescope/pack.sh PART [ZIP]   (make gradescope PART=1.3 [OUT=ZIP])
+#   PART  one part: 1.3, 1.3-shadows-mirror or milestones/1.3-shadows-mirror
+#   ZIP   the file to write; default out/gradescope-<part>.zip at the top
+#
+# The zip holds what the grader needs to build and run on a fresh machine, from the files
+# git tracks: common/, the files of tools/ (not its subfolders), scenes/, the part's
+# references, and of every part its headers and its table of options (*_options.c), which
+# the grader compiles in to know each part's arguments; no part's other sources, so that
+# no model answer lies where a student's program could read it. At the root: setup.sh,
+# run_autograder and gradescope.conf (the part, and the time budget: BUDGET seconds for
+# the whole grading, default 540, and BUILD_TIME_LIMIT, default 120). docs/grading.md,
+# section 7, says how to upload it. The zip is written to a temporary and renamed.
+set -u
+top=$(cd "$(dirname "$0")/../.." && pwd) || exit 2
+die() {
+    echo "gradescope: $*" >&2
+    exit 2
+}
+[ $# -ge 1 ] && [ $# -le 2 ] || die "usage: $0 PART [ZIP]"
+command -v zip >/dev/null 2>&1 || die "zip is not installed (tools/deps.sh gradescope installs it)"
+command -v git >/dev/null 2>&1 && git -C "$top" rev-parse --git-dir >/dev/null 2>&1 ||
+    die "$top is not a git checkout: the zip is made of the files git tracks"
+
+# The part's folder, as grade finds it: its full name, its number, or its path.
+case $1 in
+'' | *[[:space:]]*) die "PART is one part (1.3, 1.3-shadows-mirror or its folder), got '$1'" ;;
+esac
+part=${1%/}
+part=${part##*/}
+case $part in
+*-*) ;;
+*) part=$(cd "$top/milestones" && for d in "$part"-*; do [ -d "$d" ] && echo "$d"; done) ;;
+esac
+[ -n "$part" ] && [ "$(echo "$part" | wc -l)" -eq 1 ] &&
+    [ -f "$top/milestones/$part/references/renders.txt" ] ||
+    die "no part '$1' with references in $top/milestones"
+zip=${2:-$top/out/gradescope-$part.zip}
+case $zip in /*) ;; *) zip=$(pwd)/$zip ;; esac
+budget=${BUDGET:-540}
+build_limit=${BUILD_TIME_LIMIT:-120}
+case $budget$build_limit in *[!0-9]*) die "BUDGET and BUILD_TIME_LIMIT are whole seconds" ;; esac
+[ "$budget" -gt "$((build_limit + 60))" ] ||
+    die "BUDGET ($budget s) leaves no time to render after BUILD_TIME_LIMIT ($build_limit s)"
+
+stage=$(mktemp -d) || exit 2
+trap 'rm -rf "$stage"' EXIT
+trap 'exit 130' INT TERM
+mkdir "$stage/root" || exit 2
+
+# The tracked files the grader needs, copied from the working tree.
+(cd "$top" && git ls-files -- common scenes "milestones/$part/references" 'milestones/*/*.h' \
+    'milestones/*/*_options.c' && git ls-files -- tools | grep '^tools/[^/]*$') >"$stage/files" ||
+    die "git ls-files failed"
+while IFS= read -r file; do
+    mkdir -p "$stage/root/$(dirname "$file")" && cp -p "$top/$file" "$stage/root/$file" || exit 2
+done <"$stage/files"
+cp "$top/tools/gradescope/setup.sh" "$top/tools/gradescope/run_autograder" "$stage/root/" || exit 2
+{
+    echo "# gradescope.conf: what run_autograder grades, written by tools/gradescope/pack.sh."
+    echo "PART=$part"
+    echo "BUDGET=$budget"
+    echo "BUILD_TIME_LIMIT=$build_limit"
+} >"$stage/root/gradescope.conf"
+chmod -R u+rwX,go-w,a+rX "$stage/root" &&
+    chmod a+x "$stage/root/setup.sh" "$stage/root/run_autograder" || exit 2
+
+mkdir -p "$(dirname "$zip")" || exit 2
+rm -f "$stage/out.zip"
+(cd "$stage/root" && zip -q -r -X "$stage/out.zip" .) || die "zip failed"
+mv -f "$stage/out.zip" "$zip.tmp$$" && mv -f "$zip.tmp$$" "$zip" || die "cannot write $zip"
+echo "gradescope: wrote $zip ($(wc -l <"$stage/files") files of raytra, part $part;" \
+    "grading within $budget s)"

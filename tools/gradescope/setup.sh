@@ -1,0 +1,39 @@
+#!/bin/sh
+# setup.sh: sets up raytra's Gradescope autograder: the packages missing, the grader, its user.
+#
+# Usage: setup.sh [--build-only]
+# Gradescope runs it once, as root, when it builds the autograder's image, from the zip
+# that tools/gradescope/pack.sh writes, unpacked in /autograder/source. It installs make
+# and what tools/deps.sh names for a build (gcc, pkg-config, libpng-dev, libopenexr-dev)
+# when they are missing, builds tools/build/grade and imgdiff as tools/grade does, and,
+# as root, makes the user raytra-student, who owns nothing, to run students' programs
+# (run_autograder), and leaves the files readable by all and writable by root alone.
+# --build-only stops after the build: what tests/gradescope.sh runs.
+set -u
+here=$(cd "$(dirname "$0")" && pwd) || exit 1
+export DEBIAN_FRONTEND=noninteractive
+
+# make runs tools/deps.sh, which looks for the rest; make itself comes first.
+if ! command -v make >/dev/null 2>&1; then
+    if [ "$(id -u)" -ne 0 ] || ! command -v apt-get >/dev/null 2>&1; then
+        echo "setup.sh: make is missing; install it (Debian and Ubuntu: apt-get install make)" >&2
+        exit 1
+    fi
+    apt-get update -qq && apt-get install -y -qq --no-install-recommends make || exit 1
+fi
+sh "$here/tools/deps.sh" build || exit 1
+# SANITIZE= : the grader is built as tools/grade builds it, whatever the environment says.
+make --no-print-directory -s -C "$here/tools" SANITIZE= grade || {
+    echo "setup.sh: the grader does not build" >&2
+    exit 1
+}
+[ "${1:-}" = --build-only ] && exit 0
+
+if [ "$(id -u)" -eq 0 ]; then
+    if ! id -u raytra-student >/dev/null 2>&1; then
+        useradd --system --no-create-home --home-dir /nonexistent --shell /usr/sbin/nologin \
+            raytra-student || exit 1
+    fi
+    chmod -R u+rwX,go-w,a+rX "$here" || exit 1
+fi
+echo "setup.sh: the grader is built: $here/tools/build/grade"
