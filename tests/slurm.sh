@@ -311,7 +311,7 @@ echo "slurm.sh: a cluster of one node is up ($(awk -v a="$started" -v b="$(now)"
 out="$tmp/slurm out%1"
 submitted=$(now)
 checks=$((checks + 1))
-"$grade_slurm" --shards 3 --time-limit 20 1.1 "$class" "$out" >submit.txt 2>&1
+"$grade_slurm" --shards 3 --time-limit 20 --junit "$tmp/slurm.xml" 1.1 "$class" "$out" >submit.txt 2>&1
 status=$?
 returned=$(now)
 if [ $status -ne 0 ]; then
@@ -349,7 +349,8 @@ check "the merge's log names the report" grep -qF "the report: $out/report.html;
 
 # The same class on this machine, with the same options.
 local_started=$(now)
-"$top/tools/grade" -q --time-limit 20 --out "$tmp/local" 1.1 "$class" 2>local.txt ||
+"$top/tools/grade" -q --time-limit 20 --junit "$tmp/local.xml" --out "$tmp/local" 1.1 "$class" \
+    2>local.txt ||
     { fail "the local grade failed"; sed 's/^/    | /' local.txt; }
 local_seconds=$(awk -v a="$local_started" -v b="$(now)" 'BEGIN { printf "%.1f", b - a }')
 check "the CSV has a line a submission and scene" test "$(wc -l <"$tmp/local/grades.csv")" -eq 36
@@ -357,6 +358,21 @@ checks=$((checks + 1))
 if ! sh "$top/tests/same-grades.sh" "$tmp/local" "$out" >same.txt 2>&1; then
     fail "the report through Slurm differs from the local one"
     sed 's/^/    | /' same.txt | head -n 20
+fi
+
+# The JUnit XML of the merge (--junit), the local run's apart from times.
+untimed() {
+    sed -E 's/time="[0-9.]+"/time="T"/g; s/[0-9]+(\.[0-9]+)? ([kMG] )?rays\/s/T rays\/s/g
+            s/[0-9]+(\.[0-9]+)? m?s([^a-zA-Z0-9]|$)/T s\2/g' "$1"
+}
+check "the merge's JUnit XML: a test case a submission and scene" \
+    test "$(grep -c '<testcase ' "$tmp/slurm.xml" 2>/dev/null)" -eq 35
+checks=$((checks + 1))
+untimed "$tmp/local.xml" >local.xml.txt
+untimed "$tmp/slurm.xml" >slurm.xml.txt 2>&1
+if ! cmp -s local.xml.txt slurm.xml.txt; then
+    fail "the merge's JUnit XML differs from the local run's"
+    diff local.xml.txt slurm.xml.txt | head -n 10 | sed 's/^/    | /'
 fi
 
 # A shard that fails (of a grading with --jobs 2): its folder taken by a file while the
