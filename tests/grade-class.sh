@@ -57,11 +57,13 @@ sed 's/^s 25 -5 -90   10$/s 25.5 -5 -90   10/' "$top/scenes/spheres-three.scn" >
 "$raytra" -q moved.scn "class/cy o'neil/spheres-three.png" 2>/dev/null || exit 2
 mkdir class/eli class/fay
 printf 'raytra:\n\tln -s %s raytra\n' "$raytra" >class/eli/Makefile
-printf 'raytra:\n\t@echo no compiler here >&2; exit 1\n' >class/fay/Makefile
+printf 'raytra:\n\t@echo no compiler in $(CURDIR) >&2; exit 1\n' >class/fay/Makefile
 
 # One at a time, two at a time, and three shards (one of them two at a time) merged.
 "$grade" -q --out one 1.1 class 2>stderr.txt
 check "--jobs 1 writes a report" test -f one/report.html
+check "the work folder's path written work/ in the report" \
+    grep -q "<pre>no compiler in work/06-fay/build$" one/report.html
 check "the class's verdicts" test "$(cut -d, -f3 one/grades.csv | sort | uniq -c | tr -s ' ' | tr '\n' ';')" \
     = " 5 BUILD FAILED; 1 FAIL; 1 MISSING; 22 PASS; 1 WRONG SIZE; 1 verdict;"
 "$grade" -q --jobs 2 --out two 1.1 class 2>stderr.txt

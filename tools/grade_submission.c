@@ -147,6 +147,21 @@ static void grade_image(const Grading *g, Submission *s, int k)
     judge_file(g, s, k, found, grade_format("no %s.png, .pfm or .exr in the submission", r->name));
 }
 
+/* Returns the end of a program's output (run_tail) with the work folder's path written
+ * "work" (as in a compiler's -I flags, or a program naming its folder), so that what the
+ * report shows does not depend on where the work folder is: a shard's, merged. */
+static char *tail_of(const Grading *g, const char *output)
+{
+    size_t len = strlen(g->work);
+    char *text = grade_alloc(strlen(output) + 1), *t = text;
+    for (const char *p = output; *p != '\0';)
+        if (strncmp(p, g->work, len) == 0)
+            t = stpcpy(t, "work"), p += len;
+        else
+            *t++ = *p++;
+    return run_tail(text);
+}
+
 /* Copies submission s into its work folder (cp -P: a link stays a link, never followed out
  * of it) and runs make there under the limits; returns the program it built, or NULL with
  * the reason in s->build_message. */
@@ -167,7 +182,7 @@ static char *build(const Grading *g, Submission *s)
         s->build_message = grade_format("make failed (%s)", run_describe(&r));
     else if (grade_kind(program) != S_IFREG || access(program, X_OK) != 0)
         s->build_message = "make succeeded but made no executable raytra beside the Makefile";
-    s->build_log_tail = run_tail(r.output);
+    s->build_log_tail = tail_of(g, r.output);
     return s->build_message != NULL || r.end == RUN_INTERRUPTED ? NULL : program;
 }
 
@@ -201,7 +216,7 @@ static void run_scene(const Grading *g, Submission *s, int k)
     char *dir = grade_format("%s/run", s->work);
     RunResult run = run_program(r->argv, dir, log, g->time_limit, g->memory_limit);
     res->seconds = run.seconds;
-    res->log_tail = run_tail(run.output);
+    res->log_tail = tail_of(g, run.output);
     res->command = run_command_line(r->argv, NULL);
     char *how = run_describe(&run);
     struct stat st;
