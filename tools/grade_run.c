@@ -30,8 +30,11 @@
  * KEEP_BYTES; what lies between is counted, never stored, and a line says how much was cut. */
 #define KEEP_BYTES (64 << 10)
 
-/* The end of a program's output that the report shows. */
-#define TAIL_BYTES 2048
+/* The end of a program's output that the report shows: its last lines, each cut to a
+ * length. Counted in lines, so that a time printed wider in one run than in another ("in
+ * 0.1 s", "in 10.2 s") does not change which lines are shown. */
+#define TAIL_LINES 24
+#define TAIL_LINE_BYTES 200
 
 /* A child's output as it comes: the head, then the tail in a ring, and the count of all. */
 typedef struct {
@@ -346,17 +349,30 @@ char *run_command_line(char *const argv[], const char *dir)
     return line;
 }
 
-/* Returns the last lines of a program's output, "[...]" first when the start was cut, at a
- * line's; NULL when it printed nothing but blanks. */
+/* Returns the last TAIL_LINES lines of a program's output, each cut to TAIL_LINE_BYTES,
+ * "[...]" for what was cut; NULL when it printed nothing but blanks. */
 char *run_tail(const char *output)
 {
     size_t n = strlen(output);
     while (n > 0 && isspace((unsigned char)output[n - 1]))
         n--;
-    size_t from = n > TAIL_BYTES ? n - TAIL_BYTES : 0;
-    char *text = grade_format("%.*s", (int)(n - from), output + from);
-    const char *newline = strchr(text, '\n');
+    /* Back to just after the TAIL_LINES-th line break from the end, or to the start. */
+    size_t from = n;
+    for (int lines = 0; from > 0 && (output[from - 1] != '\n' || ++lines < TAIL_LINES);)
+        from--;
+    char *text = grade_alloc(n - from + 6 * TAIL_LINES + 8), *t = text;
     if (from > 0)
-        return grade_format("[...]%s", newline != NULL ? newline : text);
+        t = stpcpy(t, "[...]\n");
+    for (const char *line = output + from, *end = output + n; line < end;) {
+        size_t len = strcspn(line, "\n");
+        len = len < (size_t)(end - line) ? len : (size_t)(end - line);
+        memcpy(t, line, len < TAIL_LINE_BYTES ? len : TAIL_LINE_BYTES);
+        t += len < TAIL_LINE_BYTES ? len : TAIL_LINE_BYTES;
+        t = stpcpy(t, len > TAIL_LINE_BYTES ? "[...]" : "");
+        line += len;
+        if (line < end)
+            *t++ = *line++;
+    }
+    *t = '\0';
     return n > 0 ? text : NULL;
 }
