@@ -20,22 +20,7 @@ trap '[ -n "${KEEP:-}" ] || rm -rf "$tmp"' EXIT
 trap 'exit 130' INT TERM
 cd "$tmp" || exit 2
 
-checks=0
-failures=0
-
-# Reports a failed check.
-fail() {
-    failures=$((failures + 1))
-    echo "FAIL: $1"
-}
-
-# Counts a check, failing it with message $1 unless the rest of the line succeeds.
-check() {
-    message=$1
-    shift
-    checks=$((checks + 1))
-    "$@" || fail "$message"
-}
+. "$top/tests/checks.sh"
 
 # Renders scene $1 of the repository into image $2 with RAYTRA's options $3...
 render() {

@@ -31,19 +31,7 @@ trap 'exit 130' INT TERM
 root=$tmp/root
 part=1.3-shadows-mirror
 
-checks=0
-failures=0
-fail() {
-    failures=$((failures + 1))
-    echo "FAIL: $1"
-}
-# Counts a check, failing it with message $1 unless the rest of the line succeeds.
-check() {
-    message=$1
-    shift
-    checks=$((checks + 1))
-    "$@" || fail "$message"
-}
+. "$top/tests/checks.sh"
 # Prints what jq's filter $1 gives for the results of the last run, compact.
 field() {
     jq -c "$1" "$root/results/results.json"

@@ -20,15 +20,7 @@ trap '[ -n "${KEEP:-}" ] || rm -rf "$tmp"' EXIT
 trap 'exit 130' INT TERM
 cd "$tmp" || exit 2
 
-checks=0
-failures=0
-# Counts a check, failing it with message $1 unless the rest of the line succeeds.
-check() {
-    message=$1
-    shift
-    checks=$((checks + 1))
-    "$@" || { failures=$((failures + 1)); echo "FAIL: $message"; }
-}
+. "$top/tests/checks.sh"
 
 # Prints what XPath expression $1 gives in the report.
 xpath() {

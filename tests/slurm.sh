@@ -25,22 +25,7 @@ trap '[ -z "$daemons" ] || stop_cluster; [ -n "${KEEP:-}" ] || rm -rf "$tmp"' EX
 trap 'exit 130' INT TERM
 cd "$tmp" || exit 2
 
-checks=0
-failures=0
-
-# Reports a failed check.
-fail() {
-    failures=$((failures + 1))
-    echo "FAIL: $1"
-}
-
-# Counts a check, failing it with message $1 unless the rest of the line succeeds.
-check() {
-    message=$1
-    shift
-    checks=$((checks + 1))
-    "$@" || fail "$message"
-}
+. "$top/tests/checks.sh"
 
 # Ends the test: the count of checks, and the exit status.
 finish() {
