@@ -107,6 +107,19 @@ check_refused "another class: other submissions" "mini 1" grown "mini 3"
 rm "shard 2/shard.txt"
 check_refused "did not finish" "shard 1" "shard 2" "shard 3"
 check_refused "no shard folder nowhere" "shard 1" nowhere "shard 3"
+if command -v flock >/dev/null 2>&1; then
+    flock "mini 3/.grade-lock" sleep 10 &
+    locker=$!
+    sleep 1
+    check_refused "mini 3 is still being graded" "mini 1" mini-2 "mini 3"
+    kill $locker
+else
+    echo "grade-class.sh: no flock(1): a shard still being graded is not tried"
+fi
+"$grade" merge -q --out "mini 1" "mini 1" mini-2 "mini 3" 2>stderr.txt
+check "merge into a shard's folder: exit 2" test $? -eq 2
+check "merge into a shard's folder: says why" grep -q "would replace the work of the shard" stderr.txt
+check "merge into a shard's folder: its work kept" test -d "mini 1/work/01-ann"
 check "no report in a refused merge's new folder" sh -c \
     '! "$0" merge -q --out new "shard 1" "shard 3" 2>/dev/null && test ! -e new/report.html' "$grade"
 

@@ -188,12 +188,12 @@ int merge_main(int argc, char **argv)
     for (int i = 0; i < count; i++)
         if (realpath(g.out, out_real) != NULL && realpath(folders[i], real) != NULL &&
             (strcmp(out_real, real) == 0 ||
-             strstr(real, grade_format("%s/work/", out_real)) == real))
-            return grade_fail("the output folder %s would replace the work of the shard %s: "
-                              "choose another --out",
-                              g.out, folders[i])
-                       ? 0
-                       : 2;
+             strstr(real, grade_format("%s/work/", out_real)) == real)) {
+            grade_fail("the output folder %s would replace the work of the shard %s: choose "
+                       "another --out",
+                       g.out, folders[i]);
+            return 2;
+        }
     run_init();
     ok = grade_prepare_out(&g) && link_work(&g) && report_write(&g) &&
          (g.junit == NULL || export_junit(&g, g.junit));
