@@ -1,4 +1,4 @@
-/* grade_shard.c: a class graded in slices (--shard K/N), and the slices merged into one report. */
+/* grade_shard.c: a class in slices (--shard K/N): the slice, and the results file of shards and workers. */
 #include "grade.h"
 
 #include <errno.h>
