@@ -1,4 +1,4 @@
-/* grade_shard.c: a class in slices (--shard K/N): the slice, and the results file of shards and workers. */
+/* grade_shard.c: a class in slices (--shard K/N), and the results files of shards and workers. */
 #include "grade.h"
 
 #include <errno.h>
