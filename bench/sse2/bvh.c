@@ -692,7 +692,8 @@ bool bvh_blocked(const Bvh *bvh, Ray r, double tmin, double tmax)
 /* The closest leaf box so far, and where the ray meets it. */
 typedef struct {
     Closest closest;
-    BoxHit face;
+    double t;
+    Vec3 normal;
 } LeafBoxes;
 
 /* Returns the box of leaf as the build stored it: its primitives' boxes, rounded outwards. */
@@ -708,10 +709,13 @@ static Box leaf_box_of(const Bvh *bvh, BvhRef leaf)
 static bool leaf_box(const Bvh *bvh, BvhRef leaf, Ray r, double tmin, double *tmax, void *state)
 {
     LeafBoxes *lb = state;
-    BoxHit face;
-    if (box_hit_face(leaf_box_of(bvh, leaf), r, tmin, lb->closest.limit, &face) &&
-        closest_offer(&lb->closest, leaf.index, face.t, tmax))
-        lb->face = face;
+    double t;
+    Vec3 normal;
+    if (box_hit_face(leaf_box_of(bvh, leaf), r, tmin, lb->closest.limit, &t, &normal) &&
+        closest_offer(&lb->closest, leaf.index, t, tmax)) {
+        lb->t = t;
+        lb->normal = normal;
+    }
     return false;
 }
 
@@ -724,8 +728,7 @@ bool bvh_hit_leaf_boxes(const Bvh *bvh, Ray r, double tmin, double tmax, Hit *hi
     traverse(bvh, r, tmin, &tmax, leaf_box, &lb, NULL);
     if (!lb.closest.found)
         return false;
-    *hit =
-        (Hit){.t = lb.face.t, .point = ray_at(r, lb.face.t), .normal = box_face_normal(&lb.face)};
+    *hit = (Hit){.t = lb.t, .point = ray_at(r, lb.t), .normal = lb.normal};
     bvh_prim_surface(bvh->scene, bvh->prims[lb.closest.which], hit);
     return true;
 }

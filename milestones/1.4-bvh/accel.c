@@ -41,20 +41,20 @@ void accel_free(Accel *accel)
     bvh_free(&accel->bvh);
 }
 
-/* Fills in the kind, index and material of surface s of scene in hit. */
-static void surface_of(const Scene *scene, int s, Hit *hit)
+/* Fills in hit as the face of surface s's box that ray r meets at t, with that face's
+ * normal, in the surface's material: how modes 1 and 2 draw a box in its place. */
+static void box_face_hit(const Scene *scene, int s, Ray r, double t, Vec3 normal, Hit *hit)
 {
     int planes = scene->sphere_count + scene->plane_count;
     if (s < scene->sphere_count)
         *hit = (Hit){.kind = SURFACE_SPHERE, .index = s, .material = scene->spheres[s].material};
-    else if (s < planes)
-        *hit = (Hit){.kind = SURFACE_PLANE,
-                     .index = s - scene->sphere_count,
-                     .material = scene->planes[s - scene->sphere_count].material};
     else
         *hit = (Hit){.kind = SURFACE_TRIANGLE,
                      .index = s - planes,
                      .material = scene->triangles[s - planes].material};
+    hit->t = t;
+    hit->point = ray_at(r, t);
+    hit->normal = normal;
 }
 
 /* excerpt: accel-boxed-hit */
@@ -108,15 +108,13 @@ static bool surface_boxes_hit(const void *data, Ray r, double tmin, double tmax,
     bool found = false;
     int surfaces = scene->sphere_count + scene->plane_count + scene->triangle_count;
     for (int s = 0; s < surfaces; s++) {
-        BoxHit face;
+        double t;
+        Vec3 normal;
         bool plane = s >= scene->sphere_count && s < scene->sphere_count + scene->plane_count;
         if (plane && world_intersect(scene, s, r, tmin, tmax, hit)) {
             world_complete_hit(scene, r, hit);
-        } else if (!plane && box_hit_face(accel->boxes[s], r, tmin, tmax, &face)) {
-            surface_of(scene, s, hit);
-            hit->t = face.t;
-            hit->point = ray_at(r, face.t);
-            hit->normal = box_face_normal(&face);
+        } else if (!plane && box_hit_face(accel->boxes[s], r, tmin, tmax, &t, &normal)) {
+            box_face_hit(scene, s, r, t, normal, hit);
         } else {
             continue;
         }
@@ -127,18 +125,12 @@ static bool surface_boxes_hit(const void *data, Ray r, double tmin, double tmax,
 }
 /* end excerpt: accel-box-hit */
 
-/* Mode 1: whether any box or plane lies on the ray. */
-static bool surface_boxes_blocked(const void *data, Ray r, double tmin, double tmax)
-{
-    Hit hit;
-    return surface_boxes_hit(data, r, tmin, tmax, &hit);
-}
-
 /* The closest leaf box so far: where the ray meets it, and its leaf's first entry. */
 typedef struct {
     bool found;
     uint32_t first;
-    BoxHit face;
+    double t;
+    Vec3 normal;
     double tmax;
 } LeafBoxes;
 
@@ -150,11 +142,12 @@ static bool leaf_box(const Bvh *bvh, BvhRef leaf, Ray r, double tmin, double *tm
     Box box = box_empty();
     for (uint32_t k = leaf.index; k < leaf.index + leaf.count; k++)
         box = box_union(box, box_of_surface(bvh->scene, bvh->prims[k]));
-    BoxHit face;
-    if (box_hit_face(box, r, tmin, lb->tmax, &face) &&
-        (!lb->found || face.t < lb->face.t || (face.t == lb->face.t && leaf.index < lb->first))) {
-        *lb = (LeafBoxes){true, leaf.index, face, lb->tmax};
-        *tmax = face.t;
+    double t;
+    Vec3 normal;
+    if (box_hit_face(box, r, tmin, lb->tmax, &t, &normal) &&
+        (!lb->found || t < lb->t || (t == lb->t && leaf.index < lb->first))) {
+        *lb = (LeafBoxes){true, leaf.index, t, normal, lb->tmax};
+        *tmax = t;
     }
     return false;
 }
@@ -167,12 +160,8 @@ static bool leaf_boxes_hit(const void *data, Ray r, double tmin, double tmax, Hi
     const Scene *scene = accel->scene;
     LeafBoxes lb = {.tmax = tmax};
     bvh_traverse(&accel->bvh, r, tmin, &tmax, leaf_box, &lb);
-    if (lb.found) {
-        surface_of(scene, accel->bvh.prims[lb.first], hit);
-        hit->t = lb.face.t;
-        hit->point = ray_at(r, lb.face.t);
-        hit->normal = box_face_normal(&lb.face);
-    }
+    if (lb.found)
+        box_face_hit(scene, accel->bvh.prims[lb.first], r, lb.t, lb.normal, hit);
     bool found = lb.found;
     for (int k = 0; k < scene->plane_count; k++)
         if (world_intersect(scene, scene->sphere_count + k, r, tmin, found ? hit->t : lb.tmax,
@@ -183,11 +172,13 @@ static bool leaf_boxes_hit(const void *data, Ray r, double tmin, double tmax, Hi
     return found;
 }
 
-/* Mode 2: whether any leaf box or plane lies on the ray. */
-static bool leaf_boxes_blocked(const void *data, Ray r, double tmin, double tmax)
+/* Modes 1 and 2: whether any box drawn, or any plane, lies on the ray. */
+static bool boxes_blocked(const void *data, Ray r, double tmin, double tmax)
 {
     Hit hit;
-    return leaf_boxes_hit(data, r, tmin, tmax, &hit);
+    return ((const Accel *)data)->mode == ACCEL_SURFACE_BOXES
+               ? surface_boxes_hit(data, r, tmin, tmax, &hit)
+               : leaf_boxes_hit(data, r, tmin, tmax, &hit);
 }
 
 /* excerpt: accel-bvh-hit */
@@ -209,8 +200,8 @@ Surfaces accel_surfaces(const Accel *accel)
 {
     switch (accel->mode) {
     case ACCEL_BOXED: return (Surfaces){boxed_hit, boxed_blocked, accel};
-    case ACCEL_SURFACE_BOXES: return (Surfaces){surface_boxes_hit, surface_boxes_blocked, accel};
-    case ACCEL_LEAF_BOXES: return (Surfaces){leaf_boxes_hit, leaf_boxes_blocked, accel};
+    case ACCEL_SURFACE_BOXES: return (Surfaces){surface_boxes_hit, boxes_blocked, accel};
+    case ACCEL_LEAF_BOXES: return (Surfaces){leaf_boxes_hit, boxes_blocked, accel};
     case ACCEL_BVH: break;
     }
     return (Surfaces){bvh_surfaces_hit, bvh_surfaces_blocked, accel};

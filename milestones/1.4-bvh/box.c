@@ -79,10 +79,10 @@ Box box_of_triangle(const Triangle *tri)
 
 /* starter: todo */
 /* excerpt: box-hit-face */
-/* Finds where ray r meets the surface of box b with tmin < t < tmax, and on which face:
- * where it enters the box, or where it leaves it when it starts inside. Modes 1 and 2
- * draw the boxes themselves with this. */
-bool box_hit_face(Box b, Ray r, double tmin, double tmax, BoxHit *hit)
+/* Finds where ray r meets the surface of box b with tmin < t < tmax, and the unit normal
+ * of the face there: where it enters the box, or where it leaves it when it starts
+ * inside. Modes 1 and 2 draw the boxes themselves with this. */
+bool box_hit_face(Box b, Ray r, double tmin, double tmax, double *t, Vec3 *normal)
 {
     /* The slab test again, keeping the axis that set each end of the interval. */
     double lo[3] = {b.lo.x, b.lo.y, b.lo.z}, hi[3] = {b.hi.x, b.hi.y, b.hi.z};
@@ -103,36 +103,23 @@ bool box_hit_face(Box b, Ray r, double tmin, double tmax, BoxHit *hit)
     }
     if (!(t0 <= t1))
         return false;
-    double t;
     int axis;
     if (t0 > tmin && t0 < tmax) {
-        t = t0;
+        *t = t0;
         axis = axis0;
     } else if (t1 > tmin && t1 < tmax) {
-        t = t1;
+        *t = t1;
         axis = axis1;
     } else {
         return false;
     }
     /* The face's normal is +-e_axis; we show the side that faces the ray's origin, so a
      * box seen from inside is lit like one seen from outside. */
-    *hit = (BoxHit){t, axis, d[axis] > 0 ? -1 : 1};
+    double side = d[axis] > 0 ? -1 : 1;
+    *normal = vec3(axis == 0 ? side : 0, axis == 1 ? side : 0, axis == 2 ? side : 0);
     return true;
 }
 /* end excerpt: box-hit-face */
-
-/* Returns the unit normal of the face of a box hit. */
-Vec3 box_face_normal(const BoxHit *hit)
-{
-    Vec3 n = vec3(0, 0, 0);
-    if (hit->axis == 0)
-        n.x = hit->sign;
-    else if (hit->axis == 1)
-        n.y = hit->sign;
-    else
-        n.z = hit->sign;
-    return n;
-}
 
 /* excerpt: box-float-ray-make */
 /* Makes ray r, from tmin on, ready for box_float_hit. Rounding the origin moves the

@@ -21,14 +21,6 @@ typedef struct {
 } BoxRay;
 /* end excerpt: box-struct */
 
-/* Where a ray meets a box's surface: t, and the face, as axis (0 x, 1 y, 2 z) and the
- * side the unit normal points to, always back towards the ray's origin. */
-typedef struct {
-    double t;
-    int axis;
-    double sign;
-} BoxHit;
-
 /* Returns the ray r made ready for box_hit. */
 static inline BoxRay box_ray(Ray r)
 {
@@ -140,7 +132,6 @@ float box_float_below(double x);
 FloatRay box_float_ray(Ray r, double tmin, bool in_range);
 Box box_of_sphere(const Sphere *s);
 Box box_of_triangle(const Triangle *tri);
-bool box_hit_face(Box b, Ray r, double tmin, double tmax, BoxHit *hit);
-Vec3 box_face_normal(const BoxHit *hit);
+bool box_hit_face(Box b, Ray r, double tmin, double tmax, double *t, Vec3 *normal);
 
 #endif
