@@ -8,6 +8,8 @@
 #   make starter PART=1.2 [DEST=dir]   write the starter of a part, the folder a course
 #                    hands out, into out/starter-<part>/ (docs/starters.md)
 #   make check-starters  build every part's starter, stubbed and solved
+#   make check-renders  every part renders every reference, project and course scene,
+#                    and no pixel is NaN or infinite (a few minutes)
 #   make valgrind    render scenes of every part, and broken inputs, under valgrind's memcheck
 #   make bench       benchmark part 1.4's BVH (against Embree 3 when installed; bench/README.md)
 #   make fuzz        build the libFuzzer harnesses of the scene, OBJ and OpenEXR readers (clang)
@@ -41,7 +43,7 @@ FUZZ_SECONDS ?= 1800
 
 .PHONY: all test demo check-demo check-chromium references docs check-docs check-slides check-figures check-layout check-course clean \
         check-robust check-fuzz-regressions check-bad-input check-interrupt check-nonfinite \
-        check-course-render valgrind fuzz fuzz-run bench mistakes starter check-starter check-starters \
+        check-course-render check-renders valgrind fuzz fuzz-run bench mistakes starter check-starter check-starters \
         check-exercises check-statistics statistics-figure gradescope check-gradescope check-slurm
 .NOTPARALLEL:
 
@@ -64,9 +66,12 @@ test:
 	@$(SUBMAKE) check-robust
 	@echo "make test: every test passed"
 
-# Broken input of every kind, interruptions, and finite pixels (docs/robustness.md).
-check-robust: check-fuzz-regressions check-bad-input check-interrupt check-nonfinite \
-              check-course-render
+# Broken input of every kind and interruptions (docs/robustness.md).
+check-robust: check-fuzz-regressions check-bad-input check-interrupt
+
+# Every part renders every reference, project and course scene, with finite pixels: a few
+# hundred renders, too many for make test; CI runs it (docs/robustness.md).
+check-renders: check-nonfinite check-course-render
 
 # Every input the fuzzers ever crashed on, and their minimised corpora, loaded again.
 check-fuzz-regressions:

@@ -15,18 +15,15 @@
 set -u
 
 # Prints how many floats of PFM file $1 are NaN or infinite; false when there are any.
-# PFM floats from raytra are little-endian (a negative scale): a float is not finite when
-# its exponent bits are all ones, that is its last byte is 7f or ff and the one before
-# has its high bit set. Bytes are read with od, so that the host's byte order does not matter.
+# PFM floats from raytra are little-endian (a negative scale), read here as 32-bit words
+# in that order whatever the host's: a float is not finite when its eight exponent bits
+# are all ones, that is its word in hex starts 7f or ff and then a digit of 8 or more.
 count_nonfinite() {
     header=$(head -n 3 "$1" | wc -c)
-    od -A n -v -t x1 -j "$header" "$1" | awk '
-        { for (i = 1; i <= NF; i++) {
-              n++
-              if (n % 4 == 3) high = $i
-              else if (n % 4 == 0 && ($i == "7f" || $i == "ff") && high ~ /^[89a-f]/) bad++
-          } }
-        END { print bad + 0; exit bad > 0 }'
+    bad=$(od -A n -v -t x4 --endian=little -j "$header" "$1" |
+        grep -E -o '(^| )[7f]f[89a-f][0-9a-f]{5}' | wc -l)
+    echo "$bad"
+    [ "$bad" -eq 0 ]
 }
 
 # Checks PFM file $1, saying what is wrong with it; false when it has a non-finite float.
