@@ -275,7 +275,13 @@ bool bvh_traverse(const Bvh *bvh, Ray r, double tmin, double *tmax, BvhLeafFn le
              * and the other waits. Branches, not an index computed from the tests: the
              * processor guesses the next node and loads it while the tests still run. */
             const BvhNode *node = &bvh->nodes[at.index];
-            int hits = bvh_node_hit(node, &fr, t_max, entry);
+            float t1[2] = {t_max, t_max};
+            entry[0] = entry[1] = fr.tmin;
+            node_slab(node, &fr, 0, entry, t1);
+            node_slab(node, &fr, 1, entry, t1);
+            node_slab(node, &fr, 2, entry, t1);
+            int hits = box_float_reaches(&fr, entry[0], t1[0]) |
+                       box_float_reaches(&fr, entry[1], t1[1]) << 1;
             if (hits == 3 && entry[1] < entry[0]) {
                 stack[top].ref = node->child[0];
                 stack[top++].entry = entry[0];
