@@ -122,7 +122,7 @@ bool box_hit_face(Box b, Ray r, double tmin, double tmax, double *t, Vec3 *norma
 /* end excerpt: box-hit-face */
 
 /* excerpt: box-float-ray-make */
-/* Makes ray r, from tmin on, ready for box_float_hit. Rounding the origin moves the
+/* Makes ray r, from tmin on, ready for bvh_node_hit. Rounding the origin moves the
  * slab planes' t by up to shift = |o - o_float| / |d| on an axis; the slack is
  * three times that, and FLT_MIN for products too small for a float's 24 digits.
  * An axis with d = 0 needs none: no float lies between o and its rounding, so the
