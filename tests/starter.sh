@@ -39,14 +39,16 @@ same_trace() {
     for trace in "scenes/trace-pixel.scn --trace-pixel 1,1" \
         "scenes/glass-sphere.scn --scale 0.1 --trace-pixel 20,15" \
         "scenes/soft-shadow.scn --scale 0.1 --samples 2 --light-samples 2 --trace-pixel 10,10@3"; do
-        # A part before 1.6 refuses 1.6's options: that scene's trace is not for it.
         # shellcheck disable=SC2086 # the arguments are words by design
         (cd "$top" && "milestones/$1/raytra" -q $trace >"$tmp/trace.part" 2>&1)
-        [ $? -eq 2 ] && grep -q 'unknown option' "$tmp/trace.part" && continue
+        status=$?
+        # A part before 1.6 refuses 1.6's options: that scene's trace is not for it.
+        [ $status -eq 2 ] && grep -q 'unknown option' "$tmp/trace.part" && continue
         # shellcheck disable=SC2086
-        (cd "$top" && "$2" -q $trace >"$tmp/trace.starter" 2>&1 &&
-            "milestones/$1/raytra" -q $trace >"$tmp/trace.part" 2>&1) ||
-            { fail "--trace-pixel failed: $trace"; continue; }
+        if [ $status -ne 0 ] || ! (cd "$top" && "$2" -q $trace >"$tmp/trace.starter" 2>&1); then
+            fail "--trace-pixel failed: $trace"
+            continue
+        fi
         cmp -s "$tmp/trace.starter" "$tmp/trace.part" ||
             fail "the solved starter traces $trace otherwise than the part"
     done
