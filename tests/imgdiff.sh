@@ -47,7 +47,9 @@ f32() {
 }
 
 # Writes a W x H PFM: every pixel BASE (R,G,B) but those given as x,y=R,G,B, y from
-# the top. PFM stores the bottom row first.
+# the top. PFM stores the bottom row first. R,G,B is split at its commas by the shell
+# itself (IFS), without a process a pixel.
+blank=$IFS
 pfm() {
     file=$1 w=$2 h=$3 base=$4
     shift 4
@@ -61,7 +63,9 @@ pfm() {
                 for p in "$@"; do
                     case $p in "$x,$y="*) rgb=${p#*=} ;; esac
                 done
-                for v in $(echo "$rgb" | tr , ' '); do f32 "$v"; done
+                IFS=,
+                for v in $rgb; do f32 "$v"; done
+                IFS=$blank
                 x=$((x + 1))
             done
             y=$((y - 1))
