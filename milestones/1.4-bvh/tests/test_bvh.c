@@ -315,15 +315,17 @@ static const char *found_name(const Scene *scene, bool found, const Hit *hit, ch
 
 /* Tells, in why, how the BVH's answers for ray r with [tmin, tmax] differ from brute
  * force's: the closest hit (and every field of its record), and whether it is blocked.
- * Sets *found to whether brute force finds a hit. */
+ * Sets *found to whether brute force finds a hit, and then *want to it. */
 static bool same_as_brute_force(const Bvh *bvh, Ray r, double tmin, double tmax, bool *found,
-                                char *why, size_t size)
+                                Hit *want_out, char *why, size_t size)
 {
     const Scene *scene = bvh->scene;
     Hit want, got;
     char a[160], b[160];
     bool wanted = world_hit(scene, r, tmin, tmax, &want), have = bvh_hit(bvh, r, tmin, tmax, &got);
     *found = wanted;
+    if (wanted)
+        *want_out = want;
     if (have != wanted ||
         (wanted && (got.t != want.t || got.kind != want.kind || got.index != want.index ||
                     got.material != want.material || got.back_face != want.back_face ||
@@ -359,7 +361,8 @@ static void compare_with_brute_force(const Scene *scene, int count, double lo, d
         Ray r = ray(o, rnd() < 0.5 && vec3_length(to) > 0 ? vec3_normalize(to) : rnd_dir());
         double tmax = rnd() < 0.5 ? INFINITY : rnd() * (hi - lo);
         char why[400];
-        bool found, same = same_as_brute_force(&bvh, r, 0, tmax, &found, why, sizeof why);
+        Hit hit;
+        bool found, same = same_as_brute_force(&bvh, r, 0, tmax, &found, &hit, why, sizeof why);
         ck_assert_msg(same, "random ray %d from (%g, %g, %g) along (%g, %g, %g), tmax %g: %s", k,
                       o.x, o.y, o.z, r.dir.x, r.dir.y, r.dir.z, tmax, why);
         hits += found;
@@ -388,12 +391,13 @@ static void compare_pixels(const char *name, int step)
             /* Pixel (i, row), row counted from the top as --trace-pixel counts it. */
             Ray r = camera_ray(&camera, i + 0.5, ny - 1 - row + 0.5);
             char why[400];
-            bool found, same = same_as_brute_force(&bvh, r, 0, INFINITY, &found, why, sizeof why);
-            Hit hit;
-            if (same && found && scene.light_count > 0 && world_hit(&scene, r, 0, INFINITY, &hit)) {
+            Hit hit, shadow;
+            bool found, blocked,
+                same = same_as_brute_force(&bvh, r, 0, INFINITY, &found, &hit, why, sizeof why);
+            if (same && found && scene.light_count > 0) {
                 Vec3 to = vec3_sub(scene.lights[0].position, hit.point);
-                same = same_as_brute_force(&bvh, ray(hit.point, to), 1e-6, 1, &found, why,
-                                           sizeof why);
+                same = same_as_brute_force(&bvh, ray(hit.point, to), 1e-6, 1, &blocked, &shadow,
+                                           why, sizeof why);
                 if (!same)
                     ck_abort_msg("pixel (%d, %d) of scenes/%s (--trace-pixel %d,%d), the shadow "
                                  "ray towards light 0: %s",
