@@ -14,9 +14,9 @@
 # bytes JSON cannot hold as they are and crashes (hostile), and the correct one with a
 # time budget of 5 s (cut short). Each results.json is
 # parsed with jq and checked as UTF-8 with iconv, then field by field. Run as root, the
-# submissions run as nobody (as no raytra-student user is made here), which is checked;
-# otherwise as the current user, which the test says. The correct submission's grading
-# time is printed.
+# submissions run as a student's uid and the grader as a grader's, two numbers no user
+# has (no user is made here), which is checked; otherwise as the current user, which the
+# test says. The correct submission's grading time is printed.
 set -u
 top=$(cd "$(dirname "$0")/.." && pwd) || exit 2
 for tool in zip unzip jq iconv; do
@@ -64,7 +64,11 @@ if ! sh "$root/source/setup.sh" --build-only >"$tmp/setup.log" 2>&1; then
     exit 1
 fi
 if [ "$(id -u)" -eq 0 ]; then
-    echo "gradescope.sh: run as root: the submissions run as nobody"
+    # Numbers of this run's own, so that a test running beside it has other users.
+    student_uid=$((61000 + $$ % 1000 * 2))
+    export AUTOGRADER_USER=$student_uid AUTOGRADER_GRADER_USER=$((student_uid + 1))
+    echo "gradescope.sh: run as root: the submissions run as uid $student_uid, the grader as" \
+        "uid $AUTOGRADER_GRADER_USER"
 else
     echo "gradescope.sh: not root: the submissions run as $(id -un), the user running the test"
 fi
@@ -182,8 +186,8 @@ check "the bytes are not escaped as \\u0001, \\u001b and \\ufffd" \
 check "a crash does not show the program's output" test "$(field '[.tests[].output |
     test("The program.s last output:\nuid [0-9]+; bytes ")] | all')" = true
 if [ "$(id -u)" -eq 0 ]; then
-    check "the program did not run as nobody" test "$(field '.tests[0].output |
-        test("uid '"$(id -u nobody)"';")')" = true
+    check "the program did not run as uid $student_uid" test "$(field '.tests[0].output |
+        test("uid '"$student_uid"';")')" = true
 fi
 
 echo "== cut short: the correct one, with a time budget of 5 s"

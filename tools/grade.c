@@ -49,6 +49,12 @@ static const GradeOption options[] = {
     {{"shard", 0, "K/N", "grade only the K-th of N slices of the class and\n"
       "write its results for grade merge (default --out:\ngrading-PART-shard-K-of-N)", NULL},
      OPT_TEXT, offsetof(Grading, shard)},
+    {{"run-as", 0, "USERS", "as root: run students' builds and programs as\n"
+      "USERS (names or uids, one a job, comma-separated),\n"
+      "users of their own whose every process is ended", NULL}, OPT_TEXT,
+     offsetof(Grading, run_as)},
+    {{"grader-user", 0, "USER", "with --run-as: the user the grader becomes", NULL}, OPT_TEXT,
+     offsetof(Grading, grader_user)},
     {{"junit", 0, "FILE", "also write the verdicts as JUnit XML: a test case\n"
       "a submission and scene", NULL}, OPT_TEXT, offsetof(Grading, junit)},
     {{"gradescope", 0, "FILE", "with --self: also write Gradescope's results.json",
@@ -308,7 +314,10 @@ bool grade_prepare_out(Grading *g)
     if (lstat(g->work, &st) == 0 &&
         (!S_ISDIR(st.st_mode) || grade_kind(grade_format("%s/.made-by-grade", g->work)) == 0))
         return grade_fail("%s exists and was not made by grade: choose another --out", g->work);
-    /* chmod first: a student's build may have left folders read-only. */
+    /* chmod first: a student's build may have left folders read-only; with --run-as, its
+     * users make their files in the work folder the grader's to remove. */
+    if (lstat(g->work, &st) == 0)
+        contain_release(g->work);
     char *anew[] = {"sh", "-c",
                     "chmod -R u+rwX -- \"$1\"; rm -rf -- \"$1\" && mkdir -- \"$1\" "
                     "\"$1/references\" && echo \"grade's work folder: each run of grade with this "
@@ -382,7 +391,7 @@ int main(int argc, char **argv)
     time_t now = time(NULL);
     strftime(g.started, sizeof g.started, "%Y-%m-%d %H:%M", localtime(&now));
     run_init();
-    bool ok = find_top(&g) && part_find(&g, argv[optind]) && shard_parse(&g) &&
+    bool ok = contain_start(g.run_as, g.grader_user, g.jobs) && find_top(&g) && part_find(&g, argv[optind]) && shard_parse(&g) &&
               (grade_kind(g.submissions) == S_IFDIR ||
                grade_fail("no folder %s", g.submissions)) &&
               part_read_renders(&g) && grade_prepare_out(&g) && show_references(&g) &&

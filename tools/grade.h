@@ -6,6 +6,7 @@
 #include <stddef.h>
 #include <stdio.h>
 #include <sys/stat.h>
+#include <sys/types.h>
 
 #include "diag.h"
 
@@ -99,6 +100,8 @@ typedef struct {
     double time_limit;       /* seconds for each run of a student's program */
     double build_time_limit; /* seconds for make */
     long long memory_limit;  /* bytes of address space; 0: none */
+    const char *run_as;      /* --run-as: students' users, one a job (as root); or NULL */
+    const char *grader_user; /* --grader-user: the user the grader becomes with --run-as */
     bool quiet, self, help;  /* self: submissions is one student's folder */
     int jobs;                /* submissions graded at a time (--jobs) */
     const char *shard;       /* --shard K/N as given, or NULL */
@@ -126,6 +129,9 @@ typedef struct {
     bool ok;
     char *output;
 } RunResult;
+
+/* The exit status of a child that could not exec its program (as the shell's). */
+#define RUN_EXEC_FAILED 127
 
 /* The memory limit of imgdiff, which reads students' files: none under AddressSanitizer,
  * whose shadow memory no limit leaves room for. */
@@ -158,10 +164,26 @@ bool submission_grade(const Grading *g, Submission *s, FILE *f);
 void run_init(void);
 RunResult run_program(char *const argv[], const char *dir, const char *log, double time_limit,
                       long long memory_limit);
+RunResult run_student(char *const argv[], const char *dir, const char *log, double time_limit,
+                      long long memory_limit);
+void run_child_setup(const char *dir, int out, long long memory_limit);
 char *run_describe(const RunResult *r);
 char *run_command_line(char *const argv[], const char *dir);
 char *run_quote(const char *word);
 char *run_tail(const char *output);
+
+/* grade_contain.c */
+bool contain_start(const char *run_as, const char *grader_user, int jobs);
+bool contain_active(void);
+void contain_use_slot(int k);
+int contain_run(char *const argv[], const char *dir, int out, long long memory_limit);
+void contain_kill(void);
+bool contain_answered(void);
+RunEnd contain_wait(int *status);
+void contain_end_strays(const pid_t *keep, int keep_count);
+void contain_limit_processes(void);
+void contain_release(const char *folder);
+bool contain_share(const char *path);
 
 /* grade_jobs.c */
 bool jobs_grade_all(Grading *g);

@@ -23,10 +23,12 @@ static char *results_path(const Grading *g, int k)
     return grade_format("%s/.results-%d", g->work, k + 1);
 }
 
-/* In a new worker: grades submission k with its progress kept, and writes both to
- * results_path (whole or not at all); never returns. */
-static void work(Grading *g, int k)
+/* In a new worker: grades submission k with its progress kept, its students' programs run
+ * as the user of job `slot` (--run-as), and writes both to results_path (whole or not at
+ * all); never returns. */
+static void work(Grading *g, int k, int slot)
 {
+    contain_use_slot(slot);
 #ifdef __linux__
     /* Orphans of the submission's programs come to the worker, which ends them; the worker
      * ends should the grader die. */
@@ -90,15 +92,20 @@ static void collect(Grading *g, int k, int status)
 static bool grade_in_workers(Grading *g)
 {
     pid_t *pid = grade_alloc((size_t)g->sub_count * sizeof *pid);
+    pid_t *live = grade_alloc((size_t)g->jobs * sizeof *live); /* the workers, by job */
+    int *job = grade_alloc((size_t)g->sub_count * sizeof *job);
     int next = 0, running = 0;
     bool told_stop = false;
     while (next < g->sub_count || running > 0) {
         for (; running < g->jobs && next < g->sub_count && !stop_requested(); next++, running++) {
             fflush(NULL);
+            for (job[next] = 0; live[job[next]] != 0;)
+                job[next]++;
             if ((pid[next] = fork()) == 0)
-                work(g, next);
+                work(g, next, job[next]);
             if (pid[next] < 0)
                 return grade_fail("cannot start a worker: %s", strerror(errno));
+            live[job[next]] = pid[next];
         }
         int status, k = 0;
         pid_t ended = waitpid(-1, &status, 0);
@@ -116,9 +123,14 @@ static bool grade_in_workers(Grading *g)
         if (ended <= 0 || k == next) /* interrupted, or an orphan the grader adopted */
             continue;
         pid[k] = 0;
+        live[job[k]] = 0;
         running--;
+        /* What the worker's programs left (a worker killed by one) came to the grader: it
+         * ends now, the other workers and theirs kept. */
+        contain_end_strays(live, g->jobs);
         collect(g, k, status);
     }
+    contain_end_strays(NULL, 0);
     return !stop_requested();
 }
 

@@ -20,9 +20,6 @@
 #include <sys/prctl.h>
 #endif
 
-/* The exit status of a child that could not exec its program (as the shell's). */
-#define EXEC_FAILED 127
-
 /* The largest file a child may write: an image, or whatever else it writes in its folder. */
 #define FILE_LIMIT (1LL << 30)
 
@@ -72,8 +69,8 @@ static void wait_for_signal(double seconds)
 
 /* Prepares a new child: its own process group, the signals as they were (those caught go
  * back to their defaults at exec), stdin from /dev/null, stdout and stderr to the pipe `out`,
- * the limits, the folder (NULL: the grader's); exits with EXEC_FAILED when it cannot. */
-static void child_setup(const char *dir, int out, long long memory_limit)
+ * the limits, the folder (NULL: the grader's); exits with RUN_EXEC_FAILED when it cannot. */
+void run_child_setup(const char *dir, int out, long long memory_limit)
 {
     setpgid(0, 0);
 #ifdef __linux__
@@ -86,7 +83,7 @@ static void child_setup(const char *dir, int out, long long memory_limit)
     sigprocmask(SIG_SETMASK, &none, NULL);
     int in = open("/dev/null", O_RDONLY);
     if (in < 0 || dup2(in, 0) < 0 || dup2(out, 1) < 0 || dup2(out, 2) < 0)
-        _exit(EXEC_FAILED);
+        _exit(RUN_EXEC_FAILED);
     /* The child keeps neither the grader's files (the pipe's reading end, the output
      * folder's lock) nor the jobserver pipes of a make that runs the grader: every
      * descriptor above stderr is closed. */
@@ -95,11 +92,12 @@ static void child_setup(const char *dir, int out, long long memory_limit)
         if (atoi(e->d_name) > 2 && atoi(e->d_name) != dirfd(fds))
             close(atoi(e->d_name));
     if (fds == NULL || closedir(fds) != 0)
-        _exit(EXEC_FAILED);
+        _exit(RUN_EXEC_FAILED);
     /* Soft and hard, so that the child cannot raise them again; should the grader's own hard
      * limit be lower, setrlimit fails and that one stays. */
     setrlimit(RLIMIT_CORE, &(struct rlimit){0, 0});
     setrlimit(RLIMIT_FSIZE, &(struct rlimit){FILE_LIMIT, FILE_LIMIT});
+    contain_limit_processes();
     if (memory_limit > 0)
         setrlimit(RLIMIT_AS, &(struct rlimit){(rlim_t)memory_limit, (rlim_t)memory_limit});
     /* make hands its flags and jobserver to sub-makes through these: a student's make is
@@ -110,45 +108,7 @@ static void child_setup(const char *dir, int out, long long memory_limit)
         unsetenv(make_vars[k]);
     if (dir != NULL && chdir(dir) != 0) {
         grade_fail("cannot enter '%s': %s", dir, strerror(errno));
-        _exit(EXEC_FAILED);
-    }
-}
-
-/* Ends and reaps what the last child left running outside its group, which the subreaper
- * made the grader's children (an unreaped pid is never reused); gives up, warning, after
- * two seconds of a fork bomb. */
-static void end_stragglers(void)
-{
-    char path[300], text[512];
-    double give_up = clock_now() + 2;
-    for (;;) {
-        pid_t p;
-        while ((p = waitpid(-1, NULL, WNOHANG)) > 0)
-            continue;
-        if (p < 0) /* ECHILD: no process is left */
-            return;
-        if (clock_now() > give_up) {
-            fprintf(stderr, "grade: warning: some processes a submission started would not end\n");
-            return;
-        }
-        DIR *d = opendir("/proc");
-        for (struct dirent *e; d != NULL && (e = readdir(d)) != NULL;) {
-            snprintf(path, sizeof path, "/proc/%s/stat", e->d_name);
-            FILE *f = isdigit((unsigned char)e->d_name[0]) ? fopen(path, "r") : NULL;
-            size_t n = f != NULL ? fread(text, 1, sizeof text - 1, f) : 0;
-            if (f != NULL)
-                fclose(f);
-            text[n] = '\0';
-            /* "pid (name) state ppid ...": the name may hold spaces and parentheses. */
-            const char *name_end = strrchr(text, ')');
-            long ppid;
-            if (name_end != NULL && sscanf(name_end + 1, " %*c %ld", &ppid) == 1 &&
-                ppid == (long)getpid())
-                kill((pid_t)atol(e->d_name), SIGKILL);
-        }
-        if (d != NULL)
-            closedir(d);
-        wait_for_signal(0.005);
+        _exit(RUN_EXEC_FAILED);
     }
 }
 
@@ -236,12 +196,24 @@ static void write_log(const char *path, char *const argv[], const char *dir, con
         close(fd);
 }
 
-/* Runs argv (a program found on PATH) in a child as child_setup prepares it, with at most
- * time_limit seconds and memory_limit bytes (0: no limit), killing its group at the limit
- * or on a stop request; then reaps it and everything it left behind. Its output comes through
- * a pipe, kept in part (Capture) and written to the log at path `log` (NULL: none). */
-RunResult run_program(char *const argv[], const char *dir, const char *log, double time_limit,
-                      long long memory_limit)
+/* Tells whether the child (pid), or the run the keeper started (pid 0), has ended. */
+static bool run_ended(pid_t pid)
+{
+    siginfo_t info = {0};
+    /* WNOWAIT leaves the child a zombie: its pid, its group's id, stays reserved. */
+    return pid == 0 ? contain_answered()
+                    : waitid(P_PID, (id_t)pid, &info, WEXITED | WNOHANG | WNOWAIT) != 0 ||
+                          info.si_pid != 0;
+}
+
+/* Runs argv (a program found on PATH) in a child as run_child_setup prepares it, with at
+ * most time_limit seconds and memory_limit bytes (0: no limit), killing it at the limit or
+ * on a stop request; then reaps it and ends everything it left behind: as the student's
+ * user through the keeper when as_student and --run-as say so (grade_contain.c), else as
+ * this process's child, its group killed and its strays swept. Its output comes through a
+ * pipe, kept in part (Capture) and written to the log at path `log` (NULL: none). */
+static RunResult run_child(char *const argv[], const char *dir, const char *log,
+                           double time_limit, long long memory_limit, bool as_student)
 {
     static Capture capture;
     Capture *c = &capture;
@@ -253,51 +225,62 @@ RunResult run_program(char *const argv[], const char *dir, const char *log, doub
     fcntl(fds[0], F_SETFD, FD_CLOEXEC);
     fcntl(fds[0], F_SETFL, O_NONBLOCK);
     double start = clock_now();
-    pid_t pid = fork();
-    if (pid == 0) {
-        child_setup(dir, fds[1], memory_limit);
+    bool kept = as_student && contain_active();
+    int keeper = kept ? contain_run(argv, dir, fds[1], memory_limit) : -1;
+    pid_t pid = kept ? 0 : fork();
+    if (pid == 0 && !kept) {
+        run_child_setup(dir, fds[1], memory_limit);
         execvp(argv[0], argv);
         grade_fail("cannot run '%s': %s", argv[0], strerror(errno));
-        _exit(EXEC_FAILED);
+        _exit(RUN_EXEC_FAILED);
     }
     int err = errno, fd = fds[0];
     close(fds[1]);
-    if (pid < 0) {
+    if (pid < 0 || (kept && keeper < 0)) {
         close(fd);
         return (RunResult){.end = RUN_NOT_RUN, .status = err, .output = ""};
     }
     /* Also here, so that the group exists before any kill, whichever runs first. */
-    setpgid(pid, pid);
+    if (!kept)
+        setpgid(pid, pid);
     RunResult r = {.end = RUN_EXITED};
-    siginfo_t info = {0};
-    /* WNOWAIT leaves the child a zombie: its pid, its group's id, stays reserved. */
-    while (waitid(P_PID, (id_t)pid, &info, WEXITED | WNOHANG | WNOWAIT) == 0 && info.si_pid == 0) {
+    while (!run_ended(pid)) {
         double left = time_limit - (clock_now() - start);
         if (stop_requested() || (time_limit > 0 && left <= 0)) {
             r.end = stop_requested() ? RUN_INTERRUPTED : RUN_TIMED_OUT;
             break;
         }
         double wait = time_limit > 0 && left < 0.1 ? left : 0.1;
-        /* Output wakes the loop, and so does its end (the child's exit closes the pipe);
-         * once it has ended, SIGCHLD does. A stray SIGCHLD only makes the loop look again. */
-        struct pollfd p = {.fd = fd, .events = POLLIN};
-        if (fd < 0)
+        /* Output wakes the loop, and so do its end (the child's exit closes the pipe) and
+         * the keeper's answer; once the output has ended, SIGCHLD does. A stray SIGCHLD
+         * only makes the loop look again. */
+        struct pollfd p[2] = {{.fd = fd, .events = POLLIN}, {.fd = keeper, .events = POLLIN}};
+        if (fd < 0 && keeper < 0)
             wait_for_signal(wait);
-        else if (poll(&p, 1, (int)(wait * 1000) + 1) > 0)
+        else if (poll(p, 2, (int)(wait * 1000) + 1) > 0 && p[0].revents != 0)
             fd = capture_read(c, fd);
     }
     r.seconds = clock_now() - start;
-    /* Whatever else of the group still runs (a forked child of the program) ends now. */
-    kill(-pid, SIGKILL);
     int status = 0;
-    while (waitpid(pid, &status, 0) < 0 && errno == EINTR)
-        continue;
+    if (kept) {
+        if (r.end != RUN_EXITED)
+            contain_kill();
+        if (contain_wait(&status) == RUN_NOT_RUN && r.end == RUN_EXITED) {
+            r.end = RUN_NOT_RUN;
+            r.status = status;
+        }
+    } else {
+        /* Whatever else of the group still runs (a forked child of the program) ends now. */
+        kill(-pid, SIGKILL);
+        while (waitpid(pid, &status, 0) < 0 && errno == EINTR)
+            continue;
+        contain_end_strays(NULL, 0);
+    }
     if (r.end == RUN_EXITED) {
         r.end = WIFSIGNALED(status) ? RUN_KILLED : RUN_EXITED;
         r.status = WIFSIGNALED(status) ? WTERMSIG(status) : WEXITSTATUS(status);
     }
     r.ok = r.end == RUN_EXITED && r.status == 0;
-    end_stragglers();
     /* Everything that could write to the pipe has ended: what it holds is the last. */
     if (fd >= 0 && capture_read(c, fd) >= 0)
         close(fd);
@@ -305,6 +288,20 @@ RunResult run_program(char *const argv[], const char *dir, const char *log, doub
     if (log != NULL)
         write_log(log, argv, dir, &r);
     return r;
+}
+
+/* Runs a program of the grader's own (imgdiff, cp, sh) as run_child does. */
+RunResult run_program(char *const argv[], const char *dir, const char *log, double time_limit,
+                      long long memory_limit)
+{
+    return run_child(argv, dir, log, time_limit, memory_limit, false);
+}
+
+/* Runs a student's build or program as run_child does: with --run-as, as the student's user. */
+RunResult run_student(char *const argv[], const char *dir, const char *log, double time_limit,
+                      long long memory_limit)
+{
+    return run_child(argv, dir, log, time_limit, memory_limit, true);
 }
 
 /* Returns how a run ended: "exit status 2", "killed by signal 11 (Segmentation fault)". */

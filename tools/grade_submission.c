@@ -171,11 +171,11 @@ static char *build(const Grading *g, Submission *s)
     char *program = grade_format("%s/raytra", copy);
     char *cp[] = {"cp", "-R", "-P", "--", grade_format("%s/.", s->path), copy, NULL};
     char *make[] = {"make", NULL};
-    RunResult r = run_program(cp, NULL, log, 600, 0);
+    RunResult r = run_student(cp, NULL, log, 600, 0);
     if (!r.ok)
         s->build_message = grade_format("the submission could not be copied to build it (cp: %s)",
                                         run_describe(&r));
-    else if ((r = run_program(make, copy, log, g->build_time_limit, g->memory_limit)).end ==
+    else if ((r = run_student(make, copy, log, g->build_time_limit, g->memory_limit)).end ==
              RUN_TIMED_OUT)
         s->build_message = grade_format("make did not finish within %g s", g->build_time_limit);
     else if (!r.ok)
@@ -214,7 +214,7 @@ static void run_scene(const Grading *g, Submission *s, int k)
     r->argv[0] = "../build/raytra";
     r->argv[2] = grade_format("../images/%s", r->image);
     char *dir = grade_format("%s/run", s->work);
-    RunResult run = run_program(r->argv, dir, log, g->time_limit, g->memory_limit);
+    RunResult run = run_student(r->argv, dir, log, g->time_limit, g->memory_limit);
     res->seconds = run.seconds;
     res->log_tail = tail_of(g, run.output);
     res->command = run_command_line(r->argv, NULL);
@@ -255,6 +255,14 @@ static const char *make_work(const Submission *s, FILE *f)
         trouble = grade_fresh_folder(grade_format("%s/images", s->work), f);
     if (trouble == NULL && s->program && s->link == NULL)
         trouble = grade_fresh_folder(grade_format("%s/run", s->work), f);
+    /* The build's copy too, so that a student's user (--run-as) may write in all three. */
+    if (trouble == NULL && s->program && s->link == NULL)
+        trouble = grade_fresh_folder(grade_format("%s/build", s->work), f);
+    static const char *const shared[] = {"images", "run", "build"};
+    for (size_t k = 0; k < 3 && trouble == NULL && s->program && s->link == NULL; k++)
+        if (!contain_share(grade_format("%s/%s", s->work, shared[k])))
+            trouble = grade_format("cannot open %s/%s to the student's user: %s", s->work,
+                                   shared[k], strerror(errno));
     return trouble;
 }
 

@@ -1,17 +1,31 @@
 #!/bin/sh
 # setup.sh: sets up raytra's Gradescope autograder: the packages missing, the grader, its user.
 #
-# Usage: setup.sh [--build-only]
+# Usage: setup.sh [--build-only | --users]
 # Gradescope runs it once, as root, when it builds the autograder's image, from the zip
 # that tools/gradescope/pack.sh writes, unpacked in /autograder/source. It installs make
 # and what tools/deps.sh names for a build (gcc, pkg-config, libpng-dev, libopenexr-dev)
 # when they are missing, builds tools/build/grade and imgdiff as tools/grade does, and,
-# as root, makes the user raytra-student, who owns nothing, to run students' programs
-# (run_autograder), and leaves the files readable by all and writable by root alone.
-# --build-only stops after the build: what tests/gradescope.sh runs.
+# as root, makes two users who own nothing: raytra-student, who runs students' builds and
+# programs, and raytra-grader, who runs the grader (run_autograder); and leaves the files
+# readable by all and writable by root alone. --build-only stops after the build: what
+# tests/gradescope.sh runs; --users only makes the users.
 set -u
 here=$(cd "$(dirname "$0")" && pwd) || exit 1
 export DEBIAN_FRONTEND=noninteractive
+
+# Makes the system users raytra-student and raytra-grader, when missing: no home, no shell.
+make_users() {
+    for name in raytra-student raytra-grader; do
+        id -u "$name" >/dev/null 2>&1 ||
+            useradd --system --user-group --no-create-home --home-dir /nonexistent \
+                --shell /usr/sbin/nologin "$name" || return 1
+    done
+}
+if [ "${1:-}" = --users ]; then
+    make_users
+    exit
+fi
 
 # make runs tools/deps.sh, which looks for the rest; make itself comes first.
 if ! command -v make >/dev/null 2>&1; then
@@ -30,10 +44,7 @@ make --no-print-directory -s -C "$here/tools" SANITIZE= grade || {
 [ "${1:-}" = --build-only ] && exit 0
 
 if [ "$(id -u)" -eq 0 ]; then
-    if ! id -u raytra-student >/dev/null 2>&1; then
-        useradd --system --no-create-home --home-dir /nonexistent --shell /usr/sbin/nologin \
-            raytra-student || exit 1
-    fi
+    make_users || exit 1
     chmod -R u+rwX,go-w,a+rX "$here" || exit 1
 fi
 echo "setup.sh: the grader is built: $here/tools/build/grade"
