@@ -24,6 +24,9 @@
 #                    default out/gradescope-<part>.zip (docs/grading.md, section 7)
 #   make check-gradescope  that autograder, unpacked and run on a correct, a buggy and an
 #                    empty submission of part 1.3 (a few minutes)
+#   make check-contain  hostile submissions (chains of 1,500 processes, daemons, a fork
+#                    loop, planted links and FIFOs) graded by tools/grade and run_autograder:
+#                    none outlives its run (as root for all of it; about 5 minutes)
 #
 # WERROR=1 turns warnings into errors; SANITIZE=1 builds and tests everything
 # with AddressSanitizer and UndefinedBehaviorSanitizer.
@@ -44,7 +47,8 @@ FUZZ_SECONDS ?= 1800
 .PHONY: all test demo check-demo check-chromium references docs check-docs check-slides check-figures check-layout check-course clean \
         check-robust check-fuzz-regressions check-bad-input check-interrupt check-nonfinite \
         check-course-render check-renders valgrind fuzz fuzz-run bench mistakes starter check-starter check-starters \
-        check-exercises check-statistics statistics-figure gradescope check-gradescope check-slurm
+        check-exercises check-statistics statistics-figure gradescope check-gradescope check-slurm \
+        check-contain
 .NOTPARALLEL:
 
 all:
@@ -226,6 +230,14 @@ gradescope:
 check-gradescope:
 	@tools/deps.sh gradescope-test
 	@tests/gradescope.sh
+
+# Hostile submissions that leave processes behind or plant links: each contained, by
+# tools/grade (its subreaper, and --run-as) and by run_autograder (tests/contain.sh).
+check-contain:
+	$(DEPS_STEP)
+	@tools/deps.sh gradescope-test
+	@$(SUBMAKE) -C tools grade SANITIZE=0
+	@tests/contain.sh tools/build/grade
 
 # The figures of the statistical grading (docs/grading.md, chapter 1.6): z-score heat maps.
 statistics-figure:

@@ -436,7 +436,7 @@ static void keeper_main(Slot *slots)
         signal(WTERMSIG(grader_status), SIG_DFL);
         raise(WTERMSIG(grader_status));
     }
-    exit(unkillable ? 2 : WEXITSTATUS(grader_status));
+    _exit(unkillable ? 2 : WEXITSTATUS(grader_status));
 }
 
 /* With --run-as (as root): checks the users, then splits the grader in two. The parent,
