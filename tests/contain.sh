@@ -256,8 +256,23 @@ echo "contain.sh: 1. took $(($(date +%s) - start)) s"
 if ! $root; then
     echo "contain.sh: not root: --run-as and run_autograder not tested"
 else
-    # 2. As root, --run-as: students' uids, one a job, and a grader's.
+    # 2. As root, --run-as: students' uids, one a job, and a grader's; refused first with
+    # no grader's user, a grader who is a student, fewer users than jobs, a user who runs
+    # something already.
     start=$(date +%s)
+    setpriv --reuid="$student2" --regid="$student2" --clear-groups sleep 30 &
+    busy=$!
+    sleep 0.2
+    for bad in "--run-as $student1" "--run-as $student1 --grader-user $student1" \
+        "--run-as $student1 --grader-user $graderuid --jobs 2" \
+        "--run-as $student2 --grader-user $graderuid" "--run-as nosuchuser$$ --grader-user 1"; do
+        # shellcheck disable=SC2086
+        "$grade" $bad --out "$tmp/refused" 1.1 "$tmp/class" >"$tmp/refused.log" 2>&1
+        check "2. grade $bad: exit status $?, not 2" test $? -eq 2
+        check "2. grade $bad: graded ($(head -n 1 "$tmp/refused.log"))" test ! -e "$tmp/refused"
+    done
+    kill "$busy"
+    wait "$busy" 2>/dev/null
     mkdir "$tmp/out2" && chown "$graderuid:$graderuid" "$tmp/out2" || exit 2
     mkdir "$tmp/both" && cp -R "$tmp/class/." "$tmp/killers/." "$tmp/both/" &&
         chmod -R a+rX "$tmp/both" || exit 2

@@ -459,8 +459,10 @@ bool contain_start(const char *run_as, const char *grader_user, int jobs)
         return false;
     char *list = grade_format("%s", run_as);
     for (char *name = strtok(list, ","); name != NULL; name = strtok(NULL, ",")) {
-        if (slot_count == MAX_SLOTS || !user_find(name, &slots[slot_count].user))
-            return slot_count < MAX_SLOTS || grade_fail("--run-as names too many users");
+        if (slot_count == MAX_SLOTS)
+            return grade_fail("--run-as names more than %d users", MAX_SLOTS);
+        if (!user_find(name, &slots[slot_count].user))
+            return false;
         User u = slots[slot_count++].user;
         if (u.uid == 0 || u.uid == grader.uid)
             return grade_fail("--run-as %s: a student's user must be neither root nor the "
