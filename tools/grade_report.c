@@ -255,9 +255,14 @@ static void write_html(FILE *f, const Grading *g)
         if (broken)
             fprintf(f, "<div class=\"broken\"><strong>The build failed:</strong> %s. No scene "
                        "could be rendered.", html(s->build_message));
-        else
-            fprintf(f, "<p class=\"counts\">%d of %d scene%s pass.</p>\n", s->tally[TALLY_PASS],
-                    g->render_count, plural(g->render_count));
+        else {
+            double max, got = part_points(g, s, &max);
+            fprintf(f, "<p class=\"counts\">%d of %d scene%s pass: %g of %g points.</p>\n",
+                    s->tally[TALLY_PASS], g->render_count, plural(g->render_count), got, max);
+        }
+        if (s->removed != NULL)
+            fprintf(f, "<p class=\"file\">Build outputs it carried, removed before make: "
+                       "<code>%s</code></p>\n", html(s->removed));
         write_log(f, "Build output (the last lines)", s->build_log_tail, broken);
         for (int k = 0; k < g->render_count && !broken; k++) {
             const Render *r = &g->renders[k];
@@ -266,7 +271,9 @@ static void write_html(FILE *f, const Grading *g)
                     "<details class=\"scene\"%s>\n<summary><span class=\"scene-name\">%s</span>"
                     "%s%s<span class=\"message\">%s</span>%s</summary>\n<div class=\"scene-body\">"
                     "\n<p class=\"file\">Scene <code>%s",
-                    res->verdict == VERDICT_PASS ? "" : " open", html(r->name), badge(g, s, k),
+                    res->verdict == VERDICT_PASS ? "" : " open",
+                    r->hidden ? grade_format("%s (hidden)", html(r->name)) : html(r->name),
+                    badge(g, s, k),
                     copy_flag(res->copy), html(res->message),
                     res->seconds > 0
                         ? grade_format("<span class=\"time\">%.2f s</span>", res->seconds)
