@@ -225,7 +225,7 @@ bool part_read_conf(Grading *g)
     if (f == NULL)
         return grade_fail("cannot read %s: %s", path, strerror(errno));
     size_t size = 0;
-    int line_number = 0, count = 0;
+    int line_number = 0, count = 0, part_line = 0;
     int capacity = 0;
     ConfScene *scenes = NULL;
     bool ok = true, part_seen = false;
@@ -267,7 +267,8 @@ bool part_read_conf(Grading *g)
                              .visibility = n == 3 ? grade_format("%s", w.word[2]) : NULL};
             read_points(w.word[1], &c->points);
         }
-        part_seen |= strcmp(w.word[0], "part") == 0;
+        if (strcmp(w.word[0], "part") == 0)
+            part_seen = true, part_line = line_number;
     }
     free(line);
     fclose(f);
@@ -286,9 +287,9 @@ bool part_read_conf(Grading *g)
     double total = 0;
     for (int k = 0; k < g->render_count; k++)
         total += g->renders[k].points;
-    return !ok || total > 0 || g->part_points == 0 ||
-           grade_fail("%s: the part is worth %g points but its scenes are worth none", path,
-                      g->part_points);
+    return ok && (total > 0 || g->part_points == 0 ||
+                  grade_fail("%s:%d: the part is worth %g points but its scenes are worth none",
+                             path, part_line, g->part_points));
 }
 
 /* Returns what submission s scores, its scenes' points (scaled to the part's, when
