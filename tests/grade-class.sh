@@ -189,6 +189,14 @@ check "--jobs 2 interrupted: exit 130" test $? -eq 130
 check "--jobs 2 interrupted: no report" test ! -e stopped/report.html
 check "--jobs 2 interrupted: no program left running" \
     test -z "$(ps -eo args | grep -x 'sleep 60')"
+"$grade" --shard 1/2 --out stopped-shard 1.1 slow 2>stderr.txt &
+pid=$!
+sleep 2
+kill -INT $pid
+wait $pid
+check "a shard interrupted: exit 130" test $? -eq 130
+check "a shard interrupted: says no report, or not that its shard.txt was not written" \
+    sh -c '! grep -q "no report" stderr.txt && grep -q "the shard.s results (shard.txt) were not written" stderr.txt'
 
 if [ "$failures" -eq 0 ]; then
     echo "grade-class.sh: all $checks checks passed"
