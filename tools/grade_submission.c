@@ -3,6 +3,7 @@
 
 #include <ctype.h>
 #include <errno.h>
+#include <ftw.h>
 #include <libgen.h>
 #include <limits.h>
 #include <signal.h>
@@ -10,7 +11,6 @@
 #include <stdlib.h>
 #include <string.h>
 #include <strings.h>
-#include <ftw.h>
 #include <unistd.h>
 
 #include "imgfile.h"
@@ -171,13 +171,16 @@ static char *tail_of(const Grading *g, const char *output)
 /* Removes, in the folder it runs in, the build outputs a submission may carry from
  * another machine, which make would take as up to date: folders of builds (pruned,
  * removed whole), objects, archives, libraries, dependency files and a raytra; prints
- * each, sorted, a folder with a '/' after it, and "!failed" when one could not be removed. */
+ * each, sorted, a folder with a '/' after it, and "!failed" when one could not be removed.
+ * A folder is made writable first (a build may leave it read-only); a link is never
+ * followed, nor its target changed. */
 static const char remove_outputs[] =
     "{ find . -mindepth 1 \\( -type d \\( -name build -o -name 'build-*' -o -name '*.dSYM' \\) "
     "-prune -o ! -type d \\( -name '*.o' -o -name '*.a' -o -name '*.d' "
     "-o -name '*.so' -o -name '*.dylib' -o -name '*.gch' -o -name raytra \\) \\) "
     "-exec sh -c 'for p; do s=; [ -d \"$p\" ] && [ ! -L \"$p\" ] && s=/; "
-    "printf \"%s%s\\n\" \"${p#./}\" \"$s\"; rm -rf -- \"$p\" || exit 1; done' sh {} + "
+    "printf \"%s%s\\n\" \"${p#./}\" \"$s\"; [ -z \"$s\" ] || chmod -R u+rwX -- \"$p\"; "
+    "rm -rf -- \"$p\" || exit 1; done' sh {} + "
     "|| echo '!failed'; } | LC_ALL=C sort";
 
 /* Removes from the copy at `copy` the build outputs it carries (remove_outputs), so that
@@ -194,9 +197,9 @@ static char *remove_build_outputs(const char *copy, bool *trouble)
     return n > 0 ? grade_format("%.*s", (int)n, r.output) : NULL;
 }
 
-/* The references whose canaries replace their copies in a submission (plant_canaries). */
+/* The grading whose references' canaries replace their copies in a submission (nftw's
+ * visits take no argument of their own). */
 static const Grading *planting;
-static int planted;
 
 /* nftw's visit of a file of a submission's copy: a regular file that holds a reference's
  * bytes is given its canary's instead (Render.canary). */
@@ -209,8 +212,8 @@ static int plant_canary(const char *path, const struct stat *st, int type, struc
         if (r->canary == NULL || stat(r->reference, &ref) != 0 || ref.st_size != st->st_size ||
             !same_bytes(path, r->reference))
             continue;
-        char *cp[] = {"cp", "--", r->canary, (char *)path, NULL};
-        planted += run_program(cp, NULL, NULL, 60, 0).ok;
+        char *cp[] = {"cp", "-f", "--", r->canary, (char *)path, NULL};
+        run_program(cp, NULL, NULL, 60, 0);
         break;
     }
     return 0;
@@ -231,7 +234,6 @@ static char *build(const Grading *g, Submission *s)
     if (r.ok) {
         s->removed = remove_build_outputs(copy, &trouble);
         planting = g;
-        planted = 0;
         nftw(copy, plant_canary, 16, FTW_PHYS);
     }
     if (!r.ok)
