@@ -16,7 +16,10 @@
 # parsed with jq and checked as UTF-8 with iconv, then field by field. Run as root, the
 # submissions run as nobody (as no raytra-student user is made here), which is checked;
 # otherwise as the current user, which the test says. The correct submission's grading
-# time is printed.
+# time is printed. Then a second zip, with a grading.conf (a part's total, points and
+# visibilities) and two hidden scenes of the test's own (GRADING_CONF=, its `hidden` line):
+# the correct submission scores them all, each test with its points and visibility, and a
+# program that copies the references its folder carries fails the hidden scenes.
 set -u
 top=$(cd "$(dirname "$0")/.." && pwd) || exit 2
 for tool in zip unzip jq iconv; do
@@ -237,6 +240,15 @@ check "controls: the visibilities" test "$(field '[.tests[].visibility]')" = \
     '["visible","visible","visible","visible","visible","visible","visible","after_published","after_due_date","hidden"]'
 check "controls: the summary gives no points" \
     test "$(field '.output | startswith("Part 1.3-shadows-mirror: 10 of 10 scenes pass: 50 of 50 points.")')" = true
+if [ "$(id -u)" -eq 0 ] && id -u raytra-grader >/dev/null 2>&1 && id -u raytra-student >/dev/null 2>&1
+then
+    check "controls: raytra-student can read a hidden reference" sh -c '! setpriv \
+        --reuid="$(id -u raytra-student)" --regid="$(id -g raytra-student)" --clear-groups \
+        cat "$1" >/dev/null 2>&1' sh "$root/source/hidden/references/own-demo.png"
+else
+    echo "gradescope.sh: no users raytra-grader and raytra-student (setup.sh makes them as root):" \
+        "the hidden references' protection from the student's user is not tried"
+fi
 # A program that copies the references its folder carries: the hidden scenes fail.
 cp -R "$correct" "$tmp/copier"
 cat >"$tmp/copier/raytra.sh" <<'EOF'
