@@ -247,7 +247,7 @@ csv="out dir/grades.csv"
 grep -v '^"' "$csv" | cut -d, -f1-3 >verdicts.txt
 check "the verdicts differ from those expected" cmp -s expected.txt verdicts.txt ||
     diff expected.txt verdicts.txt | sed 's/^/    | /'
-check "the CSV's header" grep -qx 'submission,scene,verdict,max_diff_r,max_diff_g,max_diff_b,mean_abs_diff,rmse,psnr_db,differing_pixels,differing_fraction,bbox,message,seconds,flag' "$csv"
+check "the CSV's header" grep -qx 'submission,scene,verdict,max_diff_r,max_diff_g,max_diff_b,mean_abs_diff,rmse,psnr_db,differing_pixels,differing_fraction,bbox,message,seconds,flag,points' "$csv"
 check "the strange name's rows, quoted" \
     test "$(grep -c "^\"o'brien, \"\"jo\"\" <b>&amp;\",[a-z-]*,PASS," "$csv")" -eq 5
 
@@ -276,17 +276,17 @@ has 'missing-one,demo,MISSING,,,,,,,,,,"no demo.png, .pfm or .exr in the submiss
 has 'build-fails,demo,BUILD FAILED,,,,,,,,,,make failed (exit status 2),'
 # The moved sphere's figures, in their form: their last digits may change with the compiler.
 number='[0-9.e-]+'
-check "the figures of a failed image" grep -qE "^slightly-wrong,spheres-three,FAIL,1,0,0,$number,$number,$number,[0-9]+,$number,\"\\([0-9]+,[0-9]+\\)-\\([0-9]+,[0-9]+\\)\",\"$number% of the pixels differ by more than 2/255, more than the 0.1% allowed\",,\$" "$csv"
+check "the figures of a failed image" grep -qE "^slightly-wrong,spheres-three,FAIL,1,0,0,$number,$number,$number,[0-9]+,$number,\"\\([0-9]+,[0-9]+\\)-\\([0-9]+,[0-9]+\\)\",\"$number% of the pixels differ by more than 2/255, more than the 0.1% allowed\",,,0\$" "$csv"
 has 'correct,demo,PASS,0,0,0,0,0,inf,0,0,,identical to the reference,'
 # A byte-for-byte copy of a reference file is flagged, handed in or written; an image equal
 # in its pixels but written otherwise (a PFM) is not.
-has 'correct,demo,PASS,0,0,0,0,0,inf,0,0,,identical to the reference,,copy'
+has 'correct,demo,PASS,0,0,0,0,0,inf,0,0,,identical to the reference,,copy,1'
 check "a program's copy of a reference flagged" \
-    test "$(grep -c '^copier,[a-z-]*,PASS,.*,identical to the reference,[0-9.]*,copy$' "$csv")" -eq 5
-check "an equal image written otherwise flagged" test -z "$(grep '^pfm,.*,copy$' "$csv")"
+    test "$(grep -c '^copier,[a-z-]*,PASS,.*,identical to the reference,[0-9.]*,copy,1$' "$csv")" -eq 5
+check "an equal image written otherwise flagged" test -z "$(grep '^pfm,.*,copy,[0-9.]*$' "$csv")"
 check "a program that renders the references' bytes flagged" \
-    test -z "$(grep '^correct-program,.*,copy$' "$csv")"
-check "a FAIL flagged" test -z "$(grep ',FAIL,.*,copy$' "$csv")"
+    test -z "$(grep '^correct-program,.*,copy,[0-9.]*$' "$csv")"
+check "a FAIL flagged" test -z "$(grep ',FAIL,.*,copy,[0-9.]*$' "$csv")"
 check "the copies flagged in the report" grep -q 'class="badge flag"[^>]*>COPY<' "out dir/report.html"
 
 # The report: there, whole, self-contained, escaped.

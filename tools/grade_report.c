@@ -322,11 +322,18 @@ static char *csv(const char *text)
 }
 
 /* Writes the CSV: a header line, then one line a submission and scene; the figures, which
- * need no quoting but the box, are empty when no comparison was made. */
+ * need no quoting but the box, are empty when no comparison was made; last, the points the
+ * scene earned (grading.conf's, scaled to the part's). */
 static void write_csv(FILE *f, const Grading *g)
 {
     fputs("submission,scene,verdict,max_diff_r,max_diff_g,max_diff_b,mean_abs_diff,rmse,"
-          "psnr_db,differing_pixels,differing_fraction,bbox,message,seconds,flag\n", f);
+          "psnr_db,differing_pixels,differing_fraction,bbox,message,seconds,flag,points\n", f);
+    double all = 0, max = 0;
+    for (int k = 0; k < g->render_count; k++)
+        all += g->renders[k].points;
+    if (g->sub_count > 0)
+        part_points(g, &g->subs[0], &max);
+    double scale = all > 0 && max > 0 ? max / all : 1;
     for (int i = 0; i < g->sub_count; i++)
         for (int k = 0; k < g->render_count; k++) {
             const SceneResult *res = &g->subs[i].results[k];
@@ -338,10 +345,11 @@ static void write_csv(FILE *f, const Grading *g)
                 (double)fig->differing / fig->pixels,
                 fig->differing == 0 ? "" : grade_format("\"(%d,%d)-(%d,%d)\"", fig->box[0],
                                                         fig->box[1], fig->box[2], fig->box[3]));
-            fprintf(f, "%s,%s,%s,%s%s,%s,%s\n", csv(g->subs[i].name), csv(g->renders[k].name),
-                    verdict_info[res->verdict].name, figures, csv(res->message),
-                    res->seconds > 0 ? grade_format("%.3f", res->seconds) : "",
-                    res->copy ? "copy" : "");
+            fprintf(f, "%s,%s,%s,%s%s,%s,%s,%.6g\n", csv(g->subs[i].name),
+                    csv(g->renders[k].name), verdict_info[res->verdict].name, figures,
+                    csv(res->message), res->seconds > 0 ? grade_format("%.3f", res->seconds) : "",
+                    res->copy ? "copy" : "",
+                    res->verdict == VERDICT_PASS ? g->renders[k].points * scale : 0);
         }
 }
 
