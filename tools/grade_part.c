@@ -392,7 +392,7 @@ void part_make_canaries(Grading *g)
         unsigned char *bytes = NULL;
         long size = in != NULL && fseek(in, 0, SEEK_END) == 0 ? ftell(in) : -1;
         if (size > 20 && size < (1L << 28) && fseek(in, 0, SEEK_SET) == 0)
-            bytes = grade_alloc((size_t)size);
+            bytes = malloc((size_t)size);
         bool png = bytes != NULL && fread(bytes, 1, (size_t)size, in) == (size_t)size &&
                    memcmp(bytes, "\211PNG\r\n\032\n", 8) == 0 &&
                    memcmp(bytes + size - 12, iend, 12) == 0;
@@ -400,8 +400,10 @@ void part_make_canaries(Grading *g)
             fclose(in);
         char *path = grade_format("%s/references/%s.canary.png", g->work, r->name);
         FILE *out = png ? fopen(path, "wb") : NULL;
-        if (out == NULL)
+        if (out == NULL) {
+            free(bytes);
             continue;
+        }
         unsigned long crc = 0xFFFFFFFFUL;
         for (int i = 0; i < len; i++)
             crc = crc_add(crc, (unsigned char)text[i]);
@@ -410,6 +412,7 @@ void part_make_canaries(Grading *g)
         fwrite(text, 1, (size_t)len, out);
         put_be32(out, crc ^ 0xFFFFFFFFUL);
         fwrite(iend, 1, sizeof iend, out);
+        free(bytes);
         if (fclose(out) == 0)
             r->canary = path;
     }
