@@ -21,7 +21,8 @@
 #   make check-slurm  grade a made-up class through tools/slurm/grade-slurm on a Slurm cluster
 #                    of one node it starts (as root; installs slurm-wlm and munge, or skips)
 #   make gradescope PART=1.3 [OUT=file.zip]  write the part's Gradescope autograder, by
-#                    default out/gradescope-<part>.zip (docs/grading.md, section 7)
+#                    default out/gradescope-<part>.zip (docs/grading.md, section 7);
+#                    GRADING_CONF=FILE, HIDDEN=DIR: points, visibility, hidden scenes
 #   make check-gradescope  that autograder, unpacked and run on a correct, a buggy and an
 #                    empty submission of part 1.3 (a few minutes)
 #   make check-contain  hostile submissions (chains of 1,500 processes, daemons, a fork

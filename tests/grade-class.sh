@@ -49,23 +49,43 @@ sed 's/^s 25 -5 -90   10$/s 25.5 -5 -90   10/' "$top/scenes/spheres-three.scn" >
 mkdir class/eli class/fay
 printf 'raytra:\n\tln -s %s raytra\n' "$raytra" >class/eli/Makefile
 printf 'raytra:\n\t@echo no compiler in $(CURDIR) >&2; exit 1\n' >class/fay/Makefile
+# Build outputs eli carries from elsewhere, removed before make: a stale raytra among them.
+mkdir class/eli/build
+printf '#!/bin/sh\nexit 3\n' >class/eli/raytra
+chmod +x class/eli/raytra
+touch class/eli/main.o class/eli/build/main.o
+# The instructor's controls: points, visibilities and a hidden scene of their own, all of
+# which the workers and the shards must hand on to the report as one run makes it.
+mkdir hidden
+sed 's/^s 25 -5 -90   10$/s 20 -5 -90   12/' "$top/scenes/spheres-three.scn" >hidden/own.scn
+printf 'own.png own.scn\n' >hidden/renders.txt
+printf 'part 20\nhidden hidden\n* 1\ndemo 3 after_due_date\nown 4 hidden\n' >grading.conf
+set -- --grading-conf grading.conf
 
 # One at a time, two at a time, and three shards (one of them two at a time) merged.
-"$grade" -q --out one 1.1 class 2>stderr.txt
+"$grade" -q "$@" --out one 1.1 class 2>stderr.txt
 check "--jobs 1 writes a report" test -f one/report.html
 check "the work folder's path written work/ in the report" \
     grep -q "<pre>no compiler in work/06-fay/build$" one/report.html
 check "the class's verdicts" test "$(cut -d, -f3 one/grades.csv | sort | uniq -c | tr -s ' ' | tr '\n' ';')" \
-    = " 5 BUILD FAILED; 1 FAIL; 1 MISSING; 22 PASS; 1 WRONG SIZE; 1 verdict;"
-"$grade" -q --jobs 2 --out two 1.1 class 2>stderr.txt
+    = " 6 BUILD FAILED; 1 FAIL; 5 MISSING; 23 PASS; 1 WRONG SIZE; 1 verdict;"
+check "the hidden scene: the images handed in have none" \
+    test "$(grep -c '^[a-z'"'"' ]*,own,MISSING,' one/grades.csv)" -eq 4
+check "the hidden scene: the program passes it" grep -q '^eli,own,PASS,' one/grades.csv
+check "eli's build outputs: not said removed" grep -q \
+    "removed before make: <code>build/$(printf '\nmain.o\nraytra')</code>" one/report.html
+check "eli's points: not 20 of 20" grep -q "6 of 6 scenes pass: 20 of 20 points" one/report.html
+check "ann's points: not 12.7273 of 20 (7 of the scenes' 11, scaled to 20)" \
+    grep -q "5 of 6 scenes pass: 12.7273 of 20 points" one/report.html
+"$grade" -q "$@" --jobs 2 --out two 1.1 class 2>stderr.txt
 check "--jobs 2: the same report and table as --jobs 1" $same one two
 check "--jobs 2: no results file left behind" test -z "$(ls -A two/work | grep results)"
 for k in 1 2 3; do
-    "$grade" -q --shard $k/3 --jobs $((k % 2 + 1)) --out "shard $k" 1.1 class 2>stderr.txt
+    "$grade" -q "$@" --shard $k/3 --jobs $((k % 2 + 1)) --out "shard $k" 1.1 class 2>stderr.txt
     check "shard $k of 3 written" test -f "shard $k/shard.txt" -a ! -e "shard $k/report.html"
 done
 check "shard 1 holds every third submission from the first" \
-    test "$(ls "shard 1/work" | tr '\n' ' ')" = "01-ann 04-dee references "
+    test "$(ls "shard 1/work" | tr '\n' ' ')" = "01-ann 04-dee hidden-scenes references "
 "$grade" merge -q --out merged "shard 3" "shard 1" "shard 2" 2>stderr.txt
 check "merge: exit 0" test $? -eq 0
 check "merge: the same report and table as one run" $same one merged
@@ -93,6 +113,12 @@ cp -R "$refs" other/1.1-spheres-red/
 cp "$refs/demo.png" other/1.1-spheres-red/references/spheres-three.png
 "$grade" -q --shard 2/3 --out moved other/1.1-spheres-red mini 2>stderr.txt
 check_refused "other references or scenes (render spheres-three.png)" "mini 1" moved "mini 3"
+printf 'spheres-three 2\n' >other.conf
+"$grade" -q --shard 2/3 --out pointed --grading-conf other.conf 1.1 mini 2>stderr.txt
+check_refused "other references or scenes (render spheres-three.png)" "mini 1" pointed "mini 3"
+printf 'part 7\n' >other.conf
+"$grade" -q --shard 2/3 --out pointed --grading-conf other.conf 1.1 mini 2>stderr.txt
+check_refused "another grading.conf (points" "mini 1" pointed "mini 3"
 "$grade" -q --shard 2/3 --out shaded 1.2 mini 2>stderr.txt
 check_refused "another part" "mini 1" shaded "mini 3"
 cp -R mini smaller
@@ -163,6 +189,14 @@ check "--jobs 2 interrupted: exit 130" test $? -eq 130
 check "--jobs 2 interrupted: no report" test ! -e stopped/report.html
 check "--jobs 2 interrupted: no program left running" \
     test -z "$(ps -eo args | grep -x 'sleep 60')"
+"$grade" --shard 1/2 --out stopped-shard 1.1 slow 2>stderr.txt &
+pid=$!
+sleep 2
+kill -INT $pid
+wait $pid
+check "a shard interrupted: exit 130" test $? -eq 130
+check "a shard interrupted: says no report, or not that its shard.txt was not written" \
+    sh -c '! grep -q "no report" stderr.txt && grep -q "the shard.s results (shard.txt) were not written" stderr.txt'
 
 if [ "$failures" -eq 0 ]; then
     echo "grade-class.sh: all $checks checks passed"

@@ -155,10 +155,16 @@ yes "chatty" | head -c 3000000
 printf '\nLAST LINE\n'
 exec "$raytra" "\$@"
 EOF
+# The copier copies the references it carries, as a starter carries them, beside its
+# program; correct-program carries them too, and writes the same bytes by rendering.
 script_submission copier <<EOF
 #!/bin/sh
-exec cp "$refs/\$(basename "\$2")" "\$2"
+exec cp "\$(dirname "\$0")/milestones/1.1-spheres-red/references/\$(basename "\$2")" "\$2"
 EOF
+for who in copier correct-program; do
+    mkdir -p "class/$who/milestones/1.1-spheres-red" &&
+        cp -R "$refs" "class/$who/milestones/1.1-spheres-red/" || exit 2
+done
 c_submission greedy <<'EOF'
 #include <stdio.h>
 #include <stdlib.h>
@@ -241,7 +247,7 @@ csv="out dir/grades.csv"
 grep -v '^"' "$csv" | cut -d, -f1-3 >verdicts.txt
 check "the verdicts differ from those expected" cmp -s expected.txt verdicts.txt ||
     diff expected.txt verdicts.txt | sed 's/^/    | /'
-check "the CSV's header" grep -qx 'submission,scene,verdict,max_diff_r,max_diff_g,max_diff_b,mean_abs_diff,rmse,psnr_db,differing_pixels,differing_fraction,bbox,message,seconds,flag' "$csv"
+check "the CSV's header" grep -qx 'submission,scene,verdict,max_diff_r,max_diff_g,max_diff_b,mean_abs_diff,rmse,psnr_db,differing_pixels,differing_fraction,bbox,message,seconds,flag,points' "$csv"
 check "the strange name's rows, quoted" \
     test "$(grep -c "^\"o'brien, \"\"jo\"\" <b>&amp;\",[a-z-]*,PASS," "$csv")" -eq 5
 
@@ -270,15 +276,17 @@ has 'missing-one,demo,MISSING,,,,,,,,,,"no demo.png, .pfm or .exr in the submiss
 has 'build-fails,demo,BUILD FAILED,,,,,,,,,,make failed (exit status 2),'
 # The moved sphere's figures, in their form: their last digits may change with the compiler.
 number='[0-9.e-]+'
-check "the figures of a failed image" grep -qE "^slightly-wrong,spheres-three,FAIL,1,0,0,$number,$number,$number,[0-9]+,$number,\"\\([0-9]+,[0-9]+\\)-\\([0-9]+,[0-9]+\\)\",\"$number% of the pixels differ by more than 2/255, more than the 0.1% allowed\",,\$" "$csv"
+check "the figures of a failed image" grep -qE "^slightly-wrong,spheres-three,FAIL,1,0,0,$number,$number,$number,[0-9]+,$number,\"\\([0-9]+,[0-9]+\\)-\\([0-9]+,[0-9]+\\)\",\"$number% of the pixels differ by more than 2/255, more than the 0.1% allowed\",,,0\$" "$csv"
 has 'correct,demo,PASS,0,0,0,0,0,inf,0,0,,identical to the reference,'
 # A byte-for-byte copy of a reference file is flagged, handed in or written; an image equal
 # in its pixels but written otherwise (a PFM) is not.
-has 'correct,demo,PASS,0,0,0,0,0,inf,0,0,,identical to the reference,,copy'
+has 'correct,demo,PASS,0,0,0,0,0,inf,0,0,,identical to the reference,,copy,1'
 check "a program's copy of a reference flagged" \
-    test "$(grep -c '^copier,[a-z-]*,PASS,.*,identical to the reference,[0-9.]*,copy$' "$csv")" -eq 5
-check "an equal image written otherwise flagged" test -z "$(grep '^pfm,.*,copy$' "$csv")"
-check "a FAIL flagged" test -z "$(grep ',FAIL,.*,copy$' "$csv")"
+    test "$(grep -c '^copier,[a-z-]*,PASS,.*,identical to the reference,[0-9.]*,copy,1$' "$csv")" -eq 5
+check "an equal image written otherwise flagged" test -z "$(grep '^pfm,.*,copy,[0-9.]*$' "$csv")"
+check "a program that renders the references' bytes flagged" \
+    test -z "$(grep '^correct-program,.*,copy,[0-9.]*$' "$csv")"
+check "a FAIL flagged" test -z "$(grep ',FAIL,.*,copy,[0-9.]*$' "$csv")"
 check "the copies flagged in the report" grep -q 'class="badge flag"[^>]*>COPY<' "out dir/report.html"
 
 # The report: there, whole, self-contained, escaped.
@@ -504,6 +512,64 @@ check "--self: the failure and its heat map" grep -qx ' *heat map: .*/self-out/w
 self=$tmp/self-out/work/1-self
 check "--self: a crash's command line" grep -qxF \
     "             command: cd $self/run && ../build/raytra $top/scenes/demo.scn ../images/demo.png" stdout.txt
+
+# --self of the folder the student is in: named by the folder's own name, not ".".
+(cd class/self-check && "$grade" --self -q --out ../../dot-out --junit ../../dot.xml 1.1 . \
+    >../../stdout.txt 2>../../stderr.txt)
+check "--self .: the CSV names the folder '.'" grep -q '^self-check,demo,PASS,' dot-out/grades.csv
+check "--self .: the JUnit file names the folder '.'" grep -q '<testsuite name="self-check"' dot.xml
+
+# Build outputs from another machine, make's targets up to date: removed, and the program
+# built from its sources; the report says what was removed.
+script_submission stale <<EOF
+#!/bin/sh
+exec "$raytra" "\$@"
+EOF
+mkdir class-stale && mv class/stale class-stale/ &&
+    mkdir -p class-stale/stale/build-sanitize/common class-stale/stale/common || exit 2
+printf '#!/bin/sh\nexit 7\n' >class-stale/stale/raytra
+chmod +x class-stale/stale/raytra
+printf 'not an object of this machine\n' >class-stale/stale/common/image.o
+cp class-stale/stale/common/image.o class-stale/stale/build-sanitize/common/
+touch class-stale/stale/common/libraytra.a class-stale/stale/common/image.d
+touch -d '2030-01-01' class-stale/stale/raytra
+"$grade" -q --out stale-out 1.1 class-stale 2>stderr.txt
+check "stale build outputs: not every scene passes" \
+    test "$(grep -c '^stale,[a-z-]*,PASS,' stale-out/grades.csv)" -eq 5
+check "stale build outputs: the report does not say what was removed" grep -qF \
+    "removed before make: <code>build-sanitize/
+common/image.d
+common/image.o
+common/libraytra.a
+raytra</code>" stale-out/report.html
+check "stale build outputs: the submission itself changed" test -f class-stale/stale/common/image.o
+
+# The instructor's controls: grading.conf's errors, each said with its file and line.
+conf_refused() {
+    printf '%s\n' "$1" >bad.conf
+    checks=$((checks + 1))
+    "$grade" -q --grading-conf bad.conf --out conf-out 1.1 small >stdout.txt 2>stderr.txt
+    status=$?
+    [ "$status" -eq 2 ] && grep -qF -- "grade: bad.conf:$2" stderr.txt ||
+        { fail "grading.conf '$1': status $status, no 'bad.conf:$2'"; sed 's/^/    | /' stderr.txt; }
+}
+conf_refused "demo 2 after_deadline" "1: 'after_deadline' is not a visibility"
+conf_refused "$(printf '# points\ndemo two')" "2: 'two' is not a number of points"
+conf_refused "demo -1" "1: '-1' is not a number of points"
+conf_refused "nowhere 1" "1: no scene 'nowhere' in renders.txt"
+conf_refused "$(printf 'part 10\npart 20')" "2: expected 'part POINTS', once"
+conf_refused "demo 1 visible extra" "1: expected 'SCENE POINTS [VISIBILITY]'"
+conf_refused "hidden" "1: expected 'hidden FOLDER'"
+conf_refused "$(printf 'part 5\n* 0')" "1: the part is worth 5 points but its scenes are worth none"
+printf 'hidden no-such-folder\n' >bad.conf
+"$grade" -q --grading-conf bad.conf --out conf-out 1.1 small >stdout.txt 2>stderr.txt
+check "grading.conf's hidden folder not there: not refused" grep -q "no folder of hidden scenes" stderr.txt
+mkdir -p own
+printf 'demo.png own.scn\n' >own/renders.txt
+cp "$top/scenes/demo.scn" own/own.scn
+"$grade" -q --hidden own --out conf-out 1.1 small >stdout.txt 2>stderr.txt
+check "a hidden scene named as a shipped one: not refused" \
+    grep -q "own/renders.txt:1: a scene named demo is graded already" stderr.txt
 
 # The command line, and troubles found before any grading.
 refuse() {

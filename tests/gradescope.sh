@@ -16,7 +16,11 @@
 # parsed with jq and checked as UTF-8 with iconv, then field by field. Run as root, the
 # submissions run as a student's uid and the grader as a grader's, two numbers no user
 # has (no user is made here), which is checked; otherwise as the current user, which the
-# test says. The correct submission's grading time is printed.
+# test says. The correct submission's grading time is printed. Then a second zip, with a
+# grading.conf (a part's total, points and visibilities) and two hidden scenes of the
+# test's own (GRADING_CONF=, its `hidden` line): the correct submission scores them all,
+# each test with its points and visibility, and a program that copies the references its
+# folder carries fails the hidden scenes.
 set -u
 top=$(cd "$(dirname "$0")/.." && pwd) || exit 2
 for tool in zip unzip jq iconv; do
@@ -38,8 +42,9 @@ field() {
 }
 
 # The zip, and what it holds.
-make --no-print-directory -s -C "$top" gradescope PART=1.3 OUT="$tmp/autograder.zip" ||
-    { echo "gradescope.sh: make gradescope failed" >&2; exit 1; }
+make --no-print-directory -s -C "$top" gradescope PART=1.3 OUT="$tmp/autograder.zip" \
+    >"$tmp/pack.log" 2>&1 ||
+    { echo "gradescope.sh: make gradescope failed:" >&2; cat "$tmp/pack.log" >&2; exit 1; }
 unzip -Z1 "$tmp/autograder.zip" | grep -v '/$' | sort >"$tmp/zipped"
 for file in setup.sh run_autograder gradescope.conf tools/grade.c tools/deps.sh \
     milestones/$part/references/renders.txt milestones/$part/references/demo.png \
@@ -146,7 +151,9 @@ autograde "$correct"
 seconds=$(($(date +%s) - start))
 check_results 8 "" ""
 check "the summary does not say 8 of 8" test "$(field '.output |
-    startswith("Part 1.3-shadows-mirror: 8 of 8 scenes pass.")')" = true
+    startswith("Part 1.3-shadows-mirror: 8 of 8 scenes pass: 8 of 8 points.")')" = true
+check "no execution_time, or a test without one" test "$(field '[.execution_time,
+    .tests[].execution_time] | map(numbers | select(. >= 0)) | length')" = 9
 check "a correct scene is not identical" test "$(field '[.tests[].output |
     startswith("PASS: identical to the reference.")] | all')" = true
 budget=$(sed -n 's/^BUDGET=//p' "$root/source/gradescope.conf")
@@ -196,6 +203,71 @@ check "cut short: the score is not 0" test "$(field .score)" = 0
 check "cut short: the output does not say why" \
     test "$(field '.output | test("did not finish within 5 s")')" = true
 check "cut short: tests were given" test "$(field '.tests')" = '[]'
+
+# The instructor's controls: a zip with a grading.conf (points, visibilities, the part's
+# total) and hidden scenes of the instructor's own, their references rendered into the zip.
+echo "== controls: points, visibilities and two hidden scenes"
+mkdir "$tmp/hidden"
+sed 's/^s 0 20 -10   10$/s 3 22 -10   9/' "$top/scenes/shadow-sphere.scn" >"$tmp/hidden/own-shadow.scn"
+sed 's/^c 0 38 125 /c 9 36 125 /' "$top/scenes/demo.scn" >"$tmp/hidden/own-demo.scn"
+check "the hidden scenes are the shipped ones" sh -c '! cmp -s "$1" "$2" && ! cmp -s "$3" "$4"' sh \
+    "$tmp/hidden/own-shadow.scn" "$top/scenes/shadow-sphere.scn" "$tmp/hidden/own-demo.scn" "$top/scenes/demo.scn"
+mkdir "$tmp/hidden/meshes" && cp "$top/scenes/meshes/icosahedron.obj" "$tmp/hidden/meshes/" || exit 2
+printf '# the instructor'"'"'s own\nown-shadow.png own-shadow.scn\nown-demo.png own-demo.scn\n' \
+    >"$tmp/hidden/renders.txt"
+cat >"$tmp/grading.conf" <<EOF
+# part 1.3, as a course weighs it
+part 50
+hidden hidden
+*            1
+demo         2   after_published
+own-demo     3   hidden
+EOF
+make --no-print-directory -s -C "$top" gradescope PART=1.3 OUT="$tmp/controls.zip" \
+    GRADING_CONF="$tmp/grading.conf" >"$tmp/pack.log" 2>&1 ||
+    { echo "gradescope.sh: make gradescope with controls failed:" >&2; cat "$tmp/pack.log" >&2; exit 1; }
+check "make gradescope does not say the next steps" grep -q "^Next steps" "$tmp/pack.log"
+check "make gradescope does not say how to try it locally" grep -q "AUTOGRADER_ROOT=" "$tmp/pack.log"
+unzip -Z1 "$tmp/controls.zip" >"$tmp/zipped"
+for file in hidden/renders.txt hidden/own-demo.scn hidden/references/own-demo.png \
+    hidden/references/own-shadow.png milestones/$part/references/grading.conf; do
+    check "the zip with controls has no $file" grep -qx "$file" "$tmp/zipped"
+done
+rm -rf "$root/source" && mkdir -p "$root/source" && unzip -q "$tmp/controls.zip" -d "$root/source" ||
+    exit 2
+sh "$root/source/setup.sh" --build-only >"$tmp/setup.log" 2>&1 || { tail "$tmp/setup.log"; exit 1; }
+autograde "$correct"
+check "controls: the score is not 50" test "$(field .score)" = 50
+check "controls: not 10 tests" test "$(field '.tests | length')" = 10
+check "controls: the points are not 1 a scene, demo 2, own-shadow 1, own-demo 3, scaled to 50" \
+    test "$(field '[.tests[] | .max_score * 13 / 50 | round]')" = '[1,1,1,1,1,1,1,2,1,3]'
+check "controls: the visibilities" test "$(field '[.tests[].visibility]')" = \
+    '["visible","visible","visible","visible","visible","visible","visible","after_published","after_due_date","hidden"]'
+check "controls: the summary gives no points" \
+    test "$(field '.output | startswith("Part 1.3-shadows-mirror: 10 of 10 scenes pass: 50 of 50 points.")')" = true
+if [ "$(id -u)" -eq 0 ]; then
+    check "controls: the student's uid can read a hidden reference" sh -c '! setpriv \
+        --reuid="$AUTOGRADER_USER" --regid="$AUTOGRADER_USER" --clear-groups \
+        cat "$1" >/dev/null 2>&1' sh "$root/source/hidden/references/own-demo.png"
+    check "controls: the grader's uid cannot read a hidden reference" setpriv \
+        --reuid="$AUTOGRADER_GRADER_USER" --regid="$AUTOGRADER_GRADER_USER" --clear-groups \
+        cat "$root/source/hidden/references/own-demo.png" >/dev/null
+else
+    echo "gradescope.sh: not root: the hidden references' protection from the student's user" \
+        "is not tried"
+fi
+# A program that copies the references its folder carries: the hidden scenes fail.
+cp -R "$correct" "$tmp/copier"
+cat >"$tmp/copier/raytra.sh" <<'EOF'
+#!/bin/sh
+exec cp "$(dirname "$0")/milestones/1.3-shadows-mirror/references/$(basename "$2")" "$2"
+EOF
+printf 'raytra: raytra.sh\n\tcp raytra.sh raytra\n\tchmod +x raytra\n' >"$tmp/copier/Makefile"
+autograde "$tmp/copier"
+check "controls: the copier passes a hidden scene" test "$(field '[.tests[] |
+    select(.status == "failed") | .name | sub(" .*"; "")]')" = '["own-shadow","own-demo"]'
+check "controls: the copier's score is not 9 of 13, scaled to 50" \
+    test "$(field '.score * 13 / 50 | round')" = 9
 
 if [ $failures -eq 0 ]; then
     echo "gradescope.sh: all $checks checks passed"

@@ -5,7 +5,8 @@
 #   GRADE   the grader, tools/build/grade, with imgdiff beside it
 #
 # The class, made here in a temporary folder: the references handed in as they are; a
-# folder with one image missing and one that is no image; a program that crashes; and a
+# folder with one image missing and one that is no image; a folder named with a dot (its
+# classname has none); a program that crashes; and a
 # program in a folder whose name holds every byte XML and UTF-8 refuse (control
 # characters, invalid UTF-8, quotes, "]]>"), that prints such bytes and fails. Checks that
 # xmllint validates the file against tests/junit.xsd (xmllint is libxml2-utils; the test
@@ -29,6 +30,9 @@ xpath() {
 
 mkdir -p class/correct class/wrong class/crashing
 cp "$refs"/*.png class/correct/
+# A name with a dot, which Jenkins would split into a package and a class.
+mkdir class/barbara.liskov
+cp "$refs"/*.png class/barbara.liskov/
 cp "$refs"/*.png class/wrong/
 rm class/wrong/demo.png
 echo "not an image" >class/wrong/spheres-three.png
@@ -62,12 +66,15 @@ if command -v xmllint >/dev/null 2>&1; then
     xmllint --noout --schema "$top/tests/junit.xsd" report.xml >valid.log 2>&1
     check "report.xml is not valid against tests/junit.xsd: $(head -n 5 valid.log)" \
         test "$(cat valid.log)" = "report.xml validates"
-    # 4 submissions of 5 scenes: 10 pass; 2 failures (UNREADABLE, MISSING); 5 CRASHED
+    # 5 submissions of 5 scenes: 15 pass; 2 failures (UNREADABLE, MISSING); 5 CRASHED
     # and 5 ERROR are errors.
     totals=$(xpath 'concat(/*/@tests, " ", /*/@failures, " ", /*/@errors)')
-    check "the totals (tests, failures, errors) are $totals, not 20 2 10" test "$totals" = "20 2 10"
-    check "not 20 test cases" test "$(xpath 'count(//testcase)')" = 20
-    check "not 4 test suites" test "$(xpath 'count(/testsuites/testsuite)')" = 4
+    check "the totals (tests, failures, errors) are $totals, not 25 2 10" test "$totals" = "25 2 10"
+    check "not 25 test cases" test "$(xpath 'count(//testcase)')" = 25
+    check "not 5 test suites" test "$(xpath 'count(/testsuites/testsuite)')" = 5
+    check "a dotted name's classname is not barbara_liskov, its suite's name not barbara.liskov" \
+        test "$(xpath 'count(//testsuite[@name="barbara.liskov"]/testcase[@classname="barbara_liskov"])')" = 5
+    check "a classname holds a dot" test "$(xpath 'count(//testcase[contains(@classname, ".")])')" = 0
     check "the failures are not one UNREADABLE and one MISSING" test \
         "$(xpath 'concat(//testcase[@classname="wrong" and @name="spheres-three"]/failure/@type,
             " ", //testcase[@classname="wrong" and @name="demo"]/failure/@type)')" = \
@@ -92,7 +99,7 @@ if command -v xmllint >/dev/null 2>&1; then
         "$(xpath 'count(//failure[contains(., "What to do: ")])')" = 2
 else
     echo "junit.sh: no xmllint (Debian: libxml2-utils): the schema and XPath checks are skipped"
-    check "report.xml has no 20 test cases" test "$(grep -c '<testcase ' report.xml)" = 20
+    check "report.xml has no 25 test cases" test "$(grep -c '<testcase ' report.xml)" = 25
 fi
 
 if [ $failures -eq 0 ]; then

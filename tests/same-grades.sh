@@ -14,7 +14,7 @@ set -u
 # Prints file $1 with its times made T.
 untimed() {
     case $1 in
-    *.csv) sed -E 's/,[0-9]+\.[0-9]{3},(copy)?$/,T,\1/' "$1" ;;
+    *.csv) sed -E 's/,[0-9]+\.[0-9]{3},(copy)?,([0-9.e+-]*)$/,T,\1,\2/' "$1" ;;
     *) sed -E 's/graded [0-9]{4}-[0-9]{2}-[0-9]{2} [0-9]{2}:[0-9]{2}/graded T/g
                s/[0-9]+(\.[0-9]+)? ([kMG] )?rays\/s/T rays\/s/g
                s/[0-9]+(\.[0-9]+)? m?s([^a-zA-Z0-9]|$)/T s\2/g' "$1" ;;

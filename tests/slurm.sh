@@ -377,14 +377,24 @@ check "a failed shard: no grades" test ! -e "$broken/grades.csv"
 check "a failed shard: its log says so" grep -q "shard 2 ended with exit status 2" "$broken/slurm/shard-2.log"
 check "a failed shard: the merge's log says why" grep -qF "grade: no shard folder $broken/shards/2" \
     "$broken/slurm/merge.log"
-check "a failed shard: the merge's log says what to do" grep -q "sbatch --array=K shard.sh" \
-    "$broken/slurm/merge.log"
+check "a failed shard: the merge's log does not name shard 2" \
+    grep -q "^It writes no report. Shard 2 of 3 wrote no results" "$broken/slurm/merge.log"
+# The recipe as the merge's log prints it: its two sbatch lines, JOBID the first one's.
+rerun=$(sed -n 's/^    \(sbatch --parsable --array=2 .*shard\.sh\) .*/\1/p' "$broken/slurm/merge.log")
+remerge=$(sed -n 's/^    \(sbatch --dependency=afterany:JOBID .*merge\.sh\)$/\1/p' "$broken/slurm/merge.log")
+check "a failed shard: the merge's log says no sbatch line for shard 2" test -n "$rerun"
+check "a failed shard: the merge's log says no sbatch line for the merge" test -n "$remerge"
 check "--jobs 2: 2 CPUs a shard" grep -qx '#SBATCH --cpus-per-task="2"' "$broken/slurm/shard.sh"
+cp "$broken/slurm/shard-2.log" "$broken/slurm/merge.log" "$tmp/"
 rm "$broken/shards/2"
-again=$(cd "$broken/slurm" && sbatch --parsable --array=2 shard.sh)
-merge_job=$(cd "$broken/slurm" && sbatch --parsable --dependency="afterany:$again" merge.sh)
+again=$(cd "$broken/slurm" && eval "$rerun")
+merge_job=$(cd "$broken/slurm" && eval "$(echo "$remerge" | sed "s/JOBID/$again/; s/^sbatch /sbatch --parsable /")")
 wait_job "$merge_job" "$broken/report.html"
 check "the shard graded again: the merge job completed" test "$(job_state "$merge_job")" = COMPLETED
+check "the first run's shard log was overwritten" cmp -s "$tmp/shard-2.log" "$broken/slurm/shard-2.log"
+check "the first run's merge log was overwritten" cmp -s "$tmp/merge.log" "$broken/slurm/merge.log"
+check "the shard graded again has no log of its own" test -s "$broken/slurm/shard-2-again-$again.log"
+check "the merge again has no log of its own" test -s "$broken/slurm/merge-again-$merge_job.log"
 checks=$((checks + 1))
 if ! sh "$top/tests/same-grades.sh" "$tmp/local" "$broken" >same.txt 2>&1; then
     fail "the report merged again differs from the local one"

@@ -14,6 +14,7 @@
 #include <unistd.h>
 
 #include "imgdiff.h"
+#include "progress.h"
 #include "stop.h"
 #include "toolopt.h"
 
@@ -59,6 +60,10 @@ static const GradeOption options[] = {
       "a submission and scene", NULL}, OPT_TEXT, offsetof(Grading, junit)},
     {{"gradescope", 0, "FILE", "with --self: also write Gradescope's results.json",
       NULL}, OPT_TEXT, offsetof(Grading, gradescope)},
+    {{"hidden", 0, "DIR", "also grade the instructor's own scenes of DIR\n(its renders.txt; "
+      "default: grading.conf's 'hidden')", NULL}, OPT_TEXT, offsetof(Grading, hidden)},
+    {{"grading-conf", 0, "FILE", "the points and visibility of the scenes (default:\n"
+      "the part's references/grading.conf)", NULL}, OPT_TEXT, offsetof(Grading, conf)},
     {{"self", 0, NULL, "FOLDER is one student's program (or images): grade\nit alone, "
       "print each scene's verdict and heat map,\nand exit 1 unless every scene passes", NULL},
      OPT_FLAG, offsetof(Grading, self)},
@@ -320,7 +325,7 @@ bool grade_prepare_out(Grading *g)
         contain_release(g->work);
     char *anew[] = {"sh", "-c",
                     "chmod -R u+rwX -- \"$1\"; rm -rf -- \"$1\" && mkdir -- \"$1\" "
-                    "\"$1/references\" && echo \"grade's work folder: each run of grade with this "
+                    "\"$1/references\" \"$1/canaries\" && chmod 700 -- \"$1/references\" && echo \"grade's work folder: each run of grade with this "
                     "--out removes it and makes it anew.\" >\"$1/.made-by-grade\"",
                     "sh", g->work, NULL};
     return run_program(anew, NULL, NULL, 600, 0).ok ||
@@ -388,19 +393,23 @@ int main(int argc, char **argv)
     g.submissions = argv[optind + 1];
     FILE *none = g.quiet ? fopen("/dev/null", "w") : NULL;
     g.progress = none != NULL ? none : stderr;
+    g.began = clock_now();
     time_t now = time(NULL);
     strftime(g.started, sizeof g.started, "%Y-%m-%d %H:%M", localtime(&now));
     run_init();
     bool ok = contain_start(g.run_as, g.grader_user, g.jobs) && find_top(&g) && part_find(&g, argv[optind]) && shard_parse(&g) &&
               (grade_kind(g.submissions) == S_IFDIR ||
                grade_fail("no folder %s", g.submissions)) &&
-              part_read_renders(&g) && grade_prepare_out(&g) && show_references(&g) &&
-              submission_list(&g) && (shard_select(&g), jobs_grade_all(&g)) &&
+              part_read_renders(&g) && part_read_conf(&g) && grade_prepare_out(&g) &&
+              part_render_hidden(&g) && show_references(&g) &&
+              (part_make_canaries(&g), submission_list(&g)) && (shard_select(&g), jobs_grade_all(&g)) &&
               (g.shard_n > 0 ? shard_write(&g) : report_write(&g)) &&
               (g.junit == NULL || export_junit(&g, g.junit)) &&
               (g.gradescope == NULL || export_gradescope(&g, g.gradescope));
     if (stop_requested()) {
-        grade_fail("interrupted: no report written");
+        grade_fail(g.shard_n > 0 ? "interrupted: the shard's results (shard.txt) were not "
+                                   "written: grade the shard again"
+                                 : "interrupted: no report written");
         return EXIT_INTERRUPTED;
     }
     if (!ok)

@@ -51,6 +51,14 @@ typedef struct {
                            * from argv[RENDER_WORDS] on the positional words, NULL-ended */
     char *reference;      /* the reference image's path */
     char *reference_show; /* its thumbnail for the report */
+    char **model;         /* a hidden scene's reference: the model answer's command line, every
+                           * word of renders.txt (the program and image set when it runs) */
+    double points;        /* what passing it is worth (grading.conf; 1 by default) */
+    const char *visibility; /* Gradescope's: visible, hidden, after_due_date, after_published */
+    bool hidden;          /* an instructor's own scene (--hidden), shipped in no starter */
+    char *canary;         /* the reference's bytes marked as the grader's (a PNG with a text
+                           * chunk more): what a program that copies the file it found in its
+                           * own folder writes; NULL for a reference that is no PNG */
 } Render;
 
 /* The grading of one scene of one submission. */
@@ -77,6 +85,7 @@ typedef struct {
     char *link;           /* the folder is a symbolic link to this: not graded; or NULL */
     char *build_message;  /* why the build failed; NULL when it did not */
     char *build_log_tail; /* the end of make's output, or NULL */
+    char *removed;        /* the build outputs it carried, removed before make, or NULL */
     SceneResult *results; /* one a render */
     int tally[TALLY_COUNT];
 } Submission;
@@ -108,12 +117,16 @@ typedef struct {
     int shard_k, shard_n;    /* this run grades the k-th of n slices (1 <= k <= n); n 0: all */
     const char *junit;       /* --junit: a JUnit XML file to write too, or NULL */
     const char *gradescope;  /* --gradescope: Gradescope's results.json to write too, or NULL */
+    const char *hidden;      /* --hidden: the folder of the instructor's own scenes, or NULL */
+    const char *conf;        /* --grading-conf: points and visibility; NULL: the part's */
+    double part_points;      /* what the whole part is worth (grading.conf); 0: the sum */
     char **members;          /* the names of the whole class, of which subs may be a slice */
     int member_count;
     char *heading;           /* a shard read back: what merge checks to be the same in all */
     bool merging;            /* grade merge: no class is read, no program run */
     FILE *progress;          /* where progress lines and notes go: stderr, or with quiet none */
     char started[32];        /* when grading began, for the report */
+    double began;            /* when grading began, from clock_now: results.json's time */
 } Grading;
 
 /* How a child ended: status is the exit status (RUN_EXITED), the signal (RUN_KILLED) or the
@@ -155,6 +168,10 @@ bool grade_prepare_out(Grading *g);
 /* grade_part.c */
 bool part_find(Grading *g, const char *part);
 bool part_read_renders(Grading *g);
+bool part_read_conf(Grading *g);
+bool part_render_hidden(Grading *g);
+void part_make_canaries(Grading *g);
+double part_points(const Grading *g, const Submission *s, double *max);
 
 /* grade_submission.c */
 bool submission_list(Grading *g);

@@ -4,6 +4,8 @@
 #include <math.h>
 #include <string.h>
 
+#include "progress.h"
+
 /* Reads the UTF-8 character that starts at s: returns its length in bytes and sets *code,
  * or returns 0 for a byte that starts no valid character (a stray continuation byte, a
  * sequence cut short, an overlong form, a surrogate, a code point past U+10FFFF). */
@@ -229,8 +231,13 @@ static void write_junit(FILE *f, const Grading *g)
                                    res->log_tail != NULL ? res->log_tail : "(nothing)"));
             fputs("    <testcase name=\"", f);
             put_xml(f, g->renders[k].name, true);
+            /* Jenkins splits a classname at its last dot into a package and a class: the
+             * name's dots are written '_' here; the testsuite keeps the name as it is. */
             fputs("\" classname=\"", f);
-            put_xml(f, s->name, true);
+            char *classname = grade_format("%s", s->name);
+            for (char *p = strchr(classname, '.'); p != NULL; p = strchr(p, '.'))
+                *p = '_';
+            put_xml(f, classname, true);
             fprintf(f, "\" time=\"%.3f\">\n", res->seconds);
             if (v->tally != TALLY_PASS) {
                 const char *element = v->tally == TALLY_ERROR ? "error" : "failure";
@@ -257,8 +264,16 @@ static void write_junit(FILE *f, const Grading *g)
  * output; a folder with no Makefile and no image), or how the scenes were run. */
 static char *summary(const Grading *g, const Submission *s)
 {
-    char *head = grade_format("Part %s: %d of %d scene%s pass.\n\n", g->part, s->tally[TALLY_PASS],
-                              g->render_count, plural(g->render_count));
+    double max, got = part_points(g, s, &max);
+    char *head = grade_format("Part %s: %d of %d scene%s pass: %g of %g points.\n\n%s", g->part,
+                              s->tally[TALLY_PASS], g->render_count, plural(g->render_count),
+                              got, max,
+                              s->removed == NULL
+                                  ? ""
+                                  : grade_format("The submission carried build outputs, "
+                                                 "removed before make so that raytra is built "
+                                                 "from its sources:\n%s\n\n",
+                                                 s->removed));
     if (s->build_message != NULL)
         return grade_format("%sThe build failed: %s. No scene could be run.\nRun make in a "
                             "fresh copy of what you handed in and mend the first error it "
@@ -283,12 +298,18 @@ static char *summary(const Grading *g, const Submission *s)
         grade_size_text(g->memory_limit));
 }
 
-/* Writes results.json for the one submission of --self: the score, a scene passed a point;
- * the summary; a test a scene with its verdict, figures and what to do. */
+/* Writes results.json for the one submission of --self: the score, each scene that passes
+ * worth its points (grading.conf, scaled to the part's); the summary; the time it took; a
+ * test a scene with its points, visibility, time, verdict, figures and what to do. */
 static void write_results(FILE *f, const Grading *g)
 {
     const Submission *s = &g->subs[0];
-    fprintf(f, "{\n  \"score\": %d,\n  \"output\": ", s->tally[TALLY_PASS]);
+    double max, got = part_points(g, s, &max), all = 0;
+    for (int k = 0; k < g->render_count; k++)
+        all += g->renders[k].points;
+    double scale = max > 0 && all > 0 ? max / all : 1;
+    fprintf(f, "{\n  \"score\": %.6g,\n  \"execution_time\": %.3f,\n  \"output\": ", got,
+            clock_now() - g->began);
     put_json(f, summary(g, s));
     fputs(",\n  \"output_format\": \"text\",\n  \"visibility\": \"visible\",\n"
           "  \"stdout_visibility\": \"hidden\",\n  \"tests\": [",
@@ -299,11 +320,14 @@ static void write_results(FILE *f, const Grading *g)
         fprintf(f, "%s\n    {\n      \"name\": ", k > 0 ? "," : "");
         put_json(f, grade_format("%s (%s)", r->name, r->scene));
         fprintf(f,
-                ",\n      \"score\": %d,\n      \"max_score\": 1,\n      \"status\": \"%s\",\n"
-                "      \"output\": ",
-                pass, pass ? "passed" : "failed");
+                ",\n      \"score\": %.6g,\n      \"max_score\": %.6g,\n      \"status\": "
+                "\"%s\",\n      \"execution_time\": %.3f,\n      \"output\": ",
+                pass ? r->points * scale : 0, r->points * scale, pass ? "passed" : "failed",
+                s->results[k].seconds);
         put_json(f, scene_text(g, s, k, false));
-        fputs(",\n      \"output_format\": \"text\",\n      \"visibility\": \"visible\"\n    }", f);
+        fputs(",\n      \"output_format\": \"text\",\n      \"visibility\": ", f);
+        put_json(f, r->visibility);
+        fputs("\n    }", f);
     }
     fputs("\n  ]\n}\n", f);
 }

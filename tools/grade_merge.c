@@ -48,6 +48,7 @@ static char *difference(const char *a, const char *b)
         {"submissions", "another class folder"},
         {"tolerances", "other tolerances"},
         {"limits", "other limits"},
+        {"points", "another grading.conf"},
         {"illustrations", "other references"},
         {"render", "other references or scenes"},
         {"class", "another class: other submissions"},

@@ -5,6 +5,8 @@
 #include <limits.h>
 #include <stdlib.h>
 #include <string.h>
+#include <time.h>
+#include <unistd.h>
 
 #include "array.h"
 #include "cli.h"
@@ -74,9 +76,11 @@ static void make_argv(Render *r, char *scene_path, char **words, int n,
 }
 
 /* Adds the render of a renders.txt line (its words) to g, or its name to the illustrations
- * (marked '!': raytra's own pictures, graded on no student); false (reported) when the line
- * is not a valid one or names a file that is not there. */
-static bool add_render(Grading *g, char **words, int n, const char *where)
+ * (marked '!': raytra's own pictures, graded on no student); scenes are read from `base`,
+ * references from `references` (a hidden scene's: NULL, rendered later); false (reported)
+ * when the line is not a valid one or names a file that is not there. */
+static bool add_render(Grading *g, char **words, int n, const char *where, const char *base,
+                       const char *references)
 {
     /* ~IMAGE: a Monte Carlo render, judged against its statistical reference NAME.stats.exr. */
     bool statistical = words[0][0] == '~';
@@ -90,26 +94,40 @@ static bool add_render(Grading *g, char **words, int n, const char *where)
     if (n < 2 || strchr(image, '/') != NULL || image_format_for_path(image) == IMAGE_FORMAT_UNKNOWN)
         return grade_fail("%s: expected IMAGE SCENE [options], IMAGE a .png, .pfm or .exr name",
                           where);
+    if (references == NULL && statistical)
+        return grade_fail("%s: a hidden scene cannot be a Monte Carlo render (~IMAGE)", where);
+    for (int k = 0; k < g->render_count; k++)
+        if (strncmp(g->renders[k].name, image, (size_t)stem) == 0 &&
+            g->renders[k].name[stem] == '\0')
+            return grade_fail("%s: a scene named %.*s is graded already", where, stem, image);
     Render *r = &g->renders[g->render_count++];
-    *r = (Render){.image = grade_format("%s", image), .scene = grade_format("%s", words[1])};
+    *r = (Render){.image = grade_format("%s", image), .scene = grade_format("%s", words[1]),
+                  .points = 1, .visibility = "visible", .hidden = references == NULL};
     r->name = grade_format("%.*s", stem, image);
-    r->reference = statistical ? grade_format("%s/%.*s.stats.exr", g->references, stem, image)
-                               : grade_format("%s/%s", g->references, image);
-    char *scene_path = words[1][0] == '/' ? r->scene : grade_format("%s/%s", g->top, words[1]);
+    r->reference = r->hidden              ? NULL
+                   : statistical          ? grade_format("%s/%.*s.stats.exr", references, stem, image)
+                                          : grade_format("%s/%s", references, image);
+    char *scene_path = words[1][0] == '/' ? r->scene : grade_format("%s/%s", base, words[1]);
     make_argv(r, scene_path, words + 2, n - 2, part_options_of(g->part), g->progress);
+    /* The model answer renders a hidden scene's reference with every word of its line. */
+    r->model = grade_alloc(((size_t)n + 2) * sizeof *r->model);
+    r->model[1] = scene_path;
+    for (int k = 2; k < n; k++)
+        r->model[k + 1] = grade_format("%s", words[k]);
     if (grade_kind(scene_path) != S_IFREG)
         return grade_fail("%s: no scene file %s", where, scene_path);
-    return grade_kind(r->reference) == S_IFREG ||
+    return r->hidden || grade_kind(r->reference) == S_IFREG ||
            grade_fail("%s: no reference image %s (make references makes it)", where, r->reference);
 }
 
-/* Reads references/renders.txt into g->renders; false (reported) when it cannot. */
-bool part_read_renders(Grading *g)
+/* Reads the renders.txt at path into g->renders, its scenes from `base`, its references
+ * from `references` (NULL: hidden scenes); false (reported) when it cannot. */
+static bool read_renders(Grading *g, const char *path, const char *base, const char *references)
 {
-    char *path = grade_format("%s/renders.txt", g->references), *line = NULL;
+    char *line = NULL;
     FILE *f = fopen(path, "r");
     size_t size = 0;
-    int line_number = 0, capacity = 0;
+    int line_number = 0, capacity = g->render_count, before = g->render_count;
     bool ok = f != NULL || grade_fail("cannot read %s: %s", path, strerror(errno));
     while (ok && getline(&line, &size, f) >= 0) {
         line_number++;
@@ -121,11 +139,283 @@ bool part_read_renders(Grading *g)
         char *where = grade_format("%s:%d", path, line_number);
         ok = (array_grow(&g->renders, &capacity, g->render_count, sizeof *g->renders) ||
               grade_fail("%s: out of memory", where)) &&
-             add_render(g, w.word, n, where);
+             add_render(g, w.word, n, where, base, references);
     }
-    ok = ok && (g->render_count > 0 || grade_fail("%s lists no images", path));
+    ok = ok && (g->render_count > before || grade_fail("%s lists no images", path));
     free(line);
     if (f != NULL)
         fclose(f);
     return ok;
+}
+
+/* Reads references/renders.txt into g->renders; false (reported) when it cannot. */
+bool part_read_renders(Grading *g)
+{
+    return read_renders(g, grade_format("%s/renders.txt", g->references), g->top, g->references);
+}
+
+/* Returns the path p of a grading.conf line, from the folder `dir` of the file: as it is
+ * when absolute, from HOME when it starts with "~/". */
+static char *conf_path(const char *dir, const char *p)
+{
+    const char *home = getenv("HOME");
+    if (strncmp(p, "~/", 2) == 0 && home != NULL)
+        return grade_format("%s/%s", home, p + 2);
+    return p[0] == '/' ? grade_format("%s", p) : grade_format("%s/%s", dir, p);
+}
+
+/* Tells whether text is one of Gradescope's visibilities of a test. */
+static bool is_visibility(const char *text)
+{
+    static const char *const all[] = {"visible", "hidden", "after_due_date", "after_published"};
+    for (size_t k = 0; k < sizeof all / sizeof all[0]; k++)
+        if (strcmp(text, all[k]) == 0)
+            return true;
+    return false;
+}
+
+/* Reads a number of points, from 0 to 10000, into *v; false when the word is none. */
+static bool read_points(const char *word, double *v)
+{
+    char *end;
+    *v = strtod(word, &end);
+    return end != word && *end == '\0' && *v >= 0 && *v <= 10000;
+}
+
+/* One scene line of grading.conf, kept until the hidden scenes are read: they may name one. */
+typedef struct {
+    char *name, *where, *visibility;
+    double points;
+} ConfScene;
+
+/* Sets the points and visibility of the scenes a grading.conf line names: all of them for
+ * "*" (the default: set first, so that later lines win), or the one of its name; false
+ * (reported) when no scene has the name. */
+static bool apply_scene(Grading *g, const ConfScene *c)
+{
+    bool found = false;
+    for (int k = 0; k < g->render_count; k++) {
+        Render *r = &g->renders[k];
+        if (strcmp(c->name, "*") != 0 && strcmp(c->name, r->name) != 0)
+            continue;
+        r->points = c->points;
+        r->visibility = c->visibility != NULL ? c->visibility : r->visibility;
+        found = true;
+    }
+    return found || strcmp(c->name, "*") == 0 ||
+           grade_fail("%s: no scene '%s' in renders.txt%s", c->where, c->name,
+                      g->hidden != NULL ? grade_format(" or in %s/renders.txt", g->hidden)
+                                        : " (a hidden scene? the hidden folder is not given)");
+}
+
+/* Reads grading.conf, the instructor's controls (docs/grading.md): the part's points
+ * ("part N"), the folder of hidden scenes ("hidden DIR", unless --hidden names one), and
+ * a line a scene, "NAME POINTS [VISIBILITY]", "*" for every scene not named. With no
+ * grading.conf, every scene is worth 1 point and visible. Reads the hidden scenes' list
+ * too. False (reported, as FILE:LINE: what is wrong) when a line is not right. */
+bool part_read_conf(Grading *g)
+{
+    char *path = g->conf != NULL ? (char *)g->conf : grade_format("%s/grading.conf", g->references);
+    const char *slash = strrchr(path, '/');
+    char *dir = slash != NULL ? grade_format("%.*s", (int)(slash - path), path) : ".";
+    char *line = NULL;
+    FILE *f = fopen(path, "r");
+    if (f == NULL && g->conf == NULL && errno == ENOENT)
+        f = fmemopen("* 1\n", 4, "r");
+    if (f == NULL)
+        return grade_fail("cannot read %s: %s", path, strerror(errno));
+    size_t size = 0;
+    int line_number = 0, count = 0, part_line = 0;
+    int capacity = 0;
+    ConfScene *scenes = NULL;
+    bool ok = true, part_seen = false;
+    while (ok && getline(&line, &size, f) >= 0) {
+        line_number++;
+        Words w;
+        lex_split(line, &w);
+        int n = w.count < LEX_MAX_WORDS ? w.count : LEX_MAX_WORDS;
+        char *where = grade_format("%s:%d", path, line_number);
+        for (int k = 0; k < n; k++)
+            if (w.word[k][0] == '#')
+                n = k; /* a comment to the end of the line */
+        if (n == 0)
+            continue;
+        if (strcmp(w.word[0], "part") == 0)
+            ok = (n == 2 && !part_seen && read_points(w.word[1], &g->part_points) &&
+                  g->part_points > 0) ||
+                 grade_fail("%s: expected 'part POINTS', once: what the part is worth, more "
+                            "than 0 (its scenes' points are scaled to it)", where);
+        else if (strcmp(w.word[0], "hidden") == 0 && n == 2) {
+            if (g->hidden == NULL)
+                g->hidden = conf_path(dir, w.word[1]);
+        } else if (strcmp(w.word[0], "hidden") == 0)
+            ok = grade_fail("%s: expected 'hidden FOLDER': the folder of your own scenes", where);
+        else if (n < 2 || n > 3)
+            ok = grade_fail("%s: expected 'SCENE POINTS [VISIBILITY]', 'part POINTS' or "
+                            "'hidden FOLDER'", where);
+        else if (!read_points(w.word[1], &(double){0}))
+            ok = grade_fail("%s: '%s' is not a number of points from 0 to 10000", where,
+                            w.word[1]);
+        else if (n == 3 && !is_visibility(w.word[2]))
+            ok = grade_fail("%s: '%s' is not a visibility: visible, hidden, after_due_date or "
+                            "after_published", where, w.word[2]);
+        else if (!array_grow(&scenes, &capacity, count, sizeof *scenes))
+            ok = grade_fail("%s: out of memory", where);
+        else {
+            ConfScene *c = &scenes[count++];
+            *c = (ConfScene){.name = grade_format("%s", w.word[0]), .where = where,
+                             .visibility = n == 3 ? grade_format("%s", w.word[2]) : NULL};
+            read_points(w.word[1], &c->points);
+        }
+        if (strcmp(w.word[0], "part") == 0)
+            part_seen = true, part_line = line_number;
+    }
+    free(line);
+    fclose(f);
+    if (ok && g->hidden != NULL)
+        ok = (grade_kind(g->hidden) == S_IFDIR || grade_fail("no folder of hidden scenes %s",
+                                                             g->hidden)) &&
+             read_renders(g, grade_format("%s/renders.txt", g->hidden), g->hidden, NULL);
+    /* The defaults first: a hidden scene is shown once the due date has passed. */
+    for (int k = 0; k < g->render_count; k++)
+        g->renders[k].visibility = g->renders[k].hidden ? "after_due_date" : "visible";
+    for (int pass = 0; pass < 2; pass++)
+        for (int k = 0; ok && k < count; k++)
+            if ((strcmp(scenes[k].name, "*") == 0) == (pass == 0))
+                ok = apply_scene(g, &scenes[k]);
+    free(scenes);
+    double total = 0;
+    for (int k = 0; k < g->render_count; k++)
+        total += g->renders[k].points;
+    return ok && (total > 0 || g->part_points == 0 ||
+                  grade_fail("%s:%d: the part is worth %g points but its scenes are worth none",
+                             path, part_line, g->part_points));
+}
+
+/* Returns what submission s scores, its scenes' points (scaled to the part's, when
+ * grading.conf gives it), and sets *max to the most it could. */
+double part_points(const Grading *g, const Submission *s, double *max)
+{
+    double got = 0, all = 0;
+    for (int k = 0; k < g->render_count; k++) {
+        all += g->renders[k].points;
+        got += s->results[k].verdict == VERDICT_PASS ? g->renders[k].points : 0;
+    }
+    double scale = g->part_points > 0 && all > 0 ? g->part_points / all : 1;
+    *max = all * scale;
+    return got * scale;
+}
+
+/* Makes the references of the hidden scenes (--hidden): each one's DIR/references/IMAGE
+ * when it is there (make gradescope renders them into its zip), or else rendered now by
+ * the part's model answer (built first) into OUT/work/references/hidden; and copies the scenes
+ * to OUT/work/hidden-scenes, where a student's program may read them (the folder itself
+ * may be readable by the grader's user alone). False (reported) on trouble. */
+bool part_render_hidden(Grading *g)
+{
+    char *part_dir = grade_format("%s/milestones/%s", g->top, g->part);
+    char *scenes = grade_format("%s/hidden-scenes", g->work), *log = NULL;
+    bool built = false, any = false;
+    for (int k = 0; k < g->render_count; k++)
+        any |= g->renders[k].hidden;
+    if (!any)
+        return true;
+    char *copy[] = {"sh", "-c", "mkdir -- \"$2\" && cp -R -P -- \"$1/.\" \"$2\" && "
+                                "rm -rf -- \"$2/references\" \"$2/renders.txt\"",
+                    "sh", (char *)g->hidden, scenes, NULL};
+    if (!run_program(copy, NULL, NULL, 600, 0).ok)
+        return grade_fail("cannot copy the hidden scenes of %s to %s", g->hidden, scenes);
+    for (int k = 0; k < g->render_count; k++) {
+        Render *r = &g->renders[k];
+        if (!r->hidden)
+            continue;
+        char *given = grade_format("%s/references/%s", g->hidden, r->image);
+        /* The student's program reads the scene from the copy, named from its run folder
+         * (work/NAME/run) so that its command line does not depend on where work is. */
+        r->argv[1] = r->scene[0] == '/' ? r->scene
+                                        : grade_format("../../hidden-scenes/%s", r->scene);
+        if (grade_kind(given) == S_IFREG) {
+            r->reference = given;
+            continue;
+        }
+        char *make[] = {"make", "--no-print-directory", "-s", "-C", part_dir, "SANITIZE=",
+                        "raytra", NULL};
+        log = grade_format("%s/references/model.log", g->work);
+        if (!built && !run_program(make, NULL, log, 1800, 0).ok)
+            return grade_fail("the model answer of %s does not build, to render the hidden "
+                              "scenes (%s says why)", g->part, log);
+        if (!built && !grade_make_folder(grade_format("%s/references/hidden", g->work)))
+            return false;
+        built = true;
+        r->reference = grade_format("%s/references/hidden/%s", g->work, r->image);
+        r->model[0] = grade_format("%s/raytra", part_dir);
+        r->model[2] = r->reference;
+        fprintf(g->progress, "grade: rendering the hidden scene %s with the model answer\n",
+                r->name);
+        if (!run_program(r->model, NULL, log, 1800, 0).ok)
+            return grade_fail("the model answer could not render the hidden scene %s (%s says "
+                              "why)", r->name, log);
+    }
+    return true;
+}
+
+/* Adds a byte to a CRC-32 (PNG's, ISO 3309), bit by bit. */
+static unsigned long crc_add(unsigned long crc, unsigned char byte)
+{
+    crc ^= byte;
+    for (int k = 0; k < 8; k++)
+        crc = crc & 1 ? 0xEDB88320UL ^ (crc >> 1) : crc >> 1;
+    return crc;
+}
+
+/* Writes n as 4 bytes, most significant first, as PNG writes its numbers. */
+static void put_be32(FILE *f, unsigned long n)
+{
+    for (int k = 3; k >= 0; k--)
+        fputc((int)((n >> (8 * k)) & 0xFF), f);
+}
+
+/* Makes each PNG reference's canary (Render.canary): its bytes with a tEXt chunk put
+ * before IEND that marks it as the grader's, with a number of this run. The pixels stay
+ * the same; a program that copies the reference it finds in its folder (where the grader
+ * puts the canary) writes the canary's bytes, while one that renders writes the
+ * reference's. A reference that is not a PNG gets none. The canaries are the shipped
+ * references' pixels, no secret: they live in the work folder's canaries/, which a student's
+ * user may read, so that with --run-as the student's own cp puts them in place. */
+void part_make_canaries(Grading *g)
+{
+    static const unsigned char iend[12] = {0, 0, 0, 0, 'I', 'E', 'N', 'D', 0xAE, 0x42, 0x60, 0x82};
+    char text[80];
+    int len = snprintf(text, sizeof text, "tEXtraytra-grade%ccanary %lx-%lx", 0,
+                       (unsigned long)time(NULL), (unsigned long)getpid());
+    for (int k = 0; k < g->render_count; k++) {
+        Render *r = &g->renders[k];
+        FILE *in = fopen(r->reference, "rb");
+        unsigned char *bytes = NULL;
+        long size = in != NULL && fseek(in, 0, SEEK_END) == 0 ? ftell(in) : -1;
+        if (size > 20 && size < (1L << 28) && fseek(in, 0, SEEK_SET) == 0)
+            bytes = malloc((size_t)size);
+        bool png = bytes != NULL && fread(bytes, 1, (size_t)size, in) == (size_t)size &&
+                   memcmp(bytes, "\211PNG\r\n\032\n", 8) == 0 &&
+                   memcmp(bytes + size - 12, iend, 12) == 0;
+        if (in != NULL)
+            fclose(in);
+        char *path = grade_format("%s/canaries/%s.canary.png", g->work, r->name);
+        FILE *out = png ? fopen(path, "wb") : NULL;
+        if (out == NULL) {
+            free(bytes);
+            continue;
+        }
+        unsigned long crc = 0xFFFFFFFFUL;
+        for (int i = 0; i < len; i++)
+            crc = crc_add(crc, (unsigned char)text[i]);
+        fwrite(bytes, 1, (size_t)size - 12, out);
+        put_be32(out, (unsigned long)len - 4);
+        fwrite(text, 1, (size_t)len, out);
+        put_be32(out, crc ^ 0xFFFFFFFFUL);
+        fwrite(iend, 1, sizeof iend, out);
+        free(bytes);
+        if (fclose(out) == 0)
+            r->canary = path;
+    }
 }

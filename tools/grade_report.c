@@ -255,9 +255,14 @@ static void write_html(FILE *f, const Grading *g)
         if (broken)
             fprintf(f, "<div class=\"broken\"><strong>The build failed:</strong> %s. No scene "
                        "could be rendered.", html(s->build_message));
-        else
-            fprintf(f, "<p class=\"counts\">%d of %d scene%s pass.</p>\n", s->tally[TALLY_PASS],
-                    g->render_count, plural(g->render_count));
+        else {
+            double max, got = part_points(g, s, &max);
+            fprintf(f, "<p class=\"counts\">%d of %d scene%s pass: %g of %g points.</p>\n",
+                    s->tally[TALLY_PASS], g->render_count, plural(g->render_count), got, max);
+        }
+        if (s->removed != NULL)
+            fprintf(f, "<p class=\"file\">Build outputs it carried, removed before make: "
+                       "<code>%s</code></p>\n", html(s->removed));
         write_log(f, "Build output (the last lines)", s->build_log_tail, broken);
         for (int k = 0; k < g->render_count && !broken; k++) {
             const Render *r = &g->renders[k];
@@ -266,7 +271,9 @@ static void write_html(FILE *f, const Grading *g)
                     "<details class=\"scene\"%s>\n<summary><span class=\"scene-name\">%s</span>"
                     "%s%s<span class=\"message\">%s</span>%s</summary>\n<div class=\"scene-body\">"
                     "\n<p class=\"file\">Scene <code>%s",
-                    res->verdict == VERDICT_PASS ? "" : " open", html(r->name), badge(g, s, k),
+                    res->verdict == VERDICT_PASS ? "" : " open",
+                    r->hidden ? grade_format("%s (hidden)", html(r->name)) : html(r->name),
+                    badge(g, s, k),
                     copy_flag(res->copy), html(res->message),
                     res->seconds > 0
                         ? grade_format("<span class=\"time\">%.2f s</span>", res->seconds)
@@ -315,11 +322,18 @@ static char *csv(const char *text)
 }
 
 /* Writes the CSV: a header line, then one line a submission and scene; the figures, which
- * need no quoting but the box, are empty when no comparison was made. */
+ * need no quoting but the box, are empty when no comparison was made; last, the points the
+ * scene earned (grading.conf's, scaled to the part's). */
 static void write_csv(FILE *f, const Grading *g)
 {
     fputs("submission,scene,verdict,max_diff_r,max_diff_g,max_diff_b,mean_abs_diff,rmse,"
-          "psnr_db,differing_pixels,differing_fraction,bbox,message,seconds,flag\n", f);
+          "psnr_db,differing_pixels,differing_fraction,bbox,message,seconds,flag,points\n", f);
+    double all = 0, max = 0;
+    for (int k = 0; k < g->render_count; k++)
+        all += g->renders[k].points;
+    if (g->sub_count > 0)
+        part_points(g, &g->subs[0], &max);
+    double scale = all > 0 && max > 0 ? max / all : 1;
     for (int i = 0; i < g->sub_count; i++)
         for (int k = 0; k < g->render_count; k++) {
             const SceneResult *res = &g->subs[i].results[k];
@@ -331,10 +345,11 @@ static void write_csv(FILE *f, const Grading *g)
                 (double)fig->differing / fig->pixels,
                 fig->differing == 0 ? "" : grade_format("\"(%d,%d)-(%d,%d)\"", fig->box[0],
                                                         fig->box[1], fig->box[2], fig->box[3]));
-            fprintf(f, "%s,%s,%s,%s%s,%s,%s\n", csv(g->subs[i].name), csv(g->renders[k].name),
-                    verdict_info[res->verdict].name, figures, csv(res->message),
-                    res->seconds > 0 ? grade_format("%.3f", res->seconds) : "",
-                    res->copy ? "copy" : "");
+            fprintf(f, "%s,%s,%s,%s%s,%s,%s,%.6g\n", csv(g->subs[i].name),
+                    csv(g->renders[k].name), verdict_info[res->verdict].name, figures,
+                    csv(res->message), res->seconds > 0 ? grade_format("%.3f", res->seconds) : "",
+                    res->copy ? "copy" : "",
+                    res->verdict == VERDICT_PASS ? g->renders[k].points * scale : 0);
         }
 }
 

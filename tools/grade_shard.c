@@ -12,7 +12,7 @@
 #include "toolopt.h"
 
 /* The first line of a results file, with the version of its format. */
-#define RESULTS_MAGIC "grade-results 1"
+#define RESULTS_MAGIC "grade-results 2"
 
 /* Reads --shard K/N into g and checks what goes with it; false (reported) when it cannot. */
 bool shard_parse(Grading *g)
@@ -78,6 +78,7 @@ void shard_put_submission(FILE *f, const Grading *g, const Submission *s)
     shard_put_text(f, s->link);
     shard_put_text(f, s->build_message);
     shard_put_text(f, s->build_log_tail);
+    shard_put_text(f, s->removed);
     fputc('\n', f);
     for (int k = 0; k < g->render_count; k++) {
         const SceneResult *r = &s->results[k];
@@ -178,7 +179,7 @@ static char *get_path(Reader *r, int k, const char *work)
 static bool get_submission(Reader *r, const Grading *g, Submission *s, const char *work,
                            const char *work_name)
 {
-    if (!line_is(r, "sub", 7))
+    if (!line_is(r, "sub", 8))
         return grade_fail("%s:%d: expected a submission", r->path, r->line);
     *s = (Submission){.work = get_path(r, 1, work_name),
                       .name = get_word(r, 2),
@@ -186,7 +187,8 @@ static bool get_submission(Reader *r, const Grading *g, Submission *s, const cha
                       .program = get_number(r, 4) != 0,
                       .link = get_text(r, 5),
                       .build_message = get_text(r, 6),
-                      .build_log_tail = get_text(r, 7)};
+                      .build_log_tail = get_text(r, 7),
+                      .removed = get_text(r, 8)};
     s->results = grade_alloc((size_t)g->render_count * sizeof *s->results);
     for (int k = 0; k < g->render_count && !r->bad; k++) {
         SceneResult *x = &s->results[k];
@@ -261,8 +263,8 @@ static void put_heading(FILE *f, const Grading *g)
     fputs("\ntolerances", f);
     shard_put_text(f, g->threshold);
     shard_put_text(f, g->allow);
-    fprintf(f, "\nlimits %a %a %lld\nillustrations", g->time_limit, g->build_time_limit,
-            g->memory_limit);
+    fprintf(f, "\nlimits %a %a %lld\npoints %a\nillustrations", g->time_limit,
+            g->build_time_limit, g->memory_limit, g->part_points);
     shard_put_text(f, g->illustrations);
     fprintf(f, "\nrenders %d\n", g->render_count);
     for (int k = 0; k < g->render_count; k++) {
@@ -272,6 +274,8 @@ static void put_heading(FILE *f, const Grading *g)
         shard_put_text(f, r->name);
         shard_put_text(f, r->scene);
         shard_put_text(f, fingerprint(r->reference));
+        fprintf(f, " %a %d", r->points, r->hidden);
+        shard_put_text(f, r->visibility);
         for (char **a = r->argv + RENDER_WORDS; *a != NULL; a++)
             shard_put_text(f, *a);
         fputc('\n', f);
@@ -314,7 +318,7 @@ static bool get_heading(Reader *r, Grading *g, const char *work)
 {
     char *heading = "";
     int renders = -1, members = -1;
-    for (int line = 0; (members < 0 || line < 7 + renders + members) && next_line(r); line++) {
+    for (int line = 0; (members < 0 || line < 8 + renders + members) && next_line(r); line++) {
         heading = grade_format("%s%s", heading, r->raw);
         if (line == 0 && line_is(r, "part", 1))
             g->part = get_word(r, 1);
@@ -325,23 +329,27 @@ static bool get_heading(Reader *r, Grading *g, const char *work)
         else if (line == 3 && line_is(r, "limits", 3))
             g->time_limit = get_number(r, 1), g->build_time_limit = get_number(r, 2),
             g->memory_limit = (long long)get_number(r, 3);
-        else if (line == 4 && line_is(r, "illustrations", 1))
+        else if (line == 4 && line_is(r, "points", 1))
+            g->part_points = get_number(r, 1);
+        else if (line == 5 && line_is(r, "illustrations", 1))
             g->illustrations = get_text(r, 1);
-        else if (line == 5 && line_is(r, "renders", 1) && (renders = (int)get_number(r, 1)) > 0 &&
+        else if (line == 6 && line_is(r, "renders", 1) && (renders = (int)get_number(r, 1)) > 0 &&
                  renders < 100000)
             g->renders = grade_alloc((size_t)renders * sizeof *g->renders);
-        else if (line > 5 && line <= 5 + renders && r->count >= 5 &&
+        else if (line > 6 && line <= 6 + renders && r->count >= 8 &&
                  line_is(r, "render", r->count - 1)) {
             Render *x = &g->renders[g->render_count++];
-            *x = (Render){.image = get_word(r, 1), .name = get_word(r, 2), .scene = get_word(r, 3)};
-            x->argv = grade_alloc((size_t)(r->count - 5 + RENDER_WORDS + 1) * sizeof *x->argv);
-            for (int k = 5; k < r->count; k++)
-                x->argv[RENDER_WORDS + k - 5] = get_word(r, k);
+            *x = (Render){.image = get_word(r, 1), .name = get_word(r, 2), .scene = get_word(r, 3),
+                          .points = get_number(r, 5), .hidden = get_number(r, 6) != 0,
+                          .visibility = get_word(r, 7)};
+            x->argv = grade_alloc((size_t)(r->count - 8 + RENDER_WORDS + 1) * sizeof *x->argv);
+            for (int k = 8; k < r->count; k++)
+                x->argv[RENDER_WORDS + k - 8] = get_word(r, k);
             x->reference_show = grade_format("%s/references/%s.png", work, x->name);
-        } else if (line == 6 + renders && line_is(r, "class", 1) &&
+        } else if (line == 7 + renders && line_is(r, "class", 1) &&
                    (members = (int)get_number(r, 1)) >= 0 && members < 1000000)
             g->members = grade_alloc(((size_t)members + 1) * sizeof *g->members);
-        else if (line > 6 + renders && line <= 6 + renders + members && line_is(r, "member", 1))
+        else if (line > 7 + renders && line <= 7 + renders + members && line_is(r, "member", 1))
             g->members[g->member_count++] = get_word(r, 1);
         else
             r->bad = true;

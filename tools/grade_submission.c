@@ -3,6 +3,7 @@
 
 #include <ctype.h>
 #include <errno.h>
+#include <ftw.h>
 #include <libgen.h>
 #include <limits.h>
 #include <signal.h>
@@ -87,7 +88,12 @@ static void compare_image(const Grading *g, const Submission *s, int k, const ch
     Verdict v = run.ok ? VERDICT_PASS : VERDICT_FAIL;
     res->compared = run.end == RUN_EXITED && run.status <= 1;
     res->identical = res->compared && f->max[0] == 0 && f->max[1] == 0 && f->max[2] == 0;
-    res->copy = res->identical && same_bytes(image, r->reference);
+    /* A program writes the reference's bytes when it renders as the model answer does, and
+     * the canary's when it copies the file it found in its folder; images handed in are
+     * flagged when they are the reference's file. */
+    res->copy = res->identical &&
+                (s->program ? r->canary != NULL && same_bytes(image, r->canary)
+                            : same_bytes(image, r->reference));
     if (res->compared && statistical != NULL)
         set_verdict(res, v, "%s", statistical);
     else if (res->identical)
@@ -162,19 +168,79 @@ static char *tail_of(const Grading *g, const char *output)
     return run_tail(text);
 }
 
+/* Removes, in the folder it runs in, the build outputs a submission may carry from
+ * another machine, which make would take as up to date: folders of builds (pruned,
+ * removed whole), objects, archives, libraries, dependency files and a raytra; prints
+ * each, sorted, a folder with a '/' after it, and "!failed" when one could not be removed.
+ * A folder is made writable first (a build may leave it read-only); a link is never
+ * followed, nor its target changed. */
+static const char remove_outputs[] =
+    "{ find . -mindepth 1 \\( -type d \\( -name build -o -name 'build-*' -o -name '*.dSYM' \\) "
+    "-prune -o ! -type d \\( -name '*.o' -o -name '*.a' -o -name '*.d' "
+    "-o -name '*.so' -o -name '*.dylib' -o -name '*.gch' -o -name raytra \\) \\) "
+    "-exec sh -c 'for p; do s=; [ -d \"$p\" ] && [ ! -L \"$p\" ] && s=/; "
+    "printf \"%s%s\\n\" \"${p#./}\" \"$s\"; [ -z \"$s\" ] || chmod -R u+rwX -- \"$p\"; "
+    "rm -rf -- \"$p\" || exit 1; done' sh {} + "
+    "|| echo '!failed'; } | LC_ALL=C sort";
+
+/* Removes from the copy at `copy` the build outputs it carries (remove_outputs), so that
+ * make builds raytra from the sources; returns what was removed, a path a line, or NULL
+ * when nothing was; sets *trouble when they could not all be removed. */
+static char *remove_build_outputs(const char *copy, bool *trouble)
+{
+    char *argv[] = {"sh", "-c", (char *)remove_outputs, NULL};
+    RunResult r = run_student(argv, copy, NULL, 600, 0);
+    *trouble = !r.ok || strstr(r.output, "!failed") != NULL;
+    size_t n = strlen(r.output);
+    while (n > 0 && r.output[n - 1] == '\n')
+        n--;
+    return n > 0 ? grade_format("%.*s", (int)n, r.output) : NULL;
+}
+
+/* The grading whose references' canaries replace their copies in a submission (nftw's
+ * visits take no argument of their own). */
+static const Grading *planting;
+
+/* nftw's visit of a file of a submission's copy: a regular file that holds a reference's
+ * bytes is given its canary's instead (Render.canary). */
+static int plant_canary(const char *path, const struct stat *st, int type, struct FTW *ftw)
+{
+    (void)ftw;
+    for (int k = 0; type == FTW_F && S_ISREG(st->st_mode) && k < planting->render_count; k++) {
+        const Render *r = &planting->renders[k];
+        struct stat ref;
+        if (r->canary == NULL || stat(r->reference, &ref) != 0 || ref.st_size != st->st_size ||
+            !same_bytes(path, r->reference))
+            continue;
+        char *cp[] = {"cp", "-f", "--", r->canary, (char *)path, NULL};
+        run_student(cp, NULL, NULL, 60, 0);
+        break;
+    }
+    return 0;
+}
+
 /* Copies submission s into its work folder (cp -P: a link stays a link, never followed out
- * of it) and runs make there under the limits; returns the program it built, or NULL with
- * the reason in s->build_message. */
+ * of it), removes the build outputs it carries, puts the references' canaries in place of
+ * the copies of the references it holds, and runs make there under the limits; returns the
+ * program it built, or NULL with the reason in s->build_message. */
 static char *build(const Grading *g, Submission *s)
 {
     char *copy = grade_format("%s/build", s->work), *log = grade_format("%s/build.log", s->work);
     char *program = grade_format("%s/raytra", copy);
     char *cp[] = {"cp", "-R", "-P", "--", grade_format("%s/.", s->path), copy, NULL};
     char *make[] = {"make", NULL};
+    bool trouble = false;
     RunResult r = run_student(cp, NULL, log, 600, 0);
+    if (r.ok) {
+        s->removed = remove_build_outputs(copy, &trouble);
+        planting = g;
+        nftw(copy, plant_canary, 16, FTW_PHYS);
+    }
     if (!r.ok)
         s->build_message = grade_format("the submission could not be copied to build it (cp: %s)",
                                         run_describe(&r));
+    else if (trouble)
+        s->build_message = "the build outputs the submission carries could not be removed";
     else if ((r = run_student(make, copy, log, g->build_time_limit, g->memory_limit)).end ==
              RUN_TIMED_OUT)
         s->build_message = grade_format("make did not finish within %g s", g->build_time_limit);
@@ -337,7 +403,11 @@ bool submission_list(Grading *g)
 {
     static const char *const makefiles[] = {"GNUmakefile", "makefile", "Makefile"};
     int count = 1;
-    char *self[] = {basename(grade_format("%s", g->submissions))}, real[PATH_MAX];
+    char real[PATH_MAX];
+    /* --self's one folder is named as it is, "." or "../alice/" too: by its real path. */
+    char *self[] = {basename(realpath(g->submissions, real) != NULL
+                                 ? grade_format("%s", real)
+                                 : grade_format("%s", g->submissions))};
     char **names = g->self ? self : grade_list_folders(g->submissions, &count);
     if (names == NULL)
         return grade_fail("cannot read the folder %s: %s", g->submissions, strerror(errno));

@@ -187,6 +187,8 @@ done
 if [ $solution = yes ]; then copy_part "$part" solution; else copy_part "$part" stub; fi
 cp -R "$top/milestones/$part/tests" "$top/milestones/$part/references" "$tmp/milestones/$part/" ||
     exit 2
+# The instructor's controls (points, visibility, the folder of hidden scenes) stay theirs.
+rm -f "$tmp/milestones/$part/references/grading.conf"
 
 # The scenes: those the references are rendered from, those the tests name, and the
 # meshes they load (w lines, relative to the scene).

@@ -13,6 +13,11 @@
 # run_autograder and gradescope.conf (the part, and the time budget: BUDGET seconds for
 # the whole grading, default 540, and BUILD_TIME_LIMIT, default 120). docs/grading.md,
 # section 7, says how to upload it. The zip is written to a temporary and renamed.
+#
+# The instructor's controls: the part's references/grading.conf (or GRADING_CONF=FILE), its
+# points and visibilities, goes in as the part's; the hidden scenes of its `hidden` line
+# (or HIDDEN=DIR) go in as hidden/, their references rendered here by the part's model
+# answer into hidden/references/, which setup.sh leaves to the grader's user alone.
 set -u
 top=$(cd "$(dirname "$0")/../.." && pwd) || exit 2
 die() {
@@ -58,6 +63,43 @@ while IFS= read -r file; do
     mkdir -p "$stage/root/$(dirname "$file")" && cp -p "$top/$file" "$stage/root/$file" || exit 2
 done <"$stage/files"
 cp "$top/tools/gradescope/setup.sh" "$top/tools/gradescope/run_autograder" "$stage/root/" || exit 2
+
+# The instructor's controls, and the hidden scenes with their references, rendered now.
+conf=${GRADING_CONF:-$top/milestones/$part/references/grading.conf}
+hidden=${HIDDEN:-}
+if [ -f "$conf" ]; then
+    cp "$conf" "$stage/root/milestones/$part/references/grading.conf" || exit 2
+    # Its "hidden FOLDER" line, as the grader reads it: from the file's folder, or ~/.
+    line=$(awk '$1 == "hidden" && NF == 2 { print $2 }' "$conf" | tail -n 1)
+    case $line in
+    '') ;;
+    '~/'*) line=$HOME/${line#'~/'} ;;
+    /*) ;;
+    *) line=$(dirname "$conf")/$line ;;
+    esac
+    hidden=${hidden:-$line}
+elif [ -n "${GRADING_CONF:-}" ]; then
+    die "no file GRADING_CONF=$conf"
+fi
+hidden_count=0
+if [ -n "$hidden" ]; then
+    [ -f "$hidden/renders.txt" ] || die "no hidden scenes: $hidden/renders.txt is not there"
+    make --no-print-directory -s -C "$top/milestones/$part" SANITIZE= raytra >&2 ||
+        die "the model answer of $part does not build, to render the hidden scenes"
+    mkdir -p "$stage/root/hidden/references" && cp -R -P "$hidden/." "$stage/root/hidden/" &&
+        rm -rf "$stage/root/hidden/references" && mkdir "$stage/root/hidden/references" || exit 2
+    n=0
+    while read -r image scene options; do
+        n=$((n + 1))
+        case $image in '' | '#'* | '!'*) continue ;; esac
+        case $scene in /*) ;; *) scene=$hidden/$scene ;; esac
+        # shellcheck disable=SC2086 # the options are words, as renders.txt gives them
+        "$top/milestones/$part/raytra" "$scene" "$stage/root/hidden/references/$image" \
+            $options >"$stage/render.log" 2>&1 ||
+            die "$hidden/renders.txt:$n: the model answer cannot render it: $(tail -n 3 "$stage/render.log")"
+        hidden_count=$((hidden_count + 1))
+    done <"$hidden/renders.txt"
+fi
 {
     echo "# gradescope.conf: what run_autograder grades, written by tools/gradescope/pack.sh."
     echo "PART=$part"
@@ -73,3 +115,18 @@ rm -f "$stage/out.zip"
 mv -f "$stage/out.zip" "$zip.tmp$$" && mv -f "$zip.tmp$$" "$zip" || die "cannot write $zip"
 echo "gradescope: wrote $zip ($(wc -l <"$stage/files") files of raytra, part $part;" \
     "grading within $budget s)"
+[ "$hidden_count" -eq 0 ] ||
+    echo "gradescope: with $hidden_count hidden scenes of $hidden, rendered by the model answer"
+cat <<EOF
+Next steps (docs/grading.md, section 7):
+  1. On Gradescope, create a Programming Assignment; in Configure Autograder choose the
+     base image Ubuntu 22.04 (or later) and upload $zip.
+  2. Gradescope runs setup.sh as it builds the image; then Test Autograder with a
+     solution: make starter PART=$part STARTER_OPTIONS=--solution, zipped: every scene passes.
+  3. To try it here first, as Gradescope would:
+       mkdir -p /tmp/ag/source && unzip -q $zip -d /tmp/ag/source
+       sh /tmp/ag/source/setup.sh --build-only
+       cp -R YOUR-SOLUTION /tmp/ag/submission
+       AUTOGRADER_ROOT=/tmp/ag /tmp/ag/source/run_autograder && cat /tmp/ag/results/results.json
+     (make check-gradescope, tests/gradescope.sh, does this with part 1.3.)
+EOF

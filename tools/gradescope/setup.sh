@@ -46,5 +46,9 @@ make --no-print-directory -s -C "$here/tools" SANITIZE= grade || {
 if [ "$(id -u)" -eq 0 ]; then
     make_users || exit 1
     chmod -R u+rwX,go-w,a+rX "$here" || exit 1
+    # The hidden scenes (make gradescope HIDDEN=DIR): the grader's user's alone.
+    if [ -d "$here/hidden" ] && id -u raytra-grader >/dev/null 2>&1; then
+        chown -R raytra-grader "$here/hidden" && chmod -R go-rwx "$here/hidden" || exit 1
+    fi
 fi
 echo "setup.sh: the grader is built: $here/tools/build/grade"
