@@ -40,6 +40,11 @@ typedef struct {
 /* Where a render's positional words begin in its argv, after program, scene and image. */
 #define RENDER_WORDS 3
 
+/* How a render's image is judged (renders.txt; docs/grading.md): against its reference within
+ * the tolerances; pixel for pixel against the program's own image of an earlier render
+ * (IMAGE=OTHER); or by coverage, drawn wherever a reference is drawn (IMAGE>MASK). */
+typedef enum { JUDGE_REFERENCE, JUDGE_SAME_AS, JUDGE_COVER } Judge;
+
 /* One line of renders.txt: a reference image and the scene it was rendered from. */
 typedef struct {
     char *image;          /* the reference's file name: spheres-three.png */
@@ -50,6 +55,10 @@ typedef struct {
                            * from argv[RENDER_WORDS] on the positional words, NULL-ended */
     char *reference;      /* the reference image's path */
     char *reference_show; /* its thumbnail for the report */
+    Judge judge;
+    int same_as; /* JUDGE_SAME_AS: the earlier render whose image this one must equal */
+    char *mask;  /* JUDGE_COVER: the reference whose drawn pixels the image must cover */
+    char *why;   /* what a failure of JUDGE_SAME_AS or JUDGE_COVER means (#? line), or NULL */
 } Render;
 
 /* The grading of one scene of one submission. */

@@ -15,6 +15,21 @@
 #include "imgfile.h"
 #include "stop.h"
 
+/* Returns the path of submission s's image of render k: where its program writes it, or in a
+ * folder of images the file named as the reference, or with another of .png, .pfm and .exr. */
+static char *image_of(const Grading *g, const Submission *s, int k)
+{
+    static const char *const endings[] = {".png", ".pfm", ".exr"};
+    const Render *r = &g->renders[k];
+    if (s->program)
+        return grade_format("%s/images/%s", s->work, r->image);
+    char *found = grade_format("%s/%s", s->path, r->image);
+    struct stat st;
+    for (size_t e = 0; e < sizeof endings / sizeof *endings && lstat(found, &st) != 0; e++)
+        found = grade_format("%s/%s%s", s->path, r->name, endings[e]);
+    return found;
+}
+
 /* Sets the verdict of res and its reason, made as printf makes it. */
 static void DIAG_PRINTF(3, 4) set_verdict(SceneResult *res, Verdict v, const char *fmt, ...)
 {
@@ -54,10 +69,22 @@ static void compare_image(const Grading *g, const Submission *s, int k, const ch
     char *log = grade_format("%s/%s.diff.txt", s->work, r->name);
     res->image_show = grade_format("%s/%s.show.png", s->work, r->name);
     res->heat_show = grade_format("%s/%s.heat-show.png", s->work, r->name);
-    char *argv[] = {g->imgdiff, "--machine", "--threshold", (char *)g->threshold, "--allow",
-                    (char *)g->allow, "--diff", grade_format("%s/%s.heat.png", s->work, r->name),
-                    "--thumb", res->image_show, "--diff-thumb", res->heat_show, "--",
-                    r->reference, (char *)image, NULL};
+    /* IMAGE=OTHER: against the program's own OTHER, exactly; IMAGE>MASK: MASK covered. */
+    bool same = r->judge == JUDGE_SAME_AS;
+    char *against = same ? image_of(g, s, r->same_as) : r->judge == JUDGE_COVER ? r->mask
+                                                                                : r->reference;
+    char *argv[] = {g->imgdiff, "--machine", "--threshold", same ? "0" : (char *)g->threshold,
+                    "--allow", same ? "0" : (char *)g->allow, "--diff",
+                    grade_format("%s/%s.heat.png", s->work, r->name), "--thumb", res->image_show,
+                    "--diff-thumb", res->heat_show, "--cover", "--", against, (char *)image, NULL};
+    if (r->judge != JUDGE_COVER) /* no --cover: the rest moves up one */
+        memmove(&argv[12], &argv[13], 4 * sizeof *argv);
+    if (same && !s->results[r->same_as].compared) {
+        set_verdict(res, VERDICT_ERROR, "not judged: it must equal this program's own %s, which "
+                    "could not be compared (%s)", g->renders[r->same_as].image,
+                    verdict_info[s->results[r->same_as].verdict].name);
+        return;
+    }
     RunResult run = run_program(argv, NULL, log, 600, RUN_OWN_MEMORY(g->memory_limit));
     FILE *in = fmemopen(run.output, strlen(run.output) + 1, "r");
     char line[1024], *reason = NULL, *statistical = NULL;
@@ -88,7 +115,23 @@ static void compare_image(const Grading *g, const Submission *s, int k, const ch
     res->compared = run.end == RUN_EXITED && run.status <= 1;
     res->identical = res->compared && f->max[0] == 0 && f->max[1] == 0 && f->max[2] == 0;
     res->copy = res->identical && same_bytes(image, r->reference);
-    if (res->compared && statistical != NULL)
+    const char *why = r->why != NULL ? r->why : "", *colon = r->why != NULL ? ": " : "";
+    if (res->compared && same && v == VERDICT_FAIL)
+        set_verdict(res, v,
+                    "%ld pixels (%.3g%%) differ from this program's own %s; the two must be "
+                    "equal pixel for pixel%s%s",
+                    f->differing, 100.0 * f->differing / f->pixels, g->renders[r->same_as].image,
+                    colon, why);
+    else if (res->compared && same)
+        set_verdict(res, v, "equal to this program's own %s, pixel for pixel",
+                    g->renders[r->same_as].image);
+    else if (res->compared && r->judge == JUDGE_COVER)
+        set_verdict(res, v,
+                    "%.3g%% of the pixels are black here and drawn in %s, %s the %.3g%% allowed%s%s",
+                    100.0 * f->differing / f->pixels, strrchr(r->mask, '/') + 1,
+                    v == VERDICT_PASS ? "within" : "more than", f->allow * 100,
+                    v == VERDICT_PASS ? "" : colon, v == VERDICT_PASS ? "" : why);
+    else if (res->compared && statistical != NULL)
         set_verdict(res, v, "%s", statistical);
     else if (res->identical)
         set_verdict(res, v, "identical to the reference");
@@ -134,17 +177,11 @@ static void judge_file(const Grading *g, const Submission *s, int k, const char 
         compare_image(g, s, k, path);
 }
 
-/* Grades render k of a submission of images: finds the image, by the reference's name or
- * with another of .png, .pfm and .exr, and judges it. */
+/* Grades render k of a submission of images: finds the image (image_of) and judges it. */
 static void grade_image(const Grading *g, Submission *s, int k)
 {
-    static const char *const endings[] = {".png", ".pfm", ".exr"};
-    const Render *r = &g->renders[k];
-    char *found = grade_format("%s/%s", s->path, r->image);
-    struct stat st;
-    for (size_t e = 0; e < sizeof endings / sizeof *endings && lstat(found, &st) != 0; e++)
-        found = grade_format("%s/%s%s", s->path, r->name, endings[e]);
-    judge_file(g, s, k, found, grade_format("no %s.png, .pfm or .exr in the submission", r->name));
+    judge_file(g, s, k, image_of(g, s, k),
+               grade_format("no %s.png, .pfm or .exr in the submission", g->renders[k].name));
 }
 
 /* Returns the end of a program's output (run_tail) with the work folder's path written
@@ -208,7 +245,7 @@ static void run_scene(const Grading *g, Submission *s, int k)
     const Render *r = &g->renders[k];
     SceneResult *res = &s->results[k];
     char *log = grade_format("%s/%s.log", s->work, r->name);
-    char *image = grade_format("%s/images/%s", s->work, r->image);
+    char *image = image_of(g, s, k);
     /* The program and its image are named from the run folder, so that neither what it
      * prints nor its command line depends on where the work folder is (a shard's, merged). */
     r->argv[0] = "../build/raytra";
