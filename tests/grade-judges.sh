@@ -6,10 +6,11 @@
 #
 # A made-up part in a temporary folder, with part 1.4's demo references and a renders.txt
 # of both kinds, grades a class of folders of images (no program is run): images equal
-# where they must be, a mode 0 image unlike the program's own mode 3, a mode 2 image that
-# leaves black what mode 1 draws, a missing image to be equal to; in one run, with
-# --jobs 2, and in two shards merged, which must give the same report and CSV. Then
-# renders.txt lines that name nothing are refused. Exit status 0 when every check passes.
+# where they must be, a mode 0 image unlike the reference, one like the reference (with
+# --allow 1) but unlike the program's own mode 3, a mode 2 image that leaves black what
+# mode 1 draws, a missing image to be equal to; in one run and in two shards merged
+# (the judgements go through shard.txt), which must give the same report and CSV. Then renders.txt lines that
+# name nothing are refused. Exit status 0 when every check passes.
 set -u
 [ $# -eq 1 ] || { echo "usage: $0 GRADE" >&2; exit 2; }
 case $1 in /*) grade=$1 ;; *) grade=$(pwd)/$1 ;; esac
@@ -46,6 +47,8 @@ images right demo.png demo-mode-1.png demo-mode-2.png demo.png
 # One box around everything is what a BVH of one leaf draws: it covers mode 1.
 images one-leaf demo.png demo-mode-1.png demo-mode-1.png demo.png
 images mode-0-differs demo.png demo-mode-1.png demo-mode-2.png demo-mode-1.png
+# Wrong alike in modes 0 and 3 (a program that draws nothing, say): no scene passes.
+images wrong-alike demo-mode-1.png demo-mode-1.png demo-mode-2.png demo-mode-1.png
 images surfaces-in-mode-2 demo.png demo-mode-1.png demo.png demo.png
 mkdir class/no-mode-3
 cp "$refs/demo.png" class/no-mode-3/demo-mode-0.png
@@ -60,18 +63,27 @@ has() {
 for s in right one-leaf; do
     for scene in demo demo-mode-1 demo-mode-2 demo-mode-0; do has "$s,$scene,PASS," ""; done
 done
-has right,demo-mode-0,PASS, "equal to this program's own demo.png, pixel for pixel"
+has right,demo-mode-0,PASS, "matches the reference, and equals this program's own demo.png pixel for pixel"
 has right,demo-mode-2,PASS, "0% of the pixels are black here and drawn in demo-mode-1.png"
-has mode-0-differs,demo-mode-0,FAIL, "differ from this program's own demo.png; the two must be equal pixel for pixel: mode 3 misses the closest hit"
+has mode-0-differs,demo-mode-0,FAIL, "of the pixels differ by more than 2/255, more than the 0.1% allowed"
 has mode-0-differs,demo,PASS, ""
+has wrong-alike,demo,FAIL, ""
+has wrong-alike,demo-mode-0,FAIL, "of the pixels differ by more than 2/255"
 has surfaces-in-mode-2,demo-mode-2,FAIL, "1.11% of the pixels are black here and drawn in demo-mode-1.png, more than the 0.1% allowed: a leaf box leaves out a primitive"
 has surfaces-in-mode-2,demo-mode-0,PASS, ""
 has no-mode-3,demo,MISSING, ""
 has no-mode-3,demo-mode-0,ERROR, "not judged: it must equal this program's own demo.png, which could not be compared (MISSING)"
 
-# The same grading with --jobs 2, and in two shards merged.
-"$grade" -q --jobs 2 --out jobs "$part" class || fail "grade --jobs 2 failed"
-check "--jobs 2 grades as one job does" sh "$top/tests/same-grades.sh" one jobs
+# With --allow 1 every image matches its reference: mode 0 must still equal mode 3.
+mkdir class2
+mv class/right class/mode-0-differs class2/
+"$grade" -q --allow 1 --out allow "$part" class2 || fail "grade --allow 1 failed"
+csv=allow/grades.csv
+has mode-0-differs,demo-mode-0,FAIL, "differ from this program's own demo.png; the two must be equal pixel for pixel: mode 3 misses the closest hit"
+has right,demo-mode-0,PASS, "equals this program's own demo.png"
+
+# The same grading in two shards merged.
+mv class2/* class/
 if ! { "$grade" -q --shard 1/2 --out shard1 "$part" class &&
     "$grade" -q --shard 2/2 --out shard2 "$part" class &&
     "$grade" merge -q --out merged shard1 shard2; }; then

@@ -49,11 +49,12 @@ while read -r image scene options; do
     # ~IMAGE: a Monte Carlo render, judged against its statistical reference (docs/grading.md).
     ref=$refdir/$image
     case $image in '~'*) image=${image#\~} ref=$refdir/${image%.*}.stats.exr ;; esac
-    # IMAGE=OTHER: equal to this program's own OTHER, an earlier line, pixel for pixel;
-    # IMAGE>MASK: drawn wherever the reference MASK is (docs/grading.md).
-    how=
+    # IMAGE=OTHER: matches OTHER's reference, and equals this program's own OTHER, an
+    # earlier line, pixel for pixel; IMAGE>MASK: drawn wherever the reference MASK is
+    # drawn (docs/grading.md).
+    how='' own=''
     case $image in
-    *'='*) how="--threshold 0 --allow 0" ref=$out/${image#*=} image=${image%%=*} ;;
+    *'='*) ref=$refdir/${image#*=} own=$out/${image#*=} image=${image%%=*} ;;
     *'>'*) how=--cover ref=$refdir/${image#*>} image=${image%%>*} ;;
     esac
     images=$((images + 1))
@@ -64,10 +65,11 @@ while read -r image scene options; do
         tail -n 5 "$out/$name.log" | sed 's/^/    /'
         images_failed=$((images_failed + 1))
     elif "$imgdiff" $how --diff "$out/$name.heat.png" "$ref" "$out/$image" \
-        >"$out/$name.diff.txt" 2>&1; then
+        >"$out/$name.diff.txt" 2>&1 && { [ -z "$own" ] || "$imgdiff" --threshold 0 --allow 0 \
+        --diff "$out/$name.heat.png" "$own" "$out/$image" >"$out/$name.diff.txt" 2>&1; }; then
         echo "ok   $image"
     else
-        echo "FAIL $image: $(tail -n 1 "$out/$name.diff.txt" | sed 's/^FAIL: //')"
+        echo "FAIL $image: $(tail -n 1 "$out/$name.diff.txt" | sed 's/^FAIL: //')${own:+" (it must equal this program's own ${own##*/} pixel for pixel)"}"
         [ -f "$out/$name.heat.png" ] && echo "     heat map: $out/$name.heat.png"
         images_failed=$((images_failed + 1))
     fi
