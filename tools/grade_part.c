@@ -74,9 +74,9 @@ static void make_argv(Render *r, char *scene_path, char **words, int n,
 }
 
 /* Sets how render r, of a line IMAGE=OTHER or IMAGE>MASK (how: '=' or '>', `other` the name
- * after it), is judged: pixel for pixel against the program's own image of OTHER, an earlier
- * line, whose reference it shows; or by coverage of the reference MASK. False (reported)
- * when OTHER or MASK is not there. */
+ * after it), is judged: against the reference of OTHER, an earlier line, and then pixel for
+ * pixel against the program's own image of OTHER; or by coverage of the reference MASK.
+ * False (reported) when OTHER or MASK is not there. */
 static bool judge_of(Grading *g, Render *r, char how, const char *other, const char *where)
 {
     if (how == '>') {
@@ -126,6 +126,8 @@ static bool add_render(Grading *g, char **words, int n, const char *where)
     make_argv(r, scene_path, words + 2, n - 2, part_options_of(g->part), g->progress);
     if (grade_kind(scene_path) != S_IFREG)
         return grade_fail("%s: no scene file %s", where, scene_path);
+    if (judged != NULL && statistical)
+        return grade_fail("%s: a Monte Carlo render (~) is judged by statistics alone", where);
     if (judged != NULL && !judge_of(g, r, how, judged, where))
         return false;
     return grade_kind(r->reference) == S_IFREG ||

@@ -272,11 +272,11 @@ static void put_heading(FILE *f, const Grading *g)
         shard_put_text(f, r->name);
         shard_put_text(f, r->scene);
         /* How the image is judged, too: a shard graded otherwise is not the same grading. */
-        shard_put_text(f, r->judge == JUDGE_COVER     ? grade_format("%s>%s", fingerprint(r->reference),
-                                                                     fingerprint(r->mask))
-                          : r->judge == JUDGE_SAME_AS ? grade_format("%s=%d", fingerprint(r->reference),
-                                                                     r->same_as)
-                                                      : fingerprint(r->reference));
+        char *print = fingerprint(r->reference);
+        shard_put_text(f, r->judge == JUDGE_COVER
+                              ? grade_format("%s>%s", print, fingerprint(r->mask))
+                          : r->judge == JUDGE_SAME_AS ? grade_format("%s=%d", print, r->same_as)
+                                                      : print);
         for (char **a = r->argv + RENDER_WORDS; *a != NULL; a++)
             shard_put_text(f, *a);
         fputc('\n', f);

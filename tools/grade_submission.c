@@ -161,7 +161,8 @@ static void compare_image(const Grading *g, const Submission *s, int k, const ch
                     "pixel", other->image);
     else if (res->compared && r->judge == JUDGE_COVER)
         set_verdict(res, v,
-                    "%.3g%% of the pixels are black here and drawn in %s, %s the %.3g%% allowed%s%s",
+                    "%.3g%% of the pixels are black here and drawn in %s, %s the %.3g%% "
+                    "allowed%s%s",
                     100.0 * f->differing / f->pixels, strrchr(r->mask, '/') + 1,
                     v == VERDICT_PASS ? "within" : "more than", f->allow * 100,
                     v == VERDICT_PASS ? "" : colon, v == VERDICT_PASS ? "" : why);
