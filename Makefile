@@ -18,6 +18,8 @@
 #   make check-statistics  part 1.6's grading by statistics: raytra with 20 seeds passes,
 #                    right and wrong solutions pass and fail (tests/mc-variants, a few minutes)
 #   make statistics-figure  draw the z-score heat maps docs/grading.md shows
+#   make check-bvh-variants  part 1.4's grading: correct BVHs unlike raytra's pass every scene,
+#                    wrong ones fail, saying why (tests/bvh-variants, a few minutes)
 #   make check-slurm  grade a made-up class through tools/slurm/grade-slurm on a Slurm cluster
 #                    of one node it starts (as root; installs slurm-wlm and munge, or skips)
 #   make gradescope PART=1.3 [OUT=file.zip]  write the part's Gradescope autograder, by
@@ -48,8 +50,8 @@ FUZZ_SECONDS ?= 1800
 .PHONY: all test demo check-demo check-chromium references docs check-docs check-slides check-figures check-layout check-course clean \
         check-robust check-fuzz-regressions check-bad-input check-interrupt check-nonfinite \
         check-course-render check-renders valgrind fuzz fuzz-run bench mistakes starter check-starter check-starters \
-        check-exercises check-statistics statistics-figure gradescope check-gradescope check-slurm \
-        check-contain
+        check-exercises check-statistics check-bvh-variants statistics-figure gradescope check-gradescope \
+        check-slurm check-contain
 .NOTPARALLEL:
 
 all:
@@ -209,6 +211,14 @@ check-statistics:
 	@tests/mc-variants/run.sh $(call program,1.6-monte-carlo) tests/mc-variants/$(BUILD) \
 	    $(IMGDIFF) $(MC_PART)/references
 
+# Part 1.4 graded on BVHs unlike raytra's (docs/grading.md): each variant of
+# tests/bvh-variants, right or wrong, passes or fails as it should, with the reason.
+check-bvh-variants:
+	$(DEPS_STEP)
+	@$(SUBMAKE) all
+	@$(SUBMAKE) -C tests/bvh-variants
+	@tests/bvh-variants/run.sh $(TOOLS_DIR)/$(BUILD)/grade tests/bvh-variants/$(BUILD)
+
 # A class graded on Slurm (docs/grading.md): shards and a merge, on a cluster of one node
 # started and stopped by the test, give the report that one run of grade gives.
 check-slurm:
@@ -259,5 +269,6 @@ clean:
 	@$(SUBMAKE) -C bench clean
 	@$(SUBMAKE) -C tools/mistakes clean
 	@$(SUBMAKE) -C tests/mc-variants clean
+	@$(SUBMAKE) -C tests/bvh-variants clean
 	@for part in $(PARTS); do $(SUBMAKE) -C milestones/$$part clean; done
 	rm -rf out

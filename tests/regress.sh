@@ -12,6 +12,8 @@
 # statistics: beside IMAGE (raytra's render with its default seed), REFDIR holds
 # NAME.stats.exr, its statistical reference (docs/grading.md), made from MCREF_RENDERS
 # (default 64) renders with seeds 1000, 1001, ...
+# IMAGE=OTHER (graded against the program's own OTHER) has OTHER's reference, which
+# update leaves as it is; IMAGE>MASK (graded by coverage of MASK) has IMAGE's own.
 #   check   renders each scene with 2 threads and compares it with IMAGE, using
 #           imgdiff's default tolerances; renders it again with 1 thread and checks
 #           that the two files are byte for byte the same; for ~IMAGE, also judges the
@@ -36,6 +38,9 @@ while read -r image scene options; do
     stats=
     case $image in '~'*) image=${image#\~} stats=$refdir/${image%.*}.stats.exr ;; esac
     image=${image#!}
+    image=${image%%>*}
+    ref=${image#*=}
+    image=${image%%=*}
     count=$((count + 1))
     two=$tmp/two-$image
     one=$tmp/one-$image
@@ -44,6 +49,11 @@ while read -r image scene options; do
         echo "FAIL $image: raytra failed on $scene:"
         sed 's/^/    /' "$tmp/err"
         failed=$((failed + 1))
+        continue
+    fi
+    if [ "$mode" = update ] && [ "$ref" != "$image" ]; then
+        echo "== $image: the new render against $ref, its reference (kept)"
+        "$imgdiff" "$refdir/$ref" "$two" | sed 's/^/    /'
         continue
     fi
     if [ "$mode" = update ]; then
@@ -68,10 +78,10 @@ while read -r image scene options; do
     if ! cmp -s "$one" "$two"; then
         echo "FAIL $image: 1 and 2 threads give different files"
         failed=$((failed + 1))
-    elif [ ! -f "$refdir/$image" ]; then
+    elif [ ! -f "$refdir/$ref" ]; then
         echo "FAIL $image: no reference image (make references creates it)"
         failed=$((failed + 1))
-    elif ! "$imgdiff" "$refdir/$image" "$two" >"$tmp/diff" 2>&1; then
+    elif ! "$imgdiff" "$refdir/$ref" "$two" >"$tmp/diff" 2>&1; then
         echo "FAIL $image: differs from the reference:"
         sed 's/^/    /' "$tmp/diff"
         failed=$((failed + 1))

@@ -41,6 +41,11 @@ typedef struct {
 /* Where a render's positional words begin in its argv, after program, scene and image. */
 #define RENDER_WORDS 3
 
+/* How a render's image is judged (renders.txt; docs/grading.md): against its reference within
+ * the tolerances; pixel for pixel against the program's own image of an earlier render
+ * (IMAGE=OTHER); or by coverage, drawn wherever a reference is drawn (IMAGE>MASK). */
+typedef enum { JUDGE_REFERENCE, JUDGE_SAME_AS, JUDGE_COVER } Judge;
+
 /* One line of renders.txt: a reference image and the scene it was rendered from. */
 typedef struct {
     char *image;          /* the reference's file name: spheres-three.png */
@@ -59,6 +64,10 @@ typedef struct {
     char *canary;         /* the reference's bytes marked as the grader's (a PNG with a text
                            * chunk more): what a program that copies the file it found in its
                            * own folder writes; NULL for a reference that is no PNG */
+    Judge judge;
+    int same_as; /* JUDGE_SAME_AS: the earlier render whose image this one must equal */
+    char *mask;  /* JUDGE_COVER: the reference whose drawn pixels the image must cover */
+    char *why;   /* what a failure of JUDGE_SAME_AS or JUDGE_COVER means (#? line), or NULL */
 } Render;
 
 /* The grading of one scene of one submission. */

@@ -30,6 +30,7 @@ grade-test: $(GRADE) $(IMGDIFF)
 	@for part in $(wildcard $(TOP)/milestones/*/Makefile); do \
 	    $(SUBMAKE) -C $$(dirname $$part) SANITIZE=0 || exit 1; done
 	@sh $(TOP)/tests/grade.sh $(GRADE) $(GRADE_PART)/raytra
+	@sh $(TOP)/tests/grade-judges.sh $(GRADE)
 	@sh $(TOP)/tests/grade-report.sh $(GRADE) $(GRADE_PART)/raytra
 	@sh $(TOP)/tests/grade-class.sh $(GRADE) $(GRADE_PART)/raytra
 	@sh $(TOP)/tests/junit.sh $(GRADE)

@@ -75,6 +75,29 @@ static void make_argv(Render *r, char *scene_path, char **words, int n,
     }
 }
 
+/* Sets how render r, of a line IMAGE=OTHER or IMAGE>MASK (how: '=' or '>', `other` the name
+ * after it), is judged: against the reference of OTHER, an earlier line, and then pixel for
+ * pixel against the program's own image of OTHER; or by coverage of the reference MASK.
+ * False (reported) when OTHER or MASK is not there. */
+static bool judge_of(Grading *g, Render *r, char how, const char *other, const char *where)
+{
+    if (how == '>') {
+        r->judge = JUDGE_COVER;
+        r->mask = grade_format("%s/%s", g->references, other);
+        return (strchr(other, '/') == NULL && grade_kind(r->mask) == S_IFREG) ||
+               grade_fail("%s: no reference image %s for %s to cover", where, r->mask, r->image);
+    }
+    r->judge = JUDGE_SAME_AS;
+    for (int k = 0; k < g->render_count - 1; k++)
+        if (strcmp(g->renders[k].image, other) == 0 && g->renders[k].judge == JUDGE_REFERENCE) {
+            r->same_as = k;
+            r->reference = g->renders[k].reference;
+            return true;
+        }
+    return grade_fail("%s: %s=%s: no earlier line renders %s, judged against its reference", where,
+                      r->image, other, other);
+}
+
 /* Adds the render of a renders.txt line (its words) to g, or its name to the illustrations
  * (marked '!': raytra's own pictures, graded on no student); scenes are read from `base`,
  * references from `references` (a hidden scene's: NULL, rendered later); false (reported)
@@ -84,6 +107,10 @@ static bool add_render(Grading *g, char **words, int n, const char *where, const
 {
     /* ~IMAGE: a Monte Carlo render, judged against its statistical reference NAME.stats.exr. */
     bool statistical = words[0][0] == '~';
+    /* IMAGE=OTHER and IMAGE>MASK: judged otherwise (judge_of); words[0] ends at IMAGE. */
+    char *judged = strpbrk(words[0], "=>"), how = judged != NULL ? *judged : '\0';
+    if (judged != NULL)
+        *judged++ = '\0';
     const char *image = words[0] + statistical, *dot = strrchr(image, '.');
     int stem = dot != NULL ? (int)(dot - image) : (int)strlen(image);
     if (image[0] == '!') {
@@ -116,6 +143,12 @@ static bool add_render(Grading *g, char **words, int n, const char *where, const
         r->model[k + 1] = grade_format("%s", words[k]);
     if (grade_kind(scene_path) != S_IFREG)
         return grade_fail("%s: no scene file %s", where, scene_path);
+    if (judged != NULL && statistical)
+        return grade_fail("%s: a Monte Carlo render (~) is judged by statistics alone", where);
+    if (judged != NULL && r->hidden)
+        return grade_fail("%s: a hidden scene is judged against its own reference alone", where);
+    if (judged != NULL && !judge_of(g, r, how, judged, where))
+        return false;
     return r->hidden || grade_kind(r->reference) == S_IFREG ||
            grade_fail("%s: no reference image %s (make references makes it)", where, r->reference);
 }
@@ -124,22 +157,31 @@ static bool add_render(Grading *g, char **words, int n, const char *where, const
  * from `references` (NULL: hidden scenes); false (reported) when it cannot. */
 static bool read_renders(Grading *g, const char *path, const char *base, const char *references)
 {
-    char *line = NULL;
+    char *line = NULL, *why = NULL;
     FILE *f = fopen(path, "r");
     size_t size = 0;
     int line_number = 0, capacity = g->render_count, before = g->render_count;
     bool ok = f != NULL || grade_fail("cannot read %s: %s", path, strerror(errno));
     while (ok && getline(&line, &size, f) >= 0) {
         line_number++;
+        /* #? TEXT: what a failure of the next line's judgement means, for the message. */
+        const char *text = line + strspn(line, " \t");
+        if (strncmp(text, "#?", 2) == 0) {
+            text += 2 + strspn(text + 2, " \t");
+            why = grade_format("%.*s", (int)strcspn(text, "\r\n"), text);
+        }
         Words w;
         lex_split(line, &w);
-        int n = w.count < LEX_MAX_WORDS ? w.count : LEX_MAX_WORDS;
+        int n = w.count < LEX_MAX_WORDS ? w.count : LEX_MAX_WORDS, added_at = g->render_count;
         if (n == 0 || w.word[0][0] == '#')
             continue;
         char *where = grade_format("%s:%d", path, line_number);
         ok = (array_grow(&g->renders, &capacity, g->render_count, sizeof *g->renders) ||
               grade_fail("%s: out of memory", where)) &&
              add_render(g, w.word, n, where, base, references);
+        if (ok && g->render_count > added_at)
+            g->renders[added_at].why = why;
+        why = NULL;
     }
     ok = ok && (g->render_count > before || grade_fail("%s lists no images", path));
     free(line);

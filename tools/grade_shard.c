@@ -273,7 +273,12 @@ static void put_heading(FILE *f, const Grading *g)
         shard_put_text(f, r->image);
         shard_put_text(f, r->name);
         shard_put_text(f, r->scene);
-        shard_put_text(f, fingerprint(r->reference));
+        /* How the image is judged, too: a shard graded otherwise is not the same grading. */
+        char *print = fingerprint(r->reference);
+        shard_put_text(f, r->judge == JUDGE_COVER
+                              ? grade_format("%s>%s", print, fingerprint(r->mask))
+                          : r->judge == JUDGE_SAME_AS ? grade_format("%s=%d", print, r->same_as)
+                                                      : print);
         fprintf(f, " %a %d", r->points, r->hidden);
         shard_put_text(f, r->visibility);
         for (char **a = r->argv + RENDER_WORDS; *a != NULL; a++)

@@ -16,6 +16,21 @@
 #include "imgfile.h"
 #include "stop.h"
 
+/* Returns the path of submission s's image of render k: where its program writes it, or in a
+ * folder of images the file named as the reference, or with another of .png, .pfm and .exr. */
+static char *image_of(const Grading *g, const Submission *s, int k)
+{
+    static const char *const endings[] = {".png", ".pfm", ".exr"};
+    const Render *r = &g->renders[k];
+    if (s->program)
+        return grade_format("%s/images/%s", s->work, r->image);
+    char *found = grade_format("%s/%s", s->path, r->image);
+    struct stat st;
+    for (size_t e = 0; e < sizeof endings / sizeof *endings && lstat(found, &st) != 0; e++)
+        found = grade_format("%s/%s%s", s->path, r->name, endings[e]);
+    return found;
+}
+
 /* Sets the verdict of res and its reason, made as printf makes it. */
 static void DIAG_PRINTF(3, 4) set_verdict(SceneResult *res, Verdict v, const char *fmt, ...)
 {
@@ -44,34 +59,46 @@ static bool same_bytes(const char *a, const char *b)
     return same;
 }
 
-/* Compares image, submitted for render k, with the reference through imgdiff, which also
- * writes the full-size heat map and the thumbnails the report shows; sets the verdict from
- * its --machine lines (docs/grading.md lists them), with the reason in words. */
-static void compare_image(const Grading *g, const Submission *s, int k, const char *image)
+/* What one run of imgdiff said beyond the figures: its verdict, and its words. */
+typedef struct {
+    RunResult run;
+    char *reason;      /* why it could not compare, or NULL */
+    char *statistical; /* a statistical comparison's reason, or NULL */
+    int size[4]; /* the reference's width and height, then the image's, when they differ */
+} DiffRun;
+
+/* Runs imgdiff on image, submitted for render k, against the file `against` with the
+ * options `how` (NULL-ended), writing the full-size heat map and the thumbnails the report
+ * shows, and reads its --machine lines (docs/grading.md lists them) into res->figures. */
+static DiffRun run_imgdiff(const Grading *g, const Submission *s, int k, const char *image,
+                           const char *against, char *const how[])
 {
     const Render *r = &g->renders[k];
     SceneResult *res = &s->results[k];
     Figures *f = &res->figures;
-    char *log = grade_format("%s/%s.diff.txt", s->work, r->name);
-    res->image_show = grade_format("%s/%s.show.png", s->work, r->name);
-    res->heat_show = grade_format("%s/%s.heat-show.png", s->work, r->name);
-    char *argv[] = {g->imgdiff, "--machine", "--threshold", (char *)g->threshold, "--allow",
-                    (char *)g->allow, "--diff", grade_format("%s/%s.heat.png", s->work, r->name),
-                    "--thumb", res->image_show, "--diff-thumb", res->heat_show, "--",
-                    r->reference, (char *)image, NULL};
-    RunResult run = run_program(argv, NULL, log, 600, RUN_OWN_MEMORY(g->memory_limit));
-    FILE *in = fmemopen(run.output, strlen(run.output) + 1, "r");
-    char line[1024], *reason = NULL, *statistical = NULL;
-    int size[4] = {0}; /* the reference's width and height, then the image's, when they differ */
+    char *argv[24] = {g->imgdiff, "--machine", "--threshold", (char *)g->threshold, "--allow",
+                      (char *)g->allow, "--diff", grade_format("%s/%s.heat.png", s->work, r->name),
+                      "--thumb", res->image_show, "--diff-thumb", res->heat_show};
+    int n = 12;
+    while (*how != NULL && n < 20)
+        argv[n++] = *how++;
+    argv[n++] = "--";
+    argv[n++] = (char *)against;
+    argv[n] = (char *)image;
+    DiffRun d = {.run = run_program(argv, NULL, grade_format("%s/%s.diff.txt", s->work, r->name),
+                                    600, RUN_OWN_MEMORY(g->memory_limit))};
+    *f = (Figures){0};
+    FILE *in = fmemopen(d.run.output, strlen(d.run.output) + 1, "r");
+    char line[1024];
     while (in != NULL && fgets(line, sizeof line, in) != NULL) {
         line[strcspn(line, "\n")] = '\0';
         const char *named = strstr(line, "': "); /* imgdiff: cannot read 'FILE': REASON */
         if (strncmp(line, "reason ", 7) == 0) /* a statistical comparison says why */
-            statistical = grade_format("%s", line + 7);
-        if (reason == NULL && strncmp(line, "imgdiff: ", 9) == 0)
-            reason = grade_format("%s", named != NULL ? named + 3 : line + 9);
+            d.statistical = grade_format("%s", line + 7);
+        if (d.reason == NULL && strncmp(line, "imgdiff: ", 9) == 0)
+            d.reason = grade_format("%s", named != NULL ? named + 3 : line + 9);
         /* || stops at the first pattern that fits the line. */
-        (void)(sscanf(line, "sizes %d %d %d %d", size, size + 1, size + 2, size + 3) == 4 ||
+        (void)(sscanf(line, "sizes %d %d %d %d", d.size, d.size + 1, d.size + 2, d.size + 3) == 4 ||
                sscanf(line, "box %d %d %d %d", f->box, f->box + 1, f->box + 2, f->box + 3) == 4 ||
                sscanf(line, "threshold %lf", &f->threshold) == 1 ||
                sscanf(line, "allow %lf", &f->allow) == 1 ||
@@ -85,17 +112,68 @@ static void compare_image(const Grading *g, const Submission *s, int k, const ch
     if (in != NULL)
         fclose(in);
     /* imgdiff's exit status: 0 when the images match, 1 when not, 2 on trouble */
-    Verdict v = run.ok ? VERDICT_PASS : VERDICT_FAIL;
-    res->compared = run.end == RUN_EXITED && run.status <= 1;
-    res->identical = res->compared && f->max[0] == 0 && f->max[1] == 0 && f->max[2] == 0;
+    res->compared = d.run.end == RUN_EXITED && d.run.status <= 1;
+    return d;
+}
+
+/* Compares image, submitted for render k, with the reference through imgdiff (run_imgdiff);
+ * sets the verdict, with the reason in words. IMAGE=OTHER must then also equal the
+ * program's own image of OTHER, pixel for pixel; IMAGE>MASK is judged by coverage of MASK
+ * alone (docs/grading.md). */
+static void compare_image(const Grading *g, const Submission *s, int k, const char *image)
+{
+    const Render *r = &g->renders[k];
+    SceneResult *res = &s->results[k];
+    Figures *f = &res->figures;
+    res->image_show = grade_format("%s/%s.show.png", s->work, r->name);
+    res->heat_show = grade_format("%s/%s.heat-show.png", s->work, r->name);
+    const Render *other = r->judge == JUDGE_SAME_AS ? &g->renders[r->same_as] : NULL;
+    if (other != NULL && !s->results[r->same_as].compared) {
+        set_verdict(res, VERDICT_ERROR,
+                    "not judged: it must equal this program's own %s, which could not be "
+                    "compared (%s)",
+                    other->image, verdict_info[s->results[r->same_as].verdict].name);
+        return;
+    }
+    static char *const plain[] = {NULL}, *const cover[] = {"--cover", NULL},
+                       *const exact[] = {"--threshold", "0", "--allow", "0", NULL};
+    DiffRun d = run_imgdiff(g, s, k, image, r->judge == JUDGE_COVER ? r->mask : r->reference,
+                            r->judge == JUDGE_COVER ? cover : plain);
+    Verdict v = d.run.ok ? VERDICT_PASS : VERDICT_FAIL;
+    /* Identical to the reference: the report then shows the reference's picture. */
+    res->identical = res->compared && r->judge != JUDGE_COVER && f->max[0] == 0 &&
+                     f->max[1] == 0 && f->max[2] == 0;
     /* A program writes the reference's bytes when it renders as the model answer does, and
      * the canary's when it copies the file it found in its folder; images handed in are
      * flagged when they are the reference's file. */
     res->copy = res->identical &&
                 (s->program ? r->canary != NULL && same_bytes(image, r->canary)
                             : same_bytes(image, r->reference));
-    if (res->compared && statistical != NULL)
-        set_verdict(res, v, "%s", statistical);
+    /* It matches the reference: now against the program's own OTHER, exactly. */
+    bool same = other != NULL && v == VERDICT_PASS;
+    if (same) {
+        d = run_imgdiff(g, s, k, image, image_of(g, s, r->same_as), exact);
+        v = d.run.ok ? VERDICT_PASS : VERDICT_FAIL;
+        res->identical = res->copy = false;
+    }
+    const char *why = r->why != NULL ? r->why : "", *colon = r->why != NULL ? ": " : "";
+    if (res->compared && same && v == VERDICT_FAIL)
+        set_verdict(res, v,
+                    "%ld pixels (%.3g%%) differ from this program's own %s; the two must be "
+                    "equal pixel for pixel%s%s",
+                    f->differing, 100.0 * f->differing / f->pixels, other->image, colon, why);
+    else if (res->compared && same)
+        set_verdict(res, v, "matches the reference, and equals this program's own %s pixel for "
+                    "pixel", other->image);
+    else if (res->compared && r->judge == JUDGE_COVER)
+        set_verdict(res, v,
+                    "%.3g%% of the pixels are black here and drawn in %s, %s the %.3g%% "
+                    "allowed%s%s",
+                    100.0 * f->differing / f->pixels, strrchr(r->mask, '/') + 1,
+                    v == VERDICT_PASS ? "within" : "more than", f->allow * 100,
+                    v == VERDICT_PASS ? "" : colon, v == VERDICT_PASS ? "" : why);
+    else if (res->compared && d.statistical != NULL)
+        set_verdict(res, v, "%s", d.statistical);
     else if (res->identical)
         set_verdict(res, v, "identical to the reference");
     else if (res->compared && f->differing == 0)
@@ -105,15 +183,15 @@ static void compare_image(const Grading *g, const Submission *s, int k, const ch
                     "%.3g%% of the pixels differ by more than %.3g/255, %s the %.3g%% allowed",
                     100.0 * f->differing / f->pixels, f->threshold * 255,
                     v == VERDICT_PASS ? "within" : "more than", f->allow * 100);
-    else if (size[0] > 0) {
+    else if (d.size[0] > 0) {
         set_verdict(res, VERDICT_WRONG_SIZE, "the image is %d x %d pixels, the reference %d x %d",
-                    size[2], size[3], size[0], size[1]);
-        res->relative_width = (double)size[2] / size[0];
-    } else if (reason != NULL)
-        set_verdict(res, VERDICT_UNREADABLE, "the file cannot be read as an image: %s", reason);
-    else if (run.end != RUN_INTERRUPTED)
+                    d.size[2], d.size[3], d.size[0], d.size[1]);
+        res->relative_width = (double)d.size[2] / d.size[0];
+    } else if (d.reason != NULL)
+        set_verdict(res, VERDICT_UNREADABLE, "the file cannot be read as an image: %s", d.reason);
+    else if (d.run.end != RUN_INTERRUPTED)
         set_verdict(res, VERDICT_UNREADABLE, "imgdiff could not compare the file (%s)",
-                    run_describe(&run));
+                    run_describe(&d.run));
 }
 
 /* Judges the file at path as the image of render k, with lstat first so that a FIFO or a
@@ -140,17 +218,11 @@ static void judge_file(const Grading *g, const Submission *s, int k, const char 
         compare_image(g, s, k, path);
 }
 
-/* Grades render k of a submission of images: finds the image, by the reference's name or
- * with another of .png, .pfm and .exr, and judges it. */
+/* Grades render k of a submission of images: finds the image (image_of) and judges it. */
 static void grade_image(const Grading *g, Submission *s, int k)
 {
-    static const char *const endings[] = {".png", ".pfm", ".exr"};
-    const Render *r = &g->renders[k];
-    char *found = grade_format("%s/%s", s->path, r->image);
-    struct stat st;
-    for (size_t e = 0; e < sizeof endings / sizeof *endings && lstat(found, &st) != 0; e++)
-        found = grade_format("%s/%s%s", s->path, r->name, endings[e]);
-    judge_file(g, s, k, found, grade_format("no %s.png, .pfm or .exr in the submission", r->name));
+    judge_file(g, s, k, image_of(g, s, k),
+               grade_format("no %s.png, .pfm or .exr in the submission", g->renders[k].name));
 }
 
 /* Returns the end of a program's output (run_tail) with the work folder's path written
@@ -274,7 +346,7 @@ static void run_scene(const Grading *g, Submission *s, int k)
     const Render *r = &g->renders[k];
     SceneResult *res = &s->results[k];
     char *log = grade_format("%s/%s.log", s->work, r->name);
-    char *image = grade_format("%s/images/%s", s->work, r->image);
+    char *image = image_of(g, s, k);
     /* The program and its image are named from the run folder, so that neither what it
      * prints nor its command line depends on where the work folder is (a shard's, merged). */
     r->argv[0] = "../build/raytra";

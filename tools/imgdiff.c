@@ -25,6 +25,7 @@ typedef struct {
     double allow;     /* the fraction of the pixels that may differ */
     double scale;     /* the difference shown white in the heat map; 0: the largest found */
     bool quiet, help, machine; /* machine: figures as NAME VALUE lines, for tools/grade */
+    bool cover; /* --cover: a pixel differs when A is drawn there and B is not */
 } DiffOptions;
 
 /* How two images of the same size differ. */
@@ -50,6 +51,7 @@ enum {
     OPT_THUMB,
     OPT_DIFF_THUMB,
     OPT_SCALE,
+    OPT_COVER,
     OPT_QUIET,
     OPT_MACHINE,
     OPT_HELP
@@ -77,6 +79,10 @@ static const ToolOption options[] = {
     {"scale", 0, "S",
      "the difference that is white in the heat map, larger\nones too "
      "(default: the largest difference found)",
+     NULL},
+    {"cover", 0, NULL,
+     "judge coverage, not values: a pixel differs when A\nis drawn there and B is not (a pixel is "
+     "drawn when\na channel is above T; the background is black)",
      NULL},
     {"quiet", 'q', NULL, "print only the verdict", NULL},
     {"machine", 0, NULL,
@@ -119,8 +125,11 @@ static void print_help(void)
 static bool set_option(void *state, int k, const char *value)
 {
     DiffOptions *o = state;
-    if (k == OPT_QUIET || k == OPT_MACHINE || k == OPT_HELP) {
-        *(k == OPT_QUIET ? &o->quiet : k == OPT_HELP ? &o->help : &o->machine) = true;
+    if (k == OPT_QUIET || k == OPT_MACHINE || k == OPT_HELP || k == OPT_COVER) {
+        *(k == OPT_QUIET  ? &o->quiet
+          : k == OPT_HELP ? &o->help
+          : k == OPT_COVER ? &o->cover
+                           : &o->machine) = true;
         return true;
     }
     if (k == OPT_DIFF || k == OPT_THUMB || k == OPT_DIFF_THUMB) {
@@ -194,8 +203,16 @@ static bool check_output(const DiffOptions *o, const char *path)
     return false;
 }
 
-/* Measures how a and b, of the same size, differ, counting the pixels beyond threshold. */
-static Diff diff_images(const Image *a, const Image *b, double threshold)
+/* Tells whether pixel k of img is drawn: a channel above threshold, not the black background. */
+static bool drawn(const Image *img, long k, double threshold)
+{
+    const float *p = &img->pixels[3 * k];
+    return p[0] > threshold || p[1] > threshold || p[2] > threshold;
+}
+
+/* Measures how a and b, of the same size, differ, counting the pixels beyond threshold; with
+ * cover, counting instead the pixels drawn in a and not in b. */
+static Diff diff_images(const Image *a, const Image *b, double threshold, bool cover)
 {
     Diff d = {.x0 = a->width, .y0 = a->height, .x1 = -1, .y1 = -1};
     for (int y = 0; y < a->height; y++)
@@ -209,7 +226,8 @@ static Diff diff_images(const Image *a, const Image *b, double threshold)
                     d.largest_finite = fmax(d.largest_finite, e[c]);
             }
             d.nonfinite += isinf(largest);
-            if (largest > threshold) {
+            long k = (long)y * a->width + x;
+            if (cover ? drawn(a, k, threshold) && !drawn(b, k, threshold) : largest > threshold) {
                 d.differing++;
                 d.x0 = x < d.x0 ? x : d.x0;
                 d.y0 = y < d.y0 ? y : d.y0;
@@ -277,6 +295,11 @@ static int print_verdict(const Diff *d, long pixels, const DiffOptions *o)
     else if (d->nonfinite > 0)
         printf("FAIL: %ld pixel%s not finite (NaN or infinite)\n", d->nonfinite,
                d->nonfinite == 1 ? " is" : "s are");
+    else if (o->cover)
+        printf("%s: %.3g%% of the pixels are drawn in A and not in B (black, at most %.3g/255), "
+               "%s the %.3g%% allowed\n",
+               pass ? "PASS" : "FAIL", 100.0 * d->differing / pixels, o->threshold * 255,
+               pass ? "within" : "more than", o->allow * 100);
     else if (d->max[0] == 0 && d->max[1] == 0 && d->max[2] == 0)
         printf("PASS: the images are identical\n");
     else if (d->differing == 0)
@@ -340,7 +363,7 @@ static int compare(Image img[2], const ImgFileKind kind[2], const DiffOptions *o
                    "a PNG (clamped to [0, 1], sRGB, 8 bits)\n",
                    o->paths[linear - img]);
     }
-    Diff d = diff_images(a, b, o->threshold);
+    Diff d = diff_images(a, b, o->threshold, o->cover);
     if (!o->quiet && !o->machine)
         print_figures(&d, a->width, a->height, 0, o);
     /* Equal images get an all-black map; the scale then only needs to be positive. */

@@ -49,18 +49,27 @@ while read -r image scene options; do
     # ~IMAGE: a Monte Carlo render, judged against its statistical reference (docs/grading.md).
     ref=$refdir/$image
     case $image in '~'*) image=${image#\~} ref=$refdir/${image%.*}.stats.exr ;; esac
+    # IMAGE=OTHER: matches OTHER's reference, and equals this program's own OTHER, an
+    # earlier line, pixel for pixel; IMAGE>MASK: drawn wherever the reference MASK is
+    # drawn (docs/grading.md).
+    how='' own=''
+    case $image in
+    *'='*) ref=$refdir/${image#*=} own=$out/${image#*=} image=${image%%=*} ;;
+    *'>'*) how=--cover ref=$refdir/${image#*>} image=${image%%>*} ;;
+    esac
     images=$((images + 1))
     name=${image%.*}
-    # shellcheck disable=SC2086 # the options are words by design
+    # shellcheck disable=SC2086 # the options, and $how, are words by design
     if ! $limit "$raytra" -q "$top/$scene" "$out/$image" $options </dev/null 2>"$out/$name.log"; then
         echo "FAIL $image: raytra failed or ran too long on $scene (its output: $out/$name.log):"
         tail -n 5 "$out/$name.log" | sed 's/^/    /'
         images_failed=$((images_failed + 1))
-    elif "$imgdiff" --diff "$out/$name.heat.png" "$ref" "$out/$image" \
-        >"$out/$name.diff.txt" 2>&1; then
+    elif "$imgdiff" $how --diff "$out/$name.heat.png" "$ref" "$out/$image" \
+        >"$out/$name.diff.txt" 2>&1 && { [ -z "$own" ] || "$imgdiff" --threshold 0 --allow 0 \
+        --diff "$out/$name.heat.png" "$own" "$out/$image" >"$out/$name.diff.txt" 2>&1; }; then
         echo "ok   $image"
     else
-        echo "FAIL $image: $(tail -n 1 "$out/$name.diff.txt" | sed 's/^FAIL: //')"
+        echo "FAIL $image: $(tail -n 1 "$out/$name.diff.txt" | sed 's/^FAIL: //')${own:+" (it must equal this program's own ${own##*/} pixel for pixel)"}"
         [ -f "$out/$name.heat.png" ] && echo "     heat map: $out/$name.heat.png"
         images_failed=$((images_failed + 1))
     fi

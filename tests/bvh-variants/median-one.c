@@ -1,0 +1,51 @@
+/* median-one.c: a correct BVH unlike raytra's: object-median splits on the centroids' longest
+ * axis, down to one primitive a leaf; no SAH. */
+static BvhRef build_node(BvhBuilder *b, int begin, int end, int depth, Box *box_out)
+{
+    Box box = box_empty(), centroids = box_empty();
+    for (int k = begin; k < end; k++) {
+        box = box_union(box, b->boxes[b->prims[k]]);
+        centroids = box_add_point(centroids, b->centroids[b->prims[k]]);
+    }
+    *box_out = box;
+    if (depth > b->depth)
+        b->depth = depth;
+    if (end - begin == 1) {
+        b->leaf_count++;
+        return (BvhRef){(uint32_t)begin, 1};
+    }
+    /* The longest axis of the centroids, and the median along it by quickselect. */
+    Vec3 extent = vec3_sub(centroids.hi, centroids.lo);
+    int axis = extent.x >= extent.y && extent.x >= extent.z ? 0 : extent.y >= extent.z ? 1 : 2;
+    int mid = begin + (end - begin) / 2, lo = begin, hi = end - 1;
+    while (lo < hi) {
+        Vec3 pc = b->centroids[b->prims[(lo + hi) / 2]];
+        double pivot = axis == 0 ? pc.x : axis == 1 ? pc.y : pc.z;
+        int i = lo, j = hi;
+        while (i <= j) {
+            Vec3 ci = b->centroids[b->prims[i]], cj = b->centroids[b->prims[j]];
+            if ((axis == 0 ? ci.x : axis == 1 ? ci.y : ci.z) < pivot) {
+                i++;
+            } else if ((axis == 0 ? cj.x : axis == 1 ? cj.y : cj.z) > pivot) {
+                j--;
+            } else {
+                int swap = b->prims[i];
+                b->prims[i++] = b->prims[j];
+                b->prims[j--] = swap;
+            }
+        }
+        if (mid <= j)
+            hi = j;
+        else if (mid >= i)
+            lo = i;
+        else
+            break;
+    }
+    uint32_t self = (uint32_t)b->node_count++;
+    Box child_box[2];
+    BvhRef left = build_node(b, begin, mid, depth + 1, &child_box[0]);
+    BvhRef right = build_node(b, mid, end, depth + 1, &child_box[1]);
+    bvh_node_set(&b->nodes[self], 0, child_box[0], left);
+    bvh_node_set(&b->nodes[self], 1, child_box[1], right);
+    return (BvhRef){self, 0};
+}

@@ -1,0 +1,66 @@
+/* sah-ties.c: a correct BVH unlike raytra's: the SAH keeps the last of equally cheap splits
+ * (<= where raytra has <) and takes a split as cheap as a leaf. */
+int bvh_split(BvhBuilder *b, int begin, int end, Box box, Box centroids)
+{
+    enum { BINS = 16 };
+    double area = box_half_area(box);
+    if (!(area > 0))
+        return -1;
+    int n = end - begin, best_axis = -1, best_plane = 0;
+    double best_cost = n, lo[3], scale[3];
+    for (int a = 0; a < 3; a++) {
+        Vec3 l = centroids.lo, h = centroids.hi;
+        lo[a] = a == 0 ? l.x : a == 1 ? l.y : l.z;
+        double extent = (a == 0 ? h.x : a == 1 ? h.y : h.z) - lo[a];
+        scale[a] = extent > 0 ? BINS / extent : 0;
+        if (scale[a] == 0)
+            continue;
+        Box bins[BINS];
+        int counts[BINS] = {0};
+        for (int k = 0; k < BINS; k++)
+            bins[k] = box_empty();
+        for (int k = begin; k < end; k++) {
+            Vec3 c = b->centroids[b->prims[k]];
+            int bin = (int)(((a == 0 ? c.x : a == 1 ? c.y : c.z) - lo[a]) * scale[a]);
+            bin = bin < 0 ? 0 : bin >= BINS ? BINS - 1 : bin;
+            bins[bin] = box_union(bins[bin], b->boxes[b->prims[k]]);
+            counts[bin]++;
+        }
+        /* Each plane p between bin p - 1 and bin p, its two sides gathered afresh. */
+        for (int p = 1; p < BINS; p++) {
+            Box left = box_empty(), right = box_empty();
+            int left_n = 0;
+            for (int k = 0; k < BINS; k++) {
+                if (k < p)
+                    left = box_union(left, bins[k]), left_n += counts[k];
+                else
+                    right = box_union(right, bins[k]);
+            }
+            if (left_n == 0 || left_n == n)
+                continue;
+            double cost = 1 + (box_half_area(left) * left_n + box_half_area(right) * (n - left_n)) / area;
+            if (cost <= best_cost) {
+                best_cost = cost;
+                best_axis = a;
+                best_plane = p;
+            }
+        }
+    }
+    if (best_axis < 0)
+        return -1;
+    int i = begin, j = end - 1;
+    while (i <= j) {
+        Vec3 c = b->centroids[b->prims[i]];
+        int bin = (int)(((best_axis == 0 ? c.x : best_axis == 1 ? c.y : c.z) - lo[best_axis]) *
+                        scale[best_axis]);
+        bin = bin < 0 ? 0 : bin >= BINS ? BINS - 1 : bin;
+        if (bin < best_plane) {
+            i++;
+        } else {
+            int swap = b->prims[i];
+            b->prims[i] = b->prims[j];
+            b->prims[j--] = swap;
+        }
+    }
+    return i;
+}
