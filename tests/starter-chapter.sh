@@ -12,7 +12,7 @@ tmp=$(mktemp -d) || exit 2
 trap 'rm -rf "$tmp"' EXIT
 failed=0
 for part in "$@"; do
-    part=$(basename "$(ls -d "$top/milestones/$part"* | head -1)")
+    for dir in "$top/milestones/$part"*; do part=$(basename "$dir"); break; done
     full=$top/docs/$part.md
     sh "$top/tools/starter.sh" --chapter "$part" "$tmp/$part" >"$tmp/out" 2>&1 ||
         { echo "FAIL: $part: tools/starter.sh --chapter failed:"; sed 's/^/    /' "$tmp/out"; failed=$((failed + 1)); continue; }

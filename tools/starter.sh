@@ -273,7 +273,7 @@ if [ $chapter = yes ]; then
         milestones/*.c) [ $stub_earlier = no ] || mode=stub ;;
         esac
         mkdir -p "$mirror/$(dirname "$file")" &&
-            filter $mode "$top/$file" "$mirror/$file" "$file" /dev/null anchors || exit 2
+            filter "$mode" "$top/$file" "$mirror/$file" "$file" /dev/null anchors || exit 2
     done || exit 2
     mkdir -p "$tmp/docs" && cp "$doc" "$tmp/docs/$part.md" || exit 2
     sh "$top/tools/docsnip.sh" --root "$mirror" --update "$tmp/docs/$part.md" >/dev/null ||
