@@ -49,7 +49,7 @@ FUZZ_SECONDS ?= 1800
 
 .PHONY: all test demo check-demo check-chromium references docs check-docs check-slides check-figures check-layout check-course clean \
         check-robust check-fuzz-regressions check-bad-input check-interrupt check-nonfinite \
-        check-course-render check-renders valgrind fuzz fuzz-run bench mistakes starter check-starter check-starters \
+        check-course-render check-renders valgrind fuzz fuzz-run bench mistakes starter check-starter check-starter-chapter check-starters \
         check-exercises check-statistics check-bvh-variants statistics-figure gradescope check-gradescope \
         check-slurm check-contain
 .NOTPARALLEL:
@@ -69,7 +69,7 @@ test:
 	@$(SUBMAKE) -C tools/mistakes
 	@$(SUBMAKE) check-docs check-slides check-figures check-exercises check-layout check-course \
 	            check-demo check-chromium
-	@$(SUBMAKE) check-starter
+	@$(SUBMAKE) check-starter check-starter-chapter
 	@$(SUBMAKE) check-robust
 	@echo "make test: every test passed"
 
@@ -157,12 +157,17 @@ starter:
 	@if [ $(words $(PART)) -ne 1 ]; then echo "make starter: PART is one part (PART=1.2), got" \
 	    "'$(PART)': make one starter at a time" >&2; exit 2; fi
 	$(DEPS_STEP)
-	@tools/starter.sh $(STARTER_OPTIONS) '$(PART)' $(if $(DEST),'$(subst ','\'',$(DEST))')
+	@tools/starter.sh --chapter $(STARTER_OPTIONS) '$(PART)' $(if $(DEST),'$(subst ','\'',$(DEST))')
 
 # The starter of the latest part with every earlier part stubbed too: each marked function
 # of the project in one build, failing its tests as a stub and passing them when solved.
 check-starter:
 	@tests/starter.sh --stub-earlier $(lastword $(PARTS))
+
+# The student edition of part 1.4's chapter (tools/starter.sh --chapter): its marked
+# functions as stubs, nothing else changed; tests/starter-chapter.sh 1.1 ... 1.6 tries all.
+check-starter-chapter:
+	@tests/starter-chapter.sh 1.4
 
 # Each part's starter as a course hands it out, the earlier parts complete.
 check-starters: check-starter

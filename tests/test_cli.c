@@ -22,7 +22,7 @@ static CliSpec with_options(const CliSpec *part)
 }
 
 /* Parses the words of a command line (ended by NULL) into opts. */
-static CliResult parse_as(const CliSpec *part, Options *opts, va_list ap)
+static CliResult parse_words(const CliSpec *part, Options *opts, va_list ap)
 {
     char *argv[32] = {"raytra"};
     int argc = 1;
@@ -30,6 +30,28 @@ static CliResult parse_as(const CliSpec *part, Options *opts, va_list ap)
         argv[argc++] = a;
     CliSpec s = with_options(part);
     return cli_parse(&s, argc, argv, opts);
+}
+
+/* Parses the words of a command line (ended by NULL) into opts. What cli_parse prints
+ * (the refusals these tests provoke) is shown labelled, so that a passing run does not
+ * look like one that failed. */
+static CliResult parse_as(const CliSpec *part, Options *opts, va_list ap)
+{
+    fflush(stderr);
+    int saved = dup(STDERR_FILENO);
+    FILE *caught = tmpfile();
+    ck_assert(saved >= 0 && caught != NULL);
+    ck_assert_int_ge(dup2(fileno(caught), STDERR_FILENO), 0);
+    CliResult r = parse_words(part, opts, ap);
+    fflush(stderr);
+    dup2(saved, STDERR_FILENO);
+    close(saved);
+    rewind(caught);
+    char line[512];
+    while (fgets(line, sizeof line, caught) != NULL)
+        fprintf(stderr, "test_cli: refused, as it should be: %s", line);
+    fclose(caught);
+    return r;
 }
 
 /* Parses the words of a command line (ended by NULL) as part 1.1 does. */
@@ -64,7 +86,7 @@ static char *messages_of(const CliSpec *part, CliResult result, ...)
     Options opts;
     va_list ap;
     va_start(ap, result);
-    CliResult got = parse_as(part, &opts, ap);
+    CliResult got = parse_words(part, &opts, ap);
     va_end(ap);
     fflush(stderr);
     dup2(saved, STDERR_FILENO);

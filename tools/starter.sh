@@ -1,13 +1,17 @@
 #!/bin/sh
 # starter.sh: writes a part's starter, the folder a course hands out, with the student's functions as stubs.
 #
-# Usage: tools/starter.sh [--solution] [--stub-earlier] [--docs-url URL] PART [DEST]
+# Usage: tools/starter.sh [--solution] [--stub-earlier] [--chapter] [--docs-url URL] PART [DEST]
 #   PART            one part: 1.2, 1.2-shading or milestones/1.2-shading
 #   DEST            the folder to write; default out/starter-<part> at the top
 #   --solution      keep the bodies of every marked function: the instructor's copy
 #   --stub-earlier  stub the marked functions of the earlier parts too; by default
 #                   they ship complete, as a course hands out a part's solution
 #                   after its deadline
+#   --chapter       write the student edition of the part's chapter too, as
+#                   docs/PART.md: the chapter with each marked function's excerpt
+#                   as the starter has it (its contract and its stub), prose and
+#                   figures kept; `make starter` gives this option
 #   --docs-url URL  where the course publishes raytra's files (the chapters): the
 #                   READMEs' links to files not in the starter point there
 #
@@ -24,7 +28,7 @@
 set -u
 top=$(cd "$(dirname "$0")/.." && pwd) || exit 2
 usage() {
-    echo "usage: $0 [--solution] [--stub-earlier] [--docs-url URL] PART [DEST]" >&2
+    echo "usage: $0 [--solution] [--stub-earlier] [--chapter] [--docs-url URL] PART [DEST]" >&2
     exit 2
 }
 die() {
@@ -34,13 +38,15 @@ die() {
 
 solution=no
 stub_earlier=no
+chapter=no
 docs_url=
 while [ $# -gt 0 ]; do
     case $1 in
     --solution) solution=yes ;;
     --stub-earlier) stub_earlier=yes ;;
+    --chapter) chapter=yes ;;
     --docs-url) [ $# -ge 2 ] || usage; docs_url=${2%/}; shift ;;
-    -h | --help) sed -n '2,24p' "$0" | sed 's/^# \{0,1\}//'; exit 0 ;;
+    -h | --help) sed -n '2,28p' "$0" | sed 's/^# \{0,1\}//'; exit 0 ;;
     -*) usage ;;
     *) break ;;
     esac
@@ -85,10 +91,11 @@ trap 'rm -rf "$tmp"' EXIT
 trap 'exit 130' INT TERM
 
 # Filters a C file of a part: stubs each marked body (MODE stub) or keeps it (MODE
-# solution); drops the marker lines and the docs' excerpt anchors either way. Each
-# stub is listed in LIST as FILE:LINE: NAME for the starter's README.
-filter() { # MODE SOURCE OUTPUT NAME-IN-LIST LIST
-    awk -v mode="$1" -v file="$4" -v list="$5" '
+# solution); drops the marker lines, and the docs' excerpt anchors unless ANCHORS is
+# given (the student edition of a chapter is made from them). Each stub is listed in
+# LIST as FILE:LINE: NAME for the starter's README.
+filter() { # MODE SOURCE OUTPUT NAME-IN-LIST LIST [ANCHORS]
+    awk -v mode="$1" -v file="$4" -v list="$5" -v anchors="${6:-}" '
     function trim(s) { gsub(/^[ \t]+|[ \t]+$/, "", s); return s }
     function emit(s) { print s; lines++ }
     function fail(msg) { printf "%s:%d: %s\n", file, FNR, msg > "/dev/stderr"; bad = 1; exit 2 }
@@ -125,7 +132,7 @@ filter() { # MODE SOURCE OUTPUT NAME-IN-LIST LIST
         # end excerpt: starter-return
         printf "%s:%d: %s\n", file, todo, name >> list
     }
-    /^[ \t]*\/\* (end )?excerpt: [a-z0-9-]+ \*\/[ \t]*$/ { next }
+    /^[ \t]*\/\* (end )?excerpt: [a-z0-9-]+ \*\/[ \t]*$/ { if (anchors == "") next; print; next }
     state == 0 && /^\/\* starter: todo(: .*)? \*\/$/ {
         hint = $0
         sub(/^\/\* starter: todo:? ?/, "", hint)
@@ -189,12 +196,20 @@ cp -R "$top/milestones/$part/tests" "$top/milestones/$part/references" "$tmp/mil
     exit 2
 # The instructor's controls (points, visibility, the folder of hidden scenes) stay theirs.
 rm -f "$tmp/milestones/$part/references/grading.conf"
+# The lists of the earlier parts' reference renders (not their images): a part's tests
+# may render those scenes again (part 1.4's same-images.sh compares its modes with 1.3).
+for used in $uses; do
+    mkdir -p "$tmp/milestones/$used/references" &&
+        cp "$top/milestones/$used/references/renders.txt" "$tmp/milestones/$used/references/" || exit 2
+done
 
 # The scenes: those the references are rendered from, those the tests name, and the
 # meshes they load (w lines, relative to the scene).
 refs=$top/milestones/$part/references/renders.txt
 {
-    awk '$1 !~ /^#/ && NF >= 2 { sub(/^scenes\//, "", $2); print $2 }' "$refs"
+    for list in "$refs" $(for used in $uses; do echo "$top/milestones/$used/references/renders.txt"; done); do
+        awk '$1 !~ /^#/ && NF >= 2 { sub(/^scenes\//, "", $2); print $2 }' "$list"
+    done
     for t in $tests; do grep -o '[A-Za-z0-9_-]*\.scn' "$top/milestones/$part/$t"; done
 } | sort -u | while read -r scene; do
     [ -f "$top/scenes/$scene" ] || continue
@@ -245,6 +260,31 @@ clean:
 	@for dir in milestones/*; do $(SUBMAKE) -C $$dir clean; done
 	rm -rf out raytra
 EOF
+
+# The student edition of the chapter: its excerpts taken by docsnip from the sources as
+# the starter has them (anchors kept), so that a marked function shows its contract and
+# its stub; the figures of the part beside it.
+if [ $chapter = yes ]; then
+    doc=$top/docs/$part.md
+    [ -f "$doc" ] || die "no chapter docs/$part.md for --chapter"
+    mirror=$tmp/.chapter-sources
+    sed -n 's/^<!-- excerpt: \([^ ]*\) .*/\1/p' "$doc" | sort -u | while read -r file; do
+        mode=solution
+        case $file in
+        milestones/"$part"/*.c) [ $solution = yes ] || mode=stub ;;
+        milestones/*.c) [ $stub_earlier = no ] || mode=stub ;;
+        esac
+        mkdir -p "$mirror/$(dirname "$file")" &&
+            filter "$mode" "$top/$file" "$mirror/$file" "$file" /dev/null anchors || exit 2
+    done || exit 2
+    mkdir -p "$tmp/docs" && cp "$doc" "$tmp/docs/$part.md" || exit 2
+    sh "$top/tools/docsnip.sh" --root "$mirror" --update "$tmp/docs/$part.md" >/dev/null ||
+        die "docsnip could not make the student edition of docs/$part.md"
+    rm -rf "$mirror"
+    if [ -d "$top/docs/figures/$part" ]; then
+        mkdir -p "$tmp/docs/figures" && cp -R "$top/docs/figures/$part" "$tmp/docs/figures/" || exit 2
+    fi
+fi
 
 # The starter's README: what to do, and where each TODO is.
 earlier="the parts in \`milestones/\` other than $part are complete."

@@ -41,132 +41,104 @@ void accel_free(Accel *accel)
     bvh_free(&accel->bvh);
 }
 
-/* Fills in hit as the face of surface s's box that ray r meets at t, with that face's
- * normal, in the surface's material: how modes 1 and 2 draw a box in its place. */
-static void box_face_hit(const Scene *scene, int s, Ray r, double t, Vec3 normal, Hit *hit)
-{
-    int planes = scene->sphere_count + scene->plane_count;
-    if (s < scene->sphere_count)
-        *hit = (Hit){.kind = SURFACE_SPHERE, .index = s, .material = scene->spheres[s].material};
-    else
-        *hit = (Hit){.kind = SURFACE_TRIANGLE,
-                     .index = s - planes,
-                     .material = scene->triangles[s - planes].material};
-    hit->t = t;
-    hit->point = ray_at(r, t);
-    hit->normal = normal;
-}
-
 /* excerpt: accel-boxed-hit */
 /* Mode 0: part 1.2's world_hit, but a surface is tested only when the ray meets its box;
  * the box is closed and a little larger, so it never rejects a hit (a plane's box is
- * all of space). */
-static bool boxed_hit(const void *data, Ray r, double tmin, double tmax, Hit *hit)
+ * all of space). With any, stops at the first surface found: a shadow ray's question. */
+static bool boxed_search(const Accel *accel, Ray r, double tmin, double tmax, Hit *hit, bool any)
 {
-    const Accel *accel = data;
     const Scene *scene = accel->scene;
     BoxRay br = box_ray(r);
     bool found = false;
     double t_box;
     int surfaces = scene->sphere_count + scene->plane_count + scene->triangle_count;
-    for (int s = 0; s < surfaces; s++)
+    for (int s = 0; s < surfaces && !(found && any); s++)
         if (box_hit(accel->boxes[s], &br, tmin, tmax, &t_box) &&
             world_intersect(scene, s, r, tmin, tmax, hit)) {
             tmax = hit->t;
             found = true;
         }
-    if (found)
+    if (found && !any)
         world_complete_hit(scene, r, hit);
     return found;
 }
 /* end excerpt: accel-boxed-hit */
 
-/* Mode 0: whether anything lies on the ray, stopping at the first surface found. */
+/* Mode 0: the closest surface. */
+static bool boxed_hit(const void *data, Ray r, double tmin, double tmax, Hit *hit)
+{
+    return boxed_search(data, r, tmin, tmax, hit, false);
+}
+
+/* Mode 0: whether anything lies on the ray. */
 static bool boxed_blocked(const void *data, Ray r, double tmin, double tmax)
 {
-    const Accel *accel = data;
-    const Scene *scene = accel->scene;
-    BoxRay br = box_ray(r);
-    double t_box;
     Hit hit;
-    int surfaces = scene->sphere_count + scene->plane_count + scene->triangle_count;
-    for (int s = 0; s < surfaces; s++)
-        if (box_hit(accel->boxes[s], &br, tmin, tmax, &t_box) &&
-            world_intersect(scene, s, r, tmin, tmax, &hit))
-            return true;
-    return false;
+    return boxed_search(data, r, tmin, tmax, &hit, true);
 }
 
 /* excerpt: accel-box-hit */
-/* Mode 1: the boxes instead of the spheres and triangles, as surfaces in their own
- * right: the t where the ray meets the box, the face's axis normal, the surface's
- * material. Planes have no box and are drawn as they are. */
-static bool surface_boxes_hit(const void *data, Ray r, double tmin, double tmax, Hit *hit)
+/* Modes 1 and 2: box b drawn in place of surface s, as a surface in its own right: when
+ * the ray meets it with tmin < t < *tmax, fills in hit (its t, the face's axis normal
+ * from box_hit_face, the surface's material) and lowers *tmax to t. */
+static bool box_drawn(const Scene *scene, Box b, int s, Ray r, double tmin, double *tmax,
+                      Hit *hit)
 {
-    const Accel *accel = data;
-    const Scene *scene = accel->scene;
-    bool found = false;
-    int surfaces = scene->sphere_count + scene->plane_count + scene->triangle_count;
-    for (int s = 0; s < surfaces; s++) {
-        double t;
-        Vec3 normal;
-        bool plane = s >= scene->sphere_count && s < scene->sphere_count + scene->plane_count;
-        if (plane && world_intersect(scene, s, r, tmin, tmax, hit)) {
-            world_complete_hit(scene, r, hit);
-        } else if (!plane && box_hit_face(accel->boxes[s], r, tmin, tmax, &t, &normal)) {
-            box_face_hit(scene, s, r, t, normal, hit);
-        } else {
-            continue;
-        }
-        tmax = hit->t;
-        found = true;
-    }
-    return found;
+    double t;
+    Vec3 normal;
+    if (!box_hit_face(b, r, tmin, *tmax, &t, &normal))
+        return false;
+    int triangle = s - scene->sphere_count - scene->plane_count;
+    bool sphere = s < scene->sphere_count;
+    *hit = (Hit){.t = t,
+                 .point = ray_at(r, t),
+                 .normal = normal,
+                 .kind = sphere ? SURFACE_SPHERE : SURFACE_TRIANGLE,
+                 .index = sphere ? s : triangle,
+                 .material = sphere ? scene->spheres[s].material
+                                    : scene->triangles[triangle].material};
+    *tmax = t;
+    return true;
 }
 /* end excerpt: accel-box-hit */
 
-/* The closest leaf box so far: where the ray meets it, and its leaf's first entry. */
+/* Where a leaf's box drawn in mode 2 goes. */
 typedef struct {
+    Hit *hit;
     bool found;
-    uint32_t first;
-    double t;
-    Vec3 normal;
-    double tmax;
 } LeafBoxes;
 
-/* Tests a leaf's box (its primitives' boxes together) as if it were a surface, as the
- * BVH's leaf_closest tests primitives: the smaller (t, first entry) wins. */
+/* Mode 2: a leaf's box (its primitives' boxes together) drawn, in the material of its
+ * first primitive. */
 static bool leaf_box(const Bvh *bvh, BvhRef leaf, Ray r, double tmin, double *tmax, void *state)
 {
     LeafBoxes *lb = state;
     Box box = box_empty();
     for (uint32_t k = leaf.index; k < leaf.index + leaf.count; k++)
         box = box_union(box, box_of_surface(bvh->scene, bvh->prims[k]));
-    double t;
-    Vec3 normal;
-    if (box_hit_face(box, r, tmin, lb->tmax, &t, &normal) &&
-        (!lb->found || t < lb->t || (t == lb->t && leaf.index < lb->first))) {
-        *lb = (LeafBoxes){true, leaf.index, t, normal, lb->tmax};
-        *tmax = t;
-    }
+    lb->found |= box_drawn(bvh->scene, box, bvh->prims[leaf.index], r, tmin, tmax, lb->hit);
     return false;
 }
 
-/* Mode 2: the BVH's leaf boxes instead of the spheres and triangles, each in the material
- * of its first primitive; planes as they are. */
-static bool leaf_boxes_hit(const void *data, Ray r, double tmin, double tmax, Hit *hit)
+/* Modes 1 and 2: the boxes drawn (every surface's, or the BVH's leaves') instead of the
+ * spheres and triangles; planes have no box and are drawn as they are. */
+static bool boxes_hit(const void *data, Ray r, double tmin, double tmax, Hit *hit)
 {
     const Accel *accel = data;
     const Scene *scene = accel->scene;
-    LeafBoxes lb = {.tmax = tmax};
-    bvh_traverse(&accel->bvh, r, tmin, &tmax, leaf_box, &lb);
-    if (lb.found)
-        box_face_hit(scene, accel->bvh.prims[lb.first], r, lb.t, lb.normal, hit);
+    LeafBoxes lb = {hit, false};
+    long tests = 0;
+    if (accel->mode == ACCEL_LEAF_BOXES)
+        bvh_traverse(&accel->bvh, r, tmin, &tmax, leaf_box, &lb, &tests);
+    int spheres = scene->sphere_count, planes = spheres + scene->plane_count;
+    for (int s = 0; accel->mode == ACCEL_SURFACE_BOXES && s < planes + scene->triangle_count; s++)
+        if (s < spheres || s >= planes)
+            lb.found |= box_drawn(scene, accel->boxes[s], s, r, tmin, &tmax, hit);
     bool found = lb.found;
     for (int k = 0; k < scene->plane_count; k++)
-        if (world_intersect(scene, scene->sphere_count + k, r, tmin, found ? hit->t : lb.tmax,
-                            hit)) {
+        if (world_intersect(scene, scene->sphere_count + k, r, tmin, tmax, hit)) {
             world_complete_hit(scene, r, hit);
+            tmax = hit->t;
             found = true;
         }
     return found;
@@ -176,9 +148,7 @@ static bool leaf_boxes_hit(const void *data, Ray r, double tmin, double tmax, Hi
 static bool boxes_blocked(const void *data, Ray r, double tmin, double tmax)
 {
     Hit hit;
-    return ((const Accel *)data)->mode == ACCEL_SURFACE_BOXES
-               ? surface_boxes_hit(data, r, tmin, tmax, &hit)
-               : leaf_boxes_hit(data, r, tmin, tmax, &hit);
+    return boxes_hit(data, r, tmin, tmax, &hit);
 }
 
 /* excerpt: accel-bvh-hit */
@@ -200,48 +170,20 @@ Surfaces accel_surfaces(const Accel *accel)
 {
     switch (accel->mode) {
     case ACCEL_BOXED: return (Surfaces){boxed_hit, boxed_blocked, accel};
-    case ACCEL_SURFACE_BOXES: return (Surfaces){surface_boxes_hit, boxes_blocked, accel};
-    case ACCEL_LEAF_BOXES: return (Surfaces){leaf_boxes_hit, boxes_blocked, accel};
+    case ACCEL_SURFACE_BOXES: return (Surfaces){boxes_hit, boxes_blocked, accel};
+    case ACCEL_LEAF_BOXES: return (Surfaces){boxes_hit, boxes_blocked, accel};
     case ACCEL_BVH: break;
     }
     return (Surfaces){bvh_surfaces_hit, bvh_surfaces_blocked, accel};
 }
 
-/* Counts the boxes and primitives the BVH's search for a closest hit tests below at,
- * in bvh_traverse's order: the nearer child first, the other if the hits found since
- * (which lower *tmax) have not ruled it out. */
-static long count_below(const Bvh *bvh, BvhRef at, const FloatRay *fr, Ray r, double *tmax)
-{
-    Hit hit;
-    for (uint32_t k = at.index; k < at.index + at.count; k++)
-        if (world_intersect(bvh->scene, bvh->prims[k], r, 0, *tmax, &hit))
-            *tmax = hit.t;
-    if (at.count > 0 || at.index >= (uint32_t)bvh->node_count) /* a leaf, or a tree unfinished */
-        return at.count;
-    const BvhNode *node = &bvh->nodes[at.index];
-    float entry[2];
-    int hits = bvh_node_hit(node, fr, box_float_tmax(*tmax), entry);
-    long tests = 2;
-    for (int k = hits == 3 && entry[1] < entry[0], i = 0; i < 2; i++, k = 1 - k)
-        if ((hits >> k & 1) && box_float_reaches(fr, entry[k], box_float_tmax(*tmax)))
-            tests += count_below(bvh, node->child[k], fr, r, tmax);
-    return tests;
-}
-
 /* Returns how many boxes and primitives ray r is tested against to find its closest hit
- * in accel's mode, for --view box-tests: with the BVH (modes 2 and 3) the root's box,
- * two boxes a node it visits and the leaves' primitives, in modes 0 and 1 every
- * surface's box; and every plane, which has no box. */
+ * in accel's mode, for --view box-tests: with the BVH (modes 2 and 3), bvh_count_tests;
+ * in modes 0 and 1 every surface's box, and every plane, which has no box. */
 long accel_count_tests(const Accel *accel, Ray r)
 {
     const Scene *s = accel->scene;
-    const Bvh *bvh = &accel->bvh;
     if (accel->mode != ACCEL_BVH && accel->mode != ACCEL_LEAF_BOXES)
         return s->sphere_count + s->triangle_count + s->plane_count;
-    FloatRay fr = box_float_ray(r, 0, bvh->in_range);
-    double tmax = INFINITY;
-    float entry[2];
-    if (bvh->prim_count == 0 || !(bvh_node_hit(&bvh->top, &fr, INFINITY, entry) & 1))
-        return (bvh->prim_count > 0) + s->plane_count;
-    return 1 + count_below(bvh, bvh->root, &fr, r, &tmax) + s->plane_count;
+    return bvh_count_tests(&accel->bvh, r);
 }

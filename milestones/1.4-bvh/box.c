@@ -2,7 +2,6 @@
  */
 #include "box.h"
 
-#include <float.h>
 #include <math.h>
 
 /* Returns the box that holds nothing: lo = +inf, hi = -inf, so that any union undoes it. */
@@ -50,17 +49,11 @@ Box box_of_surface(const Scene *scene, int s)
     return box_of_triangle(&tri);
 }
 
-/* Returns a float no greater than x: x rounded, and moved down past x when rounding
- * went up (by 2^-23 of x, at least one float step; 2^-149 for the smallest floats). */
-float box_float_below(double x)
-{
-    float f = (float)x;
-    return (double)f <= x ? f : (float)(x - fabs(x) * 0x1p-23 - 0x1p-149);
-}
-
 /* starter: todo */
 /* excerpt: box-of */
-/* Returns the box of sphere s: its centre plus and minus the radius on each axis. */
+/* Returns the box of sphere s: its centre plus and minus the radius on each axis, grown
+ * by box_pad (2^-20 of its largest coordinate, on every side), as every surface's box
+ * is. tests/test_box.c: boxes_of_surfaces. */
 Box box_of_sphere(const Sphere *s)
 {
     Vec3 r = vec3(s->radius, s->radius, s->radius);
@@ -70,7 +63,9 @@ Box box_of_sphere(const Sphere *s)
 
 /* starter: todo */
 /* excerpt: box-of-triangle */
-/* Returns the box of triangle tri: the least and greatest coordinates of its corners. */
+/* Returns the box of triangle tri: the least and greatest coordinates of its three
+ * corners on each axis, grown by box_pad (2^-20 of its largest coordinate, on every
+ * side), as every surface's box is. tests/test_box.c: boxes_of_surfaces. */
 Box box_of_triangle(const Triangle *tri)
 {
     return box_pad(box_add_point(box_add_point((Box){*tri->a, *tri->a}, *tri->b), *tri->c));
@@ -79,9 +74,14 @@ Box box_of_triangle(const Triangle *tri)
 
 /* starter: todo */
 /* excerpt: box-hit-face */
-/* Finds where ray r meets the surface of box b with tmin < t < tmax, and the unit normal
- * of the face there: where it enters the box, or where it leaves it when it starts
- * inside. Modes 1 and 2 draw the boxes themselves with this. */
+/* Finds where ray r meets the surface of the closed box b with tmin < t < tmax (strict,
+ * as every surface's test), and the unit normal of the face there: where it enters
+ * the box (the slab test's t0, from box_slab, which swaps the planes for a negative
+ * direction), or where it leaves it (t1) when t0 is not in (tmin, tmax). The normal is
+ * +-e_axis of the face's axis, facing the ray's origin: -sign(d) on that axis. At an
+ * edge or a corner, where faces of two axes give the same t, the lower axis (x, y, z)
+ * is the face. Modes 1 and 2 draw the boxes themselves with this. tests/test_box.c:
+ * faces_of_boxes and the others that call box_hit_face. */
 bool box_hit_face(Box b, Ray r, double tmin, double tmax, double *t, Vec3 *normal)
 {
     /* The slab test again, keeping the axis that set each end of the interval. */
@@ -120,38 +120,3 @@ bool box_hit_face(Box b, Ray r, double tmin, double tmax, double *t, Vec3 *norma
     return true;
 }
 /* end excerpt: box-hit-face */
-
-/* excerpt: box-float-ray-make */
-/* Makes ray r, from tmin on, ready for bvh_node_hit. Rounding the origin moves the
- * slab planes' t by up to shift = |o - o_float| / |d| on an axis; the slack is
- * three times that, and FLT_MIN for products too small for a float's 24 digits.
- * An axis with d = 0 needs none: no float lies between o and its rounding, so the
- * side of each plane the origin is on stays the same (or the product is 0 * inf,
- * NaN, which the test leaves out). Out of range, the ray meets every box. */
-FloatRay box_float_ray(Ray r, double tmin, bool in_range)
-{
-    FloatRay fr = {.tmin = (float)tmin};
-    double o[3] = {r.origin.x, r.origin.y, r.origin.z}, d[3] = {r.dir.x, r.dir.y, r.dir.z};
-    double shift = 0;
-    in_range = in_range && tmin >= 0;
-    for (int a = 0; a < 3; a++) {
-        double inv = 1 / d[a];
-        float of = (float)o[a], near = (float)inv, far = (float)(inv * (1 + 0x1p-20));
-        fr.origin[a][0] = fr.origin[a][1] = of;
-        fr.inv_near[a][0] = fr.inv_near[a][1] = near;
-        fr.inv_far[a][0] = fr.inv_far[a][1] = far; /* pbrt's tMax *= 1 + 2 gamma(3) */
-        fr.near[a] = signbit(d[a]) ? 6 + 2 * a : 2 * a; /* towards -x, it enters at hi */
-        fr.far[a] = signbit(d[a]) ? 2 * a : 6 + 2 * a;
-        in_range = in_range && fabs(o[a]) <= 0x1p60;
-        if (d[a] != 0) {
-            double moved = fabs(o[a] - of) * fabs(inv);
-            shift = moved > shift ? moved : shift;
-            in_range = in_range && fabs(inv) >= 0x1p-60 && fabs(inv) <= 0x1p60;
-        }
-    }
-    fr.slack = (float)(3 * shift) + FLT_MIN;
-    if (!in_range) /* every t is 0, and the slack infinite */
-        fr = (FloatRay){.near = {0, 2, 4}, .far = {6, 8, 10}, .slack = INFINITY};
-    return fr;
-}
-/* end excerpt: box-float-ray-make */

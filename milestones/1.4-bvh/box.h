@@ -95,41 +95,11 @@ static inline double box_half_area(Box b)
     return e.x * e.y + e.y * e.z + e.z * e.x;
 }
 
-/* excerpt: box-float-ray */
-/* A ray made ready, once, for the BVH's test of float boxes: its origin in float, 1/d
- * (grown by 2^-20 for the far faces), where on each axis the near and far faces are
- * among a node's floats, and the slack that rounding the origin needs. Each number is
- * there twice, one for each of a node's two children. */
-typedef struct {
-    float origin[3][2];
-    float inv_near[3][2], inv_far[3][2];
-    int near[3], far[3];
-    float tmin;
-    float slack;
-} FloatRay;
-
-/* Tells whether a float interval [t0, t1] may hold a t where the exact ray meets the box:
- * t1 has been grown by 2^-20 of itself (pbrt's tMax *= 1 + 2 gamma(3)), and the slack
- * covers the origin's rounding. The chapter gives the argument. */
-static inline bool box_float_reaches(const FloatRay *fr, float t0, float t1)
-{
-    return t0 <= t1 + fr->slack;
-}
-
-/* Returns tmax in float, grown by 2^-20 as the far faces' t are. */
-static inline float box_float_tmax(double tmax)
-{
-    return (float)(tmax * (1 + 0x1p-20));
-}
-/* end excerpt: box-float-ray */
-
 Box box_empty(void);
 Vec3 box_center(Box b);
 bool box_contains(Box outer, Box inner);
 Box box_pad(Box b);
 Box box_of_surface(const Scene *scene, int s);
-float box_float_below(double x);
-FloatRay box_float_ray(Ray r, double tmin, bool in_range);
 Box box_of_sphere(const Sphere *s);
 Box box_of_triangle(const Triangle *tri);
 bool box_hit_face(Box b, Ray r, double tmin, double tmax, double *t, Vec3 *normal);

@@ -25,24 +25,6 @@ static inline int bin_of(double c, double lo, double scale)
     return b < 0 ? 0 : b >= BVH_BINS ? BVH_BINS - 1 : b;
 }
 
-/* Stores child k of node: where it is, and its box rounded outwards to floats. */
-void bvh_node_set(BvhNode *node, int k, Box box, BvhRef ref)
-{
-    double lo[3] = {box.lo.x, box.lo.y, box.lo.z}, hi[3] = {box.hi.x, box.hi.y, box.hi.z};
-    for (int a = 0; a < 3; a++) {
-        node->lo[a][k] = box_float_below(lo[a]);
-        node->hi[a][k] = -box_float_below(-hi[a]);
-    }
-    node->child[k] = ref;
-}
-
-/* Returns the box of child k of node, as doubles: exactly its float box. */
-Box bvh_node_box(const BvhNode *node, int k)
-{
-    return (Box){vec3(node->lo[0][k], node->lo[1][k], node->lo[2][k]),
-                 vec3(node->hi[0][k], node->hi[1][k], node->hi[2][k])};
-}
-
 /* starter: todo */
 /* excerpt: bvh-sah */
 /* Chooses where to split prims[begin, end) by the surface area heuristic: a ray that
@@ -50,9 +32,14 @@ Box bvh_node_box(const BvhNode *node, int k)
  * A'/A, so a split into (A_L, N_L) and (A_R, N_R) costs, per ray reaching the node,
  *     C_traverse + (A_L N_L + A_R N_R) / A * C_intersect,
  * against N C_intersect for testing every primitive in a leaf. The candidates are the
- * 15 planes between BVH_BINS equal bins of the centroids, on each axis. Reorders the
- * primitives so that the left child's come first and returns the first of the right
- * child's; or -1 when no split is cheaper than a leaf. */
+ * 15 planes between BVH_BINS equal bins of the centroids' box, on each axis that box
+ * has extent on (a centroid c falls in bin (int)((c - lo) BVH_BINS / extent), the
+ * last bin holding c = hi); a candidate that leaves one side empty is no candidate.
+ * Reorders prims[begin, end) so that the left child's come first, and returns the
+ * first of the right child's; or -1 when no candidate costs less than the leaf's N
+ * (C_traverse = C_intersect = 1), and when the box has no area. Of equally cheap
+ * candidates this one keeps the first (x, then y, then z; left to right); any is
+ * correct. tests/test_bvh.c: splits_by_the_sah. */
 int bvh_split(BvhBuilder *b, int begin, int end, Box box, Box centroids)
 {
     double area = box_half_area(box);
@@ -129,8 +116,14 @@ int bvh_split(BvhBuilder *b, int begin, int end, Box box, Box centroids)
 
 /* starter: todo */
 /* excerpt: bvh-build-node */
-/* Builds the subtree over prims[begin, end) at the given depth, depth first into
- * b->nodes; returns where it is, and its box in *box_out. */
+/* Builds the subtree over prims[begin, end) at the given depth (the root's is 0) and
+ * returns where it is, its box (the union of its primitives' boxes) in *box_out. A
+ * leaf when bvh_split finds no split or depth is SAH_MAX_DEPTH, unless it would hold
+ * more than BVH_MAX_LEAF: then the primitives are halved as they lie. An interior
+ * node takes the next entry of b->nodes before its children are built (so a first
+ * child that is a node comes right after it), and stores both children with
+ * bvh_node_set. Counts b->node_count, b->leaf_count, and in b->depth the deepest
+ * depth reached. tests/test_bvh.c: invariants_of_random_soups and the others. */
 static BvhRef build_node(BvhBuilder *b, int begin, int end, int depth, Box *box_out)
 {
     Box box = box_empty(), centroids = box_empty();
@@ -190,9 +183,10 @@ bool bvh_build(Bvh *bvh, const Scene *scene)
         bvh->root = build_node(&b, 0, n, 0, &box);
     BvhNode *fit = ok ? realloc(b.nodes, (size_t)(b.node_count + 1) * sizeof *fit) : NULL;
     bvh->nodes = fit != NULL ? fit : b.nodes;
-    bvh_node_set(&bvh->top, 0, box, bvh->root);
-    bvh_node_set(&bvh->top, 1, box, bvh->root);
-    bvh->in_range = vec3_max_abs(box.lo) <= 0x1p60 && vec3_max_abs(box.hi) <= 0x1p60;
+    BvhNode rounded;
+    bvh_node_set(&rounded, 0, box, bvh->root);
+    bvh->box = bvh_node_box(&rounded, 0);
+    bvh->in_range = box_float_in_range(box);
     bvh->node_count = b.node_count, bvh->leaf_count = b.leaf_count, bvh->depth = b.depth;
     free(b.boxes);
     free(b.centroids);
@@ -216,100 +210,66 @@ size_t bvh_bytes(const Bvh *bvh)
            (size_t)(bvh->prim_count + (int)bvh->planes.count) * sizeof *bvh->prims;
 }
 
-/* excerpt: bvh-node-hit */
-/* Narrows each child k's interval [t0[k], t1[k]] to the t where the ray lies in its slab
- * on axis a, in float. The two children side by side: the compiler makes each step of
- * the loop over k one instruction for both. The max is written so that a NaN (0 * inf:
- * a ray parallel to a face starts in its plane) leaves t0 as it is, the box met on one
- * constraint fewer: more often, never less; the processor's maxss does just that. */
-static inline void node_slab(const BvhNode *node, const FloatRay *fr, int a, float t0[2],
-                             float t1[2])
-{
-    const float *near = &node->lo[0][0] + fr->near[a], *far = &node->lo[0][0] + fr->far[a];
-    for (int k = 0; k < 2; k++) {
-        float enter = (near[k] - fr->origin[a][k]) * fr->inv_near[a][k];
-        float leave = (far[k] - fr->origin[a][k]) * fr->inv_far[a][k];
-        t0[k] = enter > t0[k] ? enter : t0[k];
-        t1[k] = leave < t1[k] ? leave : t1[k];
-    }
-}
-
-/* Tests both children's boxes of node against the float ray fr, from its tmin to tmax
- * (from box_float_tmax): returns bit k set when the ray may meet child k's box, and
- * sets entry[k] to where it may enter. */
-int bvh_node_hit(const BvhNode *node, const FloatRay *fr, float tmax, float entry[2])
-{
-    float t0[2] = {fr->tmin, fr->tmin}, t1[2] = {tmax, tmax};
-    node_slab(node, fr, 0, t0, t1);
-    node_slab(node, fr, 1, t0, t1);
-    node_slab(node, fr, 2, t0, t1);
-    entry[0] = t0[0];
-    entry[1] = t0[1];
-    return box_float_reaches(fr, t0[0], t1[0]) | box_float_reaches(fr, t0[1], t1[1]) << 1;
-}
-/* end excerpt: bvh-node-hit */
-
 /* starter: todo */
 /* excerpt: bvh-traverse */
 /* Visits every leaf whose box ray r may meet with tmin <= t <= *tmax, nearer boxes
- * first, calling leaf for each, without recursion. Returns true when leaf asked to stop. */
-bool bvh_traverse(const Bvh *bvh, Ray r, double tmin, double *tmax, BvhLeafFn leaf, void *state)
+ * first, calling leaf for each; stops, returning true, when leaf returns true. A leaf
+ * may lower *tmax: the boxes are then tested up to the new one. A node's two children
+ * are tested by bvh_node_hit with box_float_tmax(*tmax) (the root's, bvh->box, by box_hit);
+ * a subtree that waited on the stack is visited only if box_float_reaches from its
+ * entry to box_float_tmax(*tmax). Adds to *tests the boxes tested (the root's, two a
+ * node) and the primitives of the leaves visited. No recursion: a stack of BVH_MAX_DEPTH.
+ * tests/test_bvh.c: traverse_nearer_first_and_stops, and the comparisons with brute force. */
+bool bvh_traverse(const Bvh *bvh, Ray r, double tmin, double *tmax, BvhLeafFn leaf, void *state,
+                  long *tests)
 {
-    FloatRay fr = box_float_ray(r, tmin, bvh->in_range);
-    float t_max = box_float_tmax(*tmax), entry[2];
-    if (bvh->prim_count == 0 || !(bvh_node_hit(&bvh->top, &fr, t_max, entry) & 1))
+    BoxRay br = box_ray(r);
+    double t_root;
+    *tests += bvh->prim_count > 0;
+    if (bvh->prim_count == 0 || !box_hit(bvh->box, &br, tmin, *tmax, &t_root))
         return false;
-    struct {
-        BvhRef ref;
-        float entry;
-    } stack[BVH_MAX_DEPTH]; /* subtrees still to visit, and where the ray may enter them */
+    FloatRay fr = box_float_ray(r, tmin, bvh->in_range);
+    float entry[2];
+    BvhRef stack[BVH_MAX_DEPTH], at = bvh->root; /* subtrees still to visit */
+    float stack_entry[BVH_MAX_DEPTH];            /* where the ray may enter them */
     int top = 0;
-    BvhRef at = bvh->root;
     for (;;) {
         if (at.count > 0) {
+            *tests += at.count;
             if (leaf(bvh, at, r, tmin, tmax, state))
                 return true;
-            t_max = box_float_tmax(*tmax);
         } else {
-            /* Both children's boxes are tested: the ray goes on into the nearer one,
-             * and the other waits. Branches, not an index computed from the tests: the
-             * processor guesses the next node and loads it while the tests still run. */
             const BvhNode *node = &bvh->nodes[at.index];
-            float t1[2] = {t_max, t_max};
-            entry[0] = entry[1] = fr.tmin;
-            node_slab(node, &fr, 0, entry, t1);
-            node_slab(node, &fr, 1, entry, t1);
-            node_slab(node, &fr, 2, entry, t1);
-            int hits = box_float_reaches(&fr, entry[0], t1[0]) |
-                       box_float_reaches(&fr, entry[1], t1[1]) << 1;
-            if (hits == 3 && entry[1] < entry[0]) {
-                stack[top].ref = node->child[0];
-                stack[top++].entry = entry[0];
+            int hits = bvh_node_hit(node, &fr, box_float_tmax(*tmax), entry);
+            *tests += 2;
+            if (hits == 3 && entry[1] < entry[0]) { /* both, child 1 the nearer: child 0 waits */
+                stack[top] = node->child[0];
+                stack_entry[top++] = entry[0];
                 at = node->child[1];
                 continue;
             }
-            if (hits == 3) {
-                stack[top].ref = node->child[1];
-                stack[top++].entry = entry[1];
+            if (hits == 3) { /* both, child 0 the nearer (or as near): child 1 waits */
+                stack[top] = node->child[1];
+                stack_entry[top++] = entry[1];
                 at = node->child[0];
                 continue;
             }
-            if (hits == 1) {
+            if (hits == 1) { /* child 0 alone */
                 at = node->child[0];
                 continue;
             }
-            if (hits == 2) {
+            if (hits == 2) { /* child 1 alone */
                 at = node->child[1];
                 continue;
             }
         }
-        /* Back up to the nearest waiting subtree that a hit found since has not ruled out. */
+        /* Back up to the nearest waiting subtree that the hits found since leave possible. */
         do {
             if (top == 0)
                 return false;
             top--;
-        } while (!box_float_reaches(&fr, stack[top].entry, t_max));
-        at = stack[top].ref;
+        } while (!box_float_reaches(&fr, stack_entry[top], box_float_tmax(*tmax)));
+        at = stack[top];
     }
 }
 /* end excerpt: bvh-traverse */
@@ -324,10 +284,13 @@ typedef struct {
 
 /* starter: todo */
 /* excerpt: bvh-leaf-closest */
-/* Tests a leaf's primitives for the closest hit. The smaller (t, surface number) wins:
- * of several surfaces at the same t, world_hit keeps the first it tests, and so must
- * we. Each is tested up to the ray's own tmax (the hit found is then the one a smaller
- * tmax would find, when there is one), so that a hit at exactly the best t is seen. */
+/* Tests every primitive of a leaf (world_intersect, tmin < t < c->tmax), keeping the
+ * closest hit in state (a Closest) and lowering *tmax to its t, so that the traversal
+ * skips boxes beyond it; never stops the traversal (returns false). The smaller (t,
+ * surface number) wins: of several surfaces at the same t, world_hit keeps the first
+ * it tests, and so must we. Each is tested up to the ray's own tmax, c->tmax, not
+ * *tmax, so that a hit at exactly the best t is seen. tests/test_bvh.c:
+ * leaf_closest_finds_the_closest, and every comparison with brute force. */
 static bool leaf_closest(const Bvh *bvh, BvhRef leaf, Ray r, double tmin, double *tmax, void *state)
 {
     Closest *c = state;
@@ -349,7 +312,8 @@ static bool leaf_closest(const Bvh *bvh, BvhRef leaf, Ray r, double tmin, double
 bool bvh_hit(const Bvh *bvh, Ray r, double tmin, double tmax, Hit *hit)
 {
     Closest c = {.tmax = tmax};
-    bvh_traverse(bvh, r, tmin, &tmax, leaf_closest, &c);
+    long tests = 0;
+    bvh_traverse(bvh, r, tmin, &tmax, leaf_closest, &c, &tests);
     leaf_closest(bvh, bvh->planes, r, tmin, &tmax, &c);
     if (!c.found)
         return false;
@@ -360,7 +324,9 @@ bool bvh_hit(const Bvh *bvh, Ray r, double tmin, double tmax, Hit *hit)
 
 /* starter: todo */
 /* excerpt: bvh-leaf-any */
-/* Tests a leaf's primitives for any hit at all: the first one found stops the traversal. */
+/* Tests a leaf's primitives for any hit with tmin < t < *tmax (world_intersect): returns
+ * true at the first one, which stops the traversal; leaves *tmax as it is.
+ * tests/test_bvh.c: leaf_any_within_tmin_and_tmax. */
 static bool leaf_any(const Bvh *bvh, BvhRef leaf, Ray r, double tmin, double *tmax, void *state)
 {
     (void)state;
@@ -375,6 +341,19 @@ static bool leaf_any(const Bvh *bvh, BvhRef leaf, Ray r, double tmin, double *tm
 /* Tells whether any surface lies on ray r with tmin < t < tmax. */
 bool bvh_blocked(const Bvh *bvh, Ray r, double tmin, double tmax)
 {
-    return bvh_traverse(bvh, r, tmin, &tmax, leaf_any, NULL) ||
+    long tests = 0;
+    return bvh_traverse(bvh, r, tmin, &tmax, leaf_any, NULL, &tests) ||
            leaf_any(bvh, bvh->planes, r, tmin, &tmax, NULL);
+}
+
+/* Returns how many boxes and primitives the search for ray r's closest hit tests, for
+ * --view box-tests: the root's box, two a node visited, the leaves' primitives, and
+ * every plane. */
+long bvh_count_tests(const Bvh *bvh, Ray r)
+{
+    Closest c = {.tmax = INFINITY};
+    double tmax = INFINITY;
+    long tests = bvh->planes.count;
+    bvh_traverse(bvh, r, 0, &tmax, leaf_closest, &c, &tests);
+    return tests;
 }

@@ -3,9 +3,9 @@
 #define RAYTRA_BVH_H
 
 #include <stdbool.h>
-#include <stdint.h>
 
 #include "box.h"
+#include "bvhnode.h"
 #include "hit.h"
 #include "ray.h"
 #include "scene.h"
@@ -17,28 +17,13 @@
 /* Bins per axis of the binned SAH build. */
 #define BVH_BINS 16
 
-/* excerpt: bvh-node */
-/* Where a subtree is: an interior node, or a leaf's run of primitives. */
-typedef struct {
-    uint32_t index; /* interior: the node in nodes; leaf: its first entry of prims */
-    uint32_t count; /* leaf: how many primitives (1 to BVH_MAX_LEAF); interior: 0 */
-} BvhRef;
-
-/* An interior node: its two children's boxes, so that one visit tests both, and where
- * the children are; 64 bytes, one cache line. Nodes are stored depth first: a first
- * child that is a node comes right after its parent. */
-typedef struct {
-    float lo[3][2], hi[3][2]; /* on axis a, child k's box spans lo[a][k] to hi[a][k], in
-                                 float, rounded outwards: it holds every box below it */
-    BvhRef child[2];
-} BvhNode;
-
+/* excerpt: bvh-struct */
 /* The hierarchy. A primitive is a surface number of part 1.2's world_intersect:
  * spheres, then planes, then triangles. Planes have no box: they stay out of the
  * tree and are tested after it. */
 typedef struct {
     const Scene *scene;
-    BvhNode top;    /* the root's box as both children of a node of its own */
+    Box box;        /* the root's box, rounded outwards to floats as the nodes' boxes are */
     BvhRef root;    /* a node, or a leaf when there are few primitives */
     BvhNode *nodes; /* the interior nodes; none when the root is a leaf or there is nothing */
     int node_count;
@@ -47,9 +32,9 @@ typedef struct {
     BvhRef planes;  /* the planes, as one more run of prims: not in the tree */
     int leaf_count;
     int depth;     /* levels below the root */
-    bool in_range; /* every coordinate of the tree's box is within +-2^100 (see float_ray) */
+    bool in_range; /* the float test holds for the tree's box (box_float_in_range) */
 } Bvh;
-/* end excerpt: bvh-node */
+/* end excerpt: bvh-struct */
 
 /* What the build works on: every surface's box and centroid, by surface number. */
 typedef struct {
@@ -68,14 +53,13 @@ typedef bool (*BvhLeafFn)(const Bvh *bvh, BvhRef leaf, Ray r, double tmin, doubl
                           void *state);
 
 bool bvh_build(Bvh *bvh, const Scene *scene);
-void bvh_node_set(BvhNode *node, int k, Box box, BvhRef ref);
-Box bvh_node_box(const BvhNode *node, int k);
-int bvh_node_hit(const BvhNode *node, const FloatRay *fr, float tmax, float entry[2]);
 int bvh_split(BvhBuilder *b, int begin, int end, Box box, Box centroids);
 void bvh_free(Bvh *bvh);
-bool bvh_traverse(const Bvh *bvh, Ray r, double tmin, double *tmax, BvhLeafFn leaf, void *state);
+bool bvh_traverse(const Bvh *bvh, Ray r, double tmin, double *tmax, BvhLeafFn leaf, void *state,
+                  long *tests);
 bool bvh_hit(const Bvh *bvh, Ray r, double tmin, double tmax, Hit *hit);
 bool bvh_blocked(const Bvh *bvh, Ray r, double tmin, double tmax);
 size_t bvh_bytes(const Bvh *bvh);
+long bvh_count_tests(const Bvh *bvh, Ray r);
 
 #endif

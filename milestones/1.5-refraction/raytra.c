@@ -19,12 +19,9 @@ typedef struct {
  * after checking --fresnel and the glass meshes. */
 static bool setup(const Scene *scene, const Options *opts, void **ctx)
 {
-    FresnelModel fresnel = FRESNEL_SCHLICK;
-    const char *fresnel_name = cli_text(opts, "fresnel");
-    if (fresnel_name != NULL && !dielectric_fresnel_from_name(fresnel_name, &fresnel)) {
-        fprintf(stderr, "raytra: --fresnel takes schlick or exact, got '%s'\n", fresnel_name);
+    FresnelModel fresnel;
+    if (!refract_fresnel_option(opts, &fresnel))
         return false;
-    }
     Part15 *part = malloc(sizeof *part);
     if (part == NULL)
         return false;

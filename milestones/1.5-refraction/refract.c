@@ -2,11 +2,25 @@
 #include "refract.h"
 
 #include <math.h>
+#include <stdio.h>
 
 #include "direct.h"
 #include "secondary.h"
 #include "shade.h"
 #include "transmit.h"
+
+/* Reads --fresnel, the one place it is read, into *fresnel (Schlick's when it is not
+ * given); false, said on standard error, when it names no model. */
+bool refract_fresnel_option(const Options *opts, FresnelModel *fresnel)
+{
+    const char *name = cli_text(opts, "fresnel");
+    *fresnel = FRESNEL_SCHLICK;
+    if (name != NULL && !dielectric_fresnel_from_name(name, fresnel)) {
+        fprintf(stderr, "raytra: --fresnel takes schlick or exact, got '%s'\n", name);
+        return false;
+    }
+    return true;
+}
 
 /* Sets rf up as the tracer of scene with glass, finding hits with surfaces, set up by the
  * command line: its radiance follows glass (refract_radiance), and its shadow rays

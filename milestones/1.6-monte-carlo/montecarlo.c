@@ -26,9 +26,9 @@ bool montecarlo_init(MonteCarlo *mc, const Scene *scene, Surfaces surfaces, cons
         fprintf(stderr, "raytra: P and S must be from 1 to %d\n", MONTECARLO_MAX_SIDE);
         return false;
     }
-    FresnelModel fresnel = FRESNEL_SCHLICK; /* --fresnel is checked in setup */
-    if (cli_text(opts, "fresnel") != NULL)
-        dielectric_fresnel_from_name(cli_text(opts, "fresnel"), &fresnel);
+    FresnelModel fresnel;
+    if (!refract_fresnel_option(opts, &fresnel))
+        return false;
     refract_init(&mc->below, scene, surfaces, fresnel, opts);
     mc->below.tracer.hooks.light = montecarlo_light;
     mc->below.tracer.hooks.light_ctx = mc;

@@ -1,5 +1,4 @@
 /* raytra.c: part 1.6, Monte Carlo ray tracing: jittered rays per pixel, soft shadows. */
-#include <stdio.h>
 #include <stdlib.h>
 
 #include "app.h"
@@ -18,13 +17,6 @@ typedef struct {
 static bool setup(const Scene *scene, const Options *opts, void **ctx)
 {
     Part16 *part = malloc(sizeof *part);
-    FresnelModel fresnel;
-    const char *fresnel_name = cli_text(opts, "fresnel");
-    if (fresnel_name != NULL && !dielectric_fresnel_from_name(fresnel_name, &fresnel)) {
-        fprintf(stderr, "raytra: --fresnel takes schlick or exact, got '%s'\n", fresnel_name);
-        free(part);
-        return false;
-    }
     if (part == NULL || !accel_build(&part->accel, scene, ACCEL_BVH)) {
         free(part);
         return false;

@@ -61,11 +61,6 @@ START_TEST(origin_inside)
     ck_assert(cube_hit(vec3(0, 0.5, 0.5), vec3(1, 0, 0), 0, INFINITY, &t));
     ck_assert(cube_hit(vec3(0, 0.5, 0.5), vec3(-1, 0, 0), 0, INFINITY, &t));
     ck_assert_double_eq(t, 0);
-    /* The face a ray leaves through, from inside: z = 1 at t = 0.5, normal towards the origin. */
-    Vec3 normal;
-    ck_assert(box_hit_face(cube, ray(vec3(0.5, 0.5, 0.5), vec3(0, 0, 1)), 0, INFINITY, &t, &normal));
-    ck_assert_double_eq(t, 0.5);
-    ck_assert_vec3_near(normal, vec3(0, 0, -1), 0);
 }
 END_TEST
 
@@ -80,17 +75,6 @@ START_TEST(tmin_tmax_limits)
     ck_assert(!cube_hit(o, d, 2.5, 5, &t));
     ck_assert(cube_hit(o, d, 1.5, 1.6, &t));
     ck_assert_double_eq(t, 1.5);
-    /* The face test is strict, like every surface: tmin < t < tmax. */
-    Vec3 normal;
-    ck_assert(!box_hit_face(cube, ray(o, d), 0, 1, &t, &normal));
-    ck_assert(box_hit_face(cube, ray(o, d), 0, 1.5, &t, &normal));
-    ck_assert_double_eq(t, 1);
-    ck_assert_vec3_near(normal, vec3(-1, 0, 0), 0);
-    /* Past the entry, the exit face: x = 1 at t = 2. */
-    ck_assert(box_hit_face(cube, ray(o, d), 1, 5, &t, &normal));
-    ck_assert_double_eq(t, 2);
-    ck_assert_vec3_near(normal, vec3(-1, 0, 0), 0);
-    ck_assert(!box_hit_face(cube, ray(o, d), 2, 5, &t, &normal));
 }
 END_TEST
 
@@ -113,25 +97,105 @@ START_TEST(infinite_inverse_directions)
 }
 END_TEST
 
+/* Asserts that box got, made by function what, is want to within 1e-15. */
+static void check_box(Box got, Box want, const char *what)
+{
+    ck_assert_msg(vec3_length(vec3_sub(got.lo, want.lo)) <= 1e-15 &&
+                      vec3_length(vec3_sub(got.hi, want.hi)) <= 1e-15,
+                  "%s gives the box (%.9g, %.9g, %.9g) to (%.9g, %.9g, %.9g), not (%.9g, %.9g, "
+                  "%.9g) to (%.9g, %.9g, %.9g): the least and greatest coordinates, grown by "
+                  "box_pad",
+                  what, got.lo.x, got.lo.y, got.lo.z, got.hi.x, got.hi.y, got.hi.z, want.lo.x,
+                  want.lo.y, want.lo.z, want.hi.x, want.hi.y, want.hi.z);
+}
+
 START_TEST(boxes_of_surfaces)
 {
     Sphere s = {vec3(1, 2, 3), 0.5, 0, 0};
-    Box b = box_of_sphere(&s);
     /* The centre plus and minus the radius, grown by 2^-20 of the largest coordinate. */
     double m = ldexp(3.5, -20);
-    ck_assert_vec3_near(b.lo, vec3(0.5 - m, 1.5 - m, 2.5 - m), 1e-15);
-    ck_assert_vec3_near(b.hi, vec3(1.5 + m, 2.5 + m, 3.5 + m), 1e-15);
-    Vec3 p[] = {{0, 0, 0}, {2, -1, 0}, {1, 4, 0}};
-    Triangle tri = {&p[0], &p[1], &p[2]};
-    b = box_of_triangle(&tri);
+    check_box(box_of_sphere(&s), (Box){vec3(0.5 - m, 1.5 - m, 2.5 - m), vec3(1.5 + m, 2.5 + m, 3.5 + m)},
+              "box_of_sphere");
+    /* Each corner gives some end: a the least x, b the least y and the greatest x, c the
+     * greatest y; and in every order of the corners. */
+    Vec3 p[] = {{0, 0, 0}, {2, -1, 0}, {1, 4, -3}};
     m = ldexp(4, -20);
-    ck_assert_vec3_near(b.lo, vec3(-m, -1 - m, -m), 1e-15);
-    ck_assert_vec3_near(b.hi, vec3(2 + m, 4 + m, m), 1e-15);
-    ck_assert(box_contains(b, (Box){p[1], p[2]}));
+    Box want = {vec3(-m, -1 - m, -3 - m), vec3(2 + m, 4 + m, m)};
+    for (int k = 0; k < 3; k++) {
+        Triangle tri = {&p[k], &p[(k + 1) % 3], &p[(k + 2) % 3]};
+        check_box(box_of_triangle(&tri), want, "box_of_triangle");
+    }
     ck_assert_double_eq(box_half_area(cube), 3);
     ck_assert_double_eq(box_half_area(box_empty()), 0);
     ck_assert_vec3_near(box_center(box_union(cube, (Box){{2, 2, 2}, {3, 3, 3}})), vec3(1.5, 1.5, 1.5),
                         0);
+}
+END_TEST
+
+/* Asserts box_hit_face on the cube for the ray from o along d (normalised by nothing)
+ * with (tmin, tmax): a hit at want_t with the normal want_n, or none when want_t < 0. */
+static void check_face(Vec3 o, Vec3 d, double tmin, double tmax, double want_t, Vec3 want_n,
+                       const char *why)
+{
+    double t = -1;
+    Vec3 n = vec3(0, 0, 0);
+    bool hit = box_hit_face(cube, ray(o, d), tmin, tmax, &t, &n);
+    if (want_t < 0) {
+        ck_assert_msg(!hit, "box_hit_face: the ray from (%g, %g, %g) along (%g, %g, %g) in (%g, %g) "
+                      "meets the unit cube at t = %g; it should not (%s)",
+                      o.x, o.y, o.z, d.x, d.y, d.z, tmin, tmax, t, why);
+        return;
+    }
+    ck_assert_msg(hit && t == want_t && n.x == want_n.x && n.y == want_n.y && n.z == want_n.z,
+                  "box_hit_face: the ray from (%g, %g, %g) along (%g, %g, %g) in (%g, %g) %s the "
+                  "unit cube at t = %g, normal (%g, %g, %g); it should meet it at t = %g, normal "
+                  "(%g, %g, %g) (%s)",
+                  o.x, o.y, o.z, d.x, d.y, d.z, tmin, tmax, hit ? "meets" : "misses", t, n.x,
+                  n.y, n.z, want_t, want_n.x, want_n.y, want_n.z, why);
+}
+
+START_TEST(faces_of_boxes)
+{
+    /* Negative directions enter at hi: the slab's two t swap. */
+    check_face(vec3(3, 0.5, 0.5), vec3(-1, 0, 0), 0, INFINITY, 2, vec3(1, 0, 0),
+               "towards -x it enters at x = 1");
+    check_face(vec3(0.5, 0.5, 4), vec3(0, 0, -2), 0, INFINITY, 1.5, vec3(0, 0, 1),
+               "towards -z it enters at z = 1");
+    check_face(vec3(2.5, 1.5, 0.5), vec3(-1, -0.5, 0), 0, INFINITY, 1.5, vec3(1, 0, 0),
+               "towards -x and -y it enters at x = 1, the later of the two entries");
+    check_face(vec3(-1.5, 2, 0.5), vec3(1, -0.5, 0), 0, INFINITY, 2, vec3(0, 1, 0),
+               "towards +x and -y it enters at y = 1, the later of the two entries");
+    /* From inside, the face it leaves by, facing the origin. */
+    check_face(vec3(0.5, 0.5, 0.5), vec3(0, -1, 0), 0, INFINITY, 0.5, vec3(0, 1, 0),
+               "from inside it leaves by y = 0, the normal facing the origin");
+    check_face(vec3(0.5, 0.5, 0.5), vec3(-0.5, 0, 0.25), 0, INFINITY, 1, vec3(1, 0, 0),
+               "from inside it leaves by x = 0 before z = 1");
+    check_face(vec3(0.5, 0.5, 0.5), vec3(0, 0, 1), 0, INFINITY, 0.5, vec3(0, 0, -1),
+               "from inside it leaves by z = 1, the normal facing the origin");
+    check_face(vec3(0.75, 0.75, 0.5), vec3(1, -1, 0), 0, INFINITY, 0.25, vec3(-1, 0, 0),
+               "from inside it leaves by x = 1, whose axis is not the one it entered by");
+    /* The same along +x: strict ends, and past the entry the exit. */
+    check_face(vec3(-1, 0.5, 0.5), vec3(1, 0, 0), 0, 1, -1, vec3(0, 0, 0),
+               "tmax = 1 is the entry itself, and t < tmax is strict");
+    check_face(vec3(-1, 0.5, 0.5), vec3(1, 0, 0), 0, 1.5, 1, vec3(-1, 0, 0), "it enters at x = 0");
+    check_face(vec3(-1, 0.5, 0.5), vec3(1, 0, 0), 1, 5, 2, vec3(-1, 0, 0),
+               "with tmin at the entry it leaves at x = 1, the normal facing the origin");
+    check_face(vec3(-1, 0.5, 0.5), vec3(1, 0, 0), 2, 5, -1, vec3(0, 0, 0),
+               "tmin = 2 is the exit itself, and tmin < t is strict");
+    /* Past the entry, the exit; strict ends; behind the origin, nothing. */
+    check_face(vec3(3, 0.5, 0.5), vec3(-1, 0, 0), 2, INFINITY, 3, vec3(1, 0, 0),
+               "with tmin at the entry it leaves at x = 0, t = 3");
+    check_face(vec3(3, 0.5, 0.5), vec3(-1, 0, 0), 0, 2, -1, vec3(0, 0, 0),
+               "tmax = 2 is the entry itself, and t < tmax is strict");
+    check_face(vec3(3, 0.5, 0.5), vec3(-1, 0, 0), 3, INFINITY, -1, vec3(0, 0, 0),
+               "tmin = 3 is the exit itself, and tmin < t is strict");
+    check_face(vec3(3, 0.5, 0.5), vec3(1, 0, 0), 0, INFINITY, -1, vec3(0, 0, 0),
+               "the box is behind the origin");
+    check_face(vec3(3, 2, 0.5), vec3(-1, 0, 0), 0, INFINITY, -1, vec3(0, 0, 0),
+               "parallel to the y slab, above it");
+    /* An edge: x = 1 and y = 1 at the same t; the lower axis is the face. */
+    check_face(vec3(2, 2, 0.5), vec3(-1, -1, 0), 0, INFINITY, 1, vec3(1, 0, 0),
+               "at an edge, the face of the lower axis");
 }
 END_TEST
 
@@ -146,6 +210,7 @@ static Suite *box_suite(void)
     tcase_add_test(tc, tmin_tmax_limits);
     tcase_add_test(tc, infinite_inverse_directions);
     tcase_add_test(tc, boxes_of_surfaces);
+    tcase_add_test(tc, faces_of_boxes);
     suite_add_tcase(s, tc);
     return s;
 }

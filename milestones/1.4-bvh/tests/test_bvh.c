@@ -214,7 +214,7 @@ static void check_invariants(const Scene *scene)
     Walk w = {.bvh = &bvh, .leaf_of = malloc((size_t)all * sizeof(int))};
     for (int p = 0; p < all; p++)
         w.leaf_of[p] = -1;
-    bool ok = walk(&w, bvh.root, bvh_node_box(&bvh.top, 0), "the root's box", 0);
+    bool ok = walk(&w, bvh.root, bvh.box, "the root's box", 0);
     char name[100];
     for (int p = 0; ok && p < all; p++)
         if (w.leaf_of[p] < 0 &&
@@ -224,13 +224,13 @@ static void check_invariants(const Scene *scene)
             ok = false;
         }
     free(w.leaf_of);
-    ck_assert_msg(ok, "the BVH of %d spheres and %d triangles: %s", scene->sphere_count,
+    ck_assert_msg(ok, "build_node (bvh_split): the BVH of %d spheres and %d triangles: %s", scene->sphere_count,
                   scene->triangle_count, w.wrong);
     /* What the build counted is what is there; a binary tree of L leaves has L - 1 nodes. */
     ck_assert_msg(w.nodes == bvh.node_count && w.leaves == bvh.leaf_count && w.depth == bvh.depth,
-                  "the build counted %d nodes, %d leaves and %d levels; the tree has %d, %d and %d",
+                  "build_node counted %d nodes, %d leaves and %d levels; the tree has %d, %d and %d",
                   bvh.node_count, bvh.leaf_count, bvh.depth, w.nodes, w.leaves, w.depth);
-    ck_assert_msg(bvh.node_count == bvh.leaf_count - 1, "%d leaves, but %d interior nodes, not %d",
+    ck_assert_msg(bvh.node_count == bvh.leaf_count - 1, "build_node: %d leaves, but %d interior nodes, not %d",
                   bvh.leaf_count, bvh.node_count, bvh.leaf_count - 1);
     bvh_free(&bvh);
 }
@@ -295,6 +295,186 @@ START_TEST(tests_counted_for_the_box_tests_view)
 }
 END_TEST
 
+/* Box k of the SAH's test: unit boxes, six in a cluster at x = 0, one at x = 4 and one at x = 10. */
+static Box sah_box(int k)
+{
+    double x = k < 6 ? 0.01 * k : k == 6 ? 4 : 10;
+    return (Box){vec3(x, 0, 0), vec3(x + 1, 1, 1)};
+}
+
+START_TEST(splits_by_the_sah)
+{
+    /* Split after the cluster: 1 + (3 * 6 + A(x in [4, 11]) 15 * 2) / 23.06 = 3.08; after
+     * the box at 4: 1 + (11.06 * 7 + 3 * 1) / 23.06 = 4.49. Without the counts the second
+     * would look cheaper. The primitives come shuffled. */
+    Box boxes[8];
+    Vec3 centroids[8];
+    int prims[8] = {7, 2, 6, 0, 5, 3, 1, 4};
+    Box box = box_empty(), centroid_box = box_empty();
+    for (int k = 0; k < 8; k++) {
+        boxes[k] = sah_box(k);
+        centroids[k] = box_center(boxes[k]);
+        box = box_union(box, boxes[k]);
+        centroid_box = box_add_point(centroid_box, centroids[k]);
+    }
+    BvhBuilder b = {.boxes = boxes, .centroids = centroids, .prims = prims};
+    int mid = bvh_split(&b, 0, 8, box, centroid_box);
+    ck_assert_msg(mid == 6,
+                  "bvh_split of eight unit boxes, six at x = 0, one at x = 4 and one at x = 10, "
+                  "returns %d, not 6: the split after the six costs 3.08, after the box at 4 "
+                  "4.49 (C_traverse + (A_L N_L + A_R N_R) / A)",
+                  mid);
+    int seen = 0;
+    for (int k = 0; k < 8; k++) {
+        ck_assert_msg(prims[k] >= 0 && prims[k] < 8 && !(seen >> prims[k] & 1),
+                      "bvh_split: prims[%d] is %d; the primitives must be reordered, each kept once",
+                      k, prims[k]);
+        seen |= 1 << prims[k];
+        ck_assert_msg((k < 6) == (prims[k] < 6),
+                      "bvh_split: prims[%d] is box %d, on the wrong side of the split at %d", k,
+                      prims[k], mid);
+    }
+    /* Two boxes almost one in the other: a split costs 1 + (3 + 3) / 3.06 = 2.96, a leaf
+     * of two 2, so no split; and none where the box has no area. */
+    boxes[1] = (Box){vec3(0.01, 0.01, 0.01), vec3(1.01, 1.01, 1.01)};
+    centroids[1] = box_center(boxes[1]);
+    int two[2] = {0, 1};
+    b.prims = two;
+    mid = bvh_split(&b, 0, 2, box_union(boxes[0], boxes[1]),
+                    (Box){centroids[0], centroids[1]});
+    ck_assert_msg(mid == -1,
+                  "bvh_split of two unit boxes, one 0.01 from the other, returns %d, not -1: a "
+                  "split costs 1 + (3 + 3) / 3.06 = 2.96, the leaf 2",
+                  mid);
+    Box flat = {vec3(0, 0, 0), vec3(1, 0, 0)};
+    mid = bvh_split(&b, 0, 2, flat, flat);
+    ck_assert_msg(mid == -1, "bvh_split of a box without area returns %d, not -1", mid);
+}
+END_TEST
+
+/* Two triangles across the z axis, at z = -5 (triangle 0) and z = -10 (triangle 1): two
+ * leaves under one node. */
+static void two_leaves(Scene *scene)
+{
+    random_scene(scene, 2, 0.05, 0, 0);
+    set_triangle(scene, 0, vec3(-1, -1, -5), vec3(3, -1, -5), vec3(-1, 3, -5), 0);
+    set_triangle(scene, 1, vec3(-1, -1, -10), vec3(3, -1, -10), vec3(-1, 3, -10), 1);
+}
+
+/* A leaf function that counts its calls in state and stops, or lowers *tmax to 1, as the
+ * test asks in how. */
+typedef struct {
+    int calls;
+    int how; /* 0: go on; 1: stop; 2: lower *tmax to 1 */
+} LeafCalls;
+
+/* Counts a leaf's visit, and does what calls->how says. */
+static bool count_leaf(const Bvh *bvh, BvhRef leaf, Ray r, double tmin, double *tmax, void *state)
+{
+    (void)bvh, (void)leaf, (void)r, (void)tmin;
+    LeafCalls *calls = state;
+    calls->calls++;
+    if (calls->how == 2)
+        *tmax = 1;
+    return calls->how == 1;
+}
+
+START_TEST(traverse_nearer_first_and_stops)
+{
+    Scene scene;
+    two_leaves(&scene);
+    Bvh bvh;
+    ck_assert(bvh_build(&bvh, &scene));
+    ck_assert_msg(bvh.node_count == 1 && bvh.leaf_count == 2,
+                  "build_node: two triangles 5 apart make %d nodes and %d leaves, not 1 and 2",
+                  bvh.node_count, bvh.leaf_count);
+    /* From either side, the nearer leaf's hit rules the farther leaf out: the root's box,
+     * the node's two and one triangle, 4 tests. Farther first, or not reading *tmax
+     * again, makes 5. */
+    Vec3 from[2] = {vec3(0, 0, 0), vec3(0, 0, -20)}, along[2] = {vec3(0, 0, -1), vec3(0, 0, 1)};
+    for (int k = 0; k < 2; k++) {
+        long tests = bvh_count_tests(&bvh, ray(from[k], along[k]));
+        ck_assert_msg(tests == 4,
+                      "bvh_traverse (with leaf_closest) along %sz: %ld boxes and triangles tested, "
+                      "not 4: the nearer child first, and a subtree beyond the closest hit (*tmax, "
+                      "which leaf_closest lowers) not visited",
+                      k == 0 ? "-" : "+", tests);
+    }
+    long tests = 0;
+    double tmax = INFINITY;
+    LeafCalls calls = {0, 1};
+    bool stopped = bvh_traverse(&bvh, ray(from[0], along[0]), 0, &tmax, count_leaf, &calls, &tests);
+    ck_assert_msg(stopped && calls.calls == 1,
+                  "bvh_traverse: a leaf function that returns true is called %d times, and the "
+                  "traversal returns %s: it must stop there, returning true",
+                  calls.calls, stopped ? "true" : "false");
+    calls = (LeafCalls){0, 0};
+    stopped = bvh_traverse(&bvh, ray(from[0], along[0]), 0, &tmax, count_leaf, &calls, &tests);
+    ck_assert_msg(!stopped && calls.calls == 2,
+                  "bvh_traverse: a ray through both leaves, whose function goes on, visits %d "
+                  "leaves, not 2, and returns %s, not false",
+                  calls.calls, stopped ? "true" : "false");
+    calls = (LeafCalls){0, 2};
+    bvh_traverse(&bvh, ray(from[0], along[0]), 0, &tmax, count_leaf, &calls, &tests);
+    ck_assert_msg(calls.calls == 1,
+                  "bvh_traverse: after a leaf lowers *tmax to 1, the other leaf, at t = 10, is "
+                  "visited: the boxes are tested up to *tmax as it is now");
+    bvh_free(&bvh);
+    scene_free(&scene);
+}
+END_TEST
+
+/* Builds in bvh, over scene, one leaf of two triangles one over the other across the z
+ * axis: triangle 0 slanted from z = -6 to -9, met at z = -6.75, triangle 1 at z = -5. */
+static void one_leaf(Scene *scene, Bvh *bvh)
+{
+    two_leaves(scene);
+    set_triangle(scene, 0, vec3(-1, -1, -6), vec3(3, -1, -6), vec3(-1, 3, -9), 0);
+    set_triangle(scene, 1, vec3(-1, -1, -5), vec3(3, -1, -5), vec3(-1, 3, -5), 1);
+    ck_assert(bvh_build(bvh, scene));
+    ck_assert_msg(bvh->root.count == 2,
+                  "build_node (bvh_split): two triangles one over the other make no leaf of two "
+                  "(a split costs 1 + (40 + 16) / 48 = 2.17, the leaf 2)");
+}
+
+START_TEST(leaf_closest_finds_the_closest)
+{
+    /* One leaf of two triangles, the farther first. */
+    Scene scene;
+    Bvh bvh;
+    one_leaf(&scene, &bvh);
+    Hit hit;
+    bool found = bvh_hit(&bvh, ray(vec3(0, 0, 0), vec3(0, 0, -1)), 0, INFINITY, &hit);
+    ck_assert_msg(found && hit.index == 1 && hit.t == 5,
+                  "leaf_closest: in a leaf of two triangles at t = 6.75 and t = 5, bvh_hit finds "
+                  "%s%d at t = %g, not triangle 1 at t = 5: the closest of the leaf, not the first",
+                  found ? "triangle " : "nothing, ", found ? hit.index : 0, found ? hit.t : 0);
+    bvh_free(&bvh);
+    scene_free(&scene);
+}
+END_TEST
+
+START_TEST(leaf_any_within_tmin_and_tmax)
+{
+    /* One leaf, its box from t = 5 to 9: each range reaches the box, so that leaf_any
+     * alone decides. */
+    Scene scene;
+    Bvh bvh;
+    one_leaf(&scene, &bvh);
+    Ray r = ray(vec3(0, 0, 0), vec3(0, 0, -1)); /* triangles at t = 6.75 and t = 5 */
+    double range[4][2] = {{0, 5}, {7, INFINITY}, {0, 5.5}, {5.5, INFINITY}};
+    for (int k = 0; k < 4; k++) {
+        bool want = k >= 2, got = bvh_blocked(&bvh, r, range[k][0], range[k][1]);
+        ck_assert_msg(got == want,
+                      "leaf_any: with triangles at t = 5 and t = 6.75, bvh_blocked from tmin = %g "
+                      "to tmax = %g says %s: only a hit with tmin < t < tmax blocks",
+                      range[k][0], range[k][1], got ? "blocked" : "not blocked");
+    }
+    bvh_free(&bvh);
+    scene_free(&scene);
+}
+END_TEST
+
 /* Tells whether a and b are the same vector, bit for bit but for the sign of zero. */
 static bool vec3_equal(Vec3 a, Vec3 b)
 {
@@ -330,13 +510,13 @@ static bool same_as_brute_force(const Bvh *bvh, Ray r, double tmin, double tmax,
         (wanted && (got.t != want.t || got.kind != want.kind || got.index != want.index ||
                     got.material != want.material || got.back_face != want.back_face ||
                     !vec3_equal(got.point, want.point) || !vec3_equal(got.normal, want.normal)))) {
-        snprintf(why, size, "the BVH finds %s, brute force finds %s",
+        snprintf(why, size, "bvh_hit (bvh_traverse, leaf_closest) finds %s, brute force finds %s",
                  found_name(scene, have, &got, a, sizeof a),
                  found_name(scene, wanted, &want, b, sizeof b));
         return false;
     }
     if (bvh_blocked(bvh, r, tmin, tmax) != wanted) {
-        snprintf(why, size, "bvh_blocked says %s, but brute force finds %s",
+        snprintf(why, size, "bvh_blocked (bvh_traverse, leaf_any) says %s, but brute force finds %s",
                  wanted ? "nothing blocks it" : "something blocks it",
                  found_name(scene, wanted, &want, b, sizeof b));
         return false;
@@ -351,7 +531,7 @@ static void compare_with_brute_force(const Scene *scene, int count, double lo, d
 {
     Bvh bvh;
     ck_assert(bvh_build(&bvh, scene));
-    Box all = bvh_node_box(&bvh.top, 0);
+    Box all = bvh.box;
     int hits = 0;
     for (int k = 0; k < count; k++) {
         Vec3 o = rnd_point(lo, hi), target = vec3_add(all.lo, vec3(rnd() * (all.hi.x - all.lo.x),
@@ -586,6 +766,10 @@ static Suite *bvh_suite(void)
     tcase_add_test(tc, invariants_of_random_soups);
     tcase_add_test(tc, invariants_of_degenerate_sets);
     tcase_add_test(tc, tests_counted_for_the_box_tests_view);
+    tcase_add_test(tc, splits_by_the_sah);
+    tcase_add_test(tc, traverse_nearer_first_and_stops);
+    tcase_add_test(tc, leaf_closest_finds_the_closest);
+    tcase_add_test(tc, leaf_any_within_tmin_and_tmax);
     tcase_add_test(tc, float_test_is_conservative);
     tcase_add_test(tc, float_test_out_of_range);
     tcase_add_test(tc, closest_hit_as_brute_force);
