@@ -25,6 +25,7 @@ typedef struct {
     double allow;     /* the fraction of the pixels that may differ */
     double scale;     /* the difference shown white in the heat map; 0: the largest found */
     bool quiet, help, machine; /* machine: figures as NAME VALUE lines, for tools/grade */
+    StatStandard standard;     /* a Monte Carlo render's: "good" or "ok" (statdiff.h) */
 } DiffOptions;
 
 /* How two images of the same size differ. */
@@ -50,6 +51,7 @@ enum {
     OPT_THUMB,
     OPT_DIFF_THUMB,
     OPT_SCALE,
+    OPT_STANDARD,
     OPT_QUIET,
     OPT_MACHINE,
     OPT_HELP
@@ -78,6 +80,11 @@ static const ToolOption options[] = {
      "the difference that is white in the heat map, larger\nones too "
      "(default: the largest difference found)",
      NULL},
+    {"standard", 0, "NAME",
+     "against a statistical reference (a Monte Carlo render):\nthe course's soft shadow that "
+     "passes, good (stratified\nor correlated light samples) or ok (random points on\nthe "
+     "light)",
+     "good"},
     {"quiet", 'q', NULL, "print only the verdict", NULL},
     {"machine", 0, NULL,
      "print the figures as NAME VALUE lines instead, for\nprograms "
@@ -122,6 +129,12 @@ static bool set_option(void *state, int k, const char *value)
     if (k == OPT_QUIET || k == OPT_MACHINE || k == OPT_HELP) {
         *(k == OPT_QUIET ? &o->quiet : k == OPT_HELP ? &o->help : &o->machine) = true;
         return true;
+    }
+    if (k == OPT_STANDARD) {
+        if (statdiff_standard_from_name(value, &o->standard))
+            return true;
+        fprintf(stderr, "imgdiff: --standard takes good or ok, got '%s'\n", value);
+        return false;
     }
     if (k == OPT_DIFF || k == OPT_THUMB || k == OPT_DIFF_THUMB) {
         *(k == OPT_DIFF ? &o->diff_path : k == OPT_THUMB ? &o->thumb_path : &o->diff_thumb) = value;
@@ -376,7 +389,8 @@ int main(int argc, char **argv)
     /* A statistical reference of Monte Carlo renders: judged by statistics (statdiff.c). */
     if (kind[0] == IMGFILE_EXR && mcref_is(o.paths[0]))
         return statdiff_run(&(StatDiffRequest){o.paths[0], o.paths[1], kind[1], o.diff_path,
-                                               o.diff_thumb, o.thumb_path, o.quiet, o.machine});
+                                               o.diff_thumb, o.thumb_path, o.quiet, o.machine,
+                                               o.standard});
     Image img[2] = {{0}};
     Error err;
     int read = 0;
