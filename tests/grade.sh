@@ -450,6 +450,17 @@ check "the note on raytra's options" grep -qF \
     "grade: note: spheres-three.png: raytra's option --convention lecture is not given to students' programs" stderr.txt
 check "the note on an option with a value" grep -qF "raytra's option --max-depth 3 is not given" stderr.txt
 
+# Part 1.6's P and S reach a program in the course's order, raytra SCENE OUTPUT P S,
+# whatever order renders.txt names their options in.
+mkdir -p 1.6-test/references
+cp "$refs/spheres-three.png" 1.6-test/references/
+echo 'spheres-three.png scenes/spheres-three.scn --light-samples 2 --seed 4 --samples 3' \
+    >1.6-test/references/renders.txt
+rm -f arguments.txt
+checks=$((checks + 1))
+"$grade" --out "out dir" ./1.6-test words >stdout.txt 2>stderr.txt || fail "grade ./1.6-test failed"
+check "P and S in the course's order" test "$(cat arguments.txt)" = "4 3 2 "
+
 # Each part's own raytra, handed in as a student's program, passes every graded scene of
 # its part; the illustrations (!IMAGE in renders.txt) are not graded, and say so. A part
 # whose raytra is not built (make -C tools grade-test builds them all) is skipped, told.

@@ -96,6 +96,7 @@ typedef struct {
     char *imgdiff;           /* the imgdiff program */
     const char *threshold;   /* imgdiff's --threshold, as text */
     const char *allow;       /* imgdiff's --allow, as text */
+    const char *standard;    /* imgdiff's --standard: good or ok */
     double time_limit;       /* seconds for each run of a student's program */
     double build_time_limit; /* seconds for make */
     long long memory_limit;  /* bytes of address space; 0: none */

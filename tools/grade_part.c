@@ -46,14 +46,33 @@ static const CliOption *option_of(const CliOption *const *tables, const char *wo
     return word[2] == '\0' ? cli_option_lettered(tables, word[1]) : NULL;
 }
 
+/* Returns the place of option o among the options of tables that the course gives as
+ * positional arguments, in the order the course gives them (the tables' order): P is 0
+ * and S 1 in part 1.6, whatever order a renders.txt line names them in. */
+static int argument_place(const CliOption *const *tables, const CliOption *o)
+{
+    int place = 0;
+    for (int t = 0; tables[t] != NULL; t++)
+        for (const CliOption *c = tables[t]; c->name != NULL; c++) {
+            if (c == o)
+                return place;
+            place += c->argument != NULL;
+        }
+    return place;
+}
+
 /* Makes r->argv, a student's command line, of the scene's path and the words of its
  * renders.txt line (words[0..n)) that students' programs get: the positional words, and
- * the value of an option the course gives as a positional argument (1.4's MODE); raytra's
- * own options are left out, with a note on `notes`. */
+ * the values of the options the course gives as positional arguments (1.4's MODE, 1.6's
+ * P and S), where the line names them, but among themselves in the course's order (P
+ * before S, whatever order the line names them in); raytra's own options are left out,
+ * with a note on `notes`. */
 static void make_argv(Render *r, char *scene_path, char **words, int n,
                       const CliOption *const *tables, FILE *notes)
 {
     r->argv = grade_alloc(((size_t)n + RENDER_WORDS + 1) * sizeof *r->argv);
+    int *at = grade_alloc(((size_t)n + 1) * sizeof *at), *place = grade_alloc(((size_t)n + 1) * sizeof *place);
+    int options = 0;
     r->argv[1] = scene_path;
     int kept = RENDER_WORDS;
     for (int k = 0; k < n; k++) {
@@ -63,14 +82,23 @@ static void make_argv(Render *r, char *scene_path, char **words, int n,
         const char *value = eq != NULL ? eq + 1 : next ? words[k + 1] : NULL;
         if (words[k][0] != '-' || words[k][1] == '\0')
             r->argv[kept++] = grade_format("%s", words[k]);
-        else if (o != NULL && o->argument != NULL && value != NULL)
+        else if (o != NULL && o->argument != NULL && value != NULL) {
+            at[options] = kept, place[options++] = argument_place(tables, o);
             r->argv[kept++] = grade_format("%s", value);
-        else
+        } else
             fprintf(notes, "grade: note: %s: raytra's option %s%s%s is not given to students' "
                            "programs\n",
                     r->image, words[k], next ? " " : "", next ? words[k + 1] : "");
         k += next;
     }
+    /* The options' values sorted into the course's order, in the places they took. */
+    for (int a = 1; a < options; a++)
+        for (int b = a; b > 0 && place[b - 1] > place[b]; b--) {
+            char *value = r->argv[at[b - 1]];
+            int p = place[b - 1];
+            r->argv[at[b - 1]] = r->argv[at[b]], place[b - 1] = place[b];
+            r->argv[at[b]] = value, place[b] = p;
+        }
 }
 
 /* Adds the render of a renders.txt line (its words) to g, or its name to the illustrations

@@ -43,6 +43,13 @@ static bool same_bytes(const char *a, const char *b)
     return same;
 }
 
+/* Returns the path of the image that the references folder holds for render k: its
+ * reference, or beside a Monte Carlo render's statistics raytra's own render. */
+static const char *shipped_image(const Grading *g, int k)
+{
+    return grade_format("%s/%s", g->references, g->renders[k].image);
+}
+
 /* Compares image, submitted for render k, with the reference through imgdiff, which also
  * writes the full-size heat map and the thumbnails the report shows; sets the verdict from
  * its --machine lines (docs/grading.md lists them), with the reason in words. */
@@ -55,7 +62,7 @@ static void compare_image(const Grading *g, const Submission *s, int k, const ch
     res->image_show = grade_format("%s/%s.show.png", s->work, r->name);
     res->heat_show = grade_format("%s/%s.heat-show.png", s->work, r->name);
     char *argv[] = {g->imgdiff, "--machine", "--threshold", (char *)g->threshold, "--allow",
-                    (char *)g->allow, "--diff", grade_format("%s/%s.heat.png", s->work, r->name),
+                    (char *)g->allow, "--standard", (char *)g->standard, "--diff", grade_format("%s/%s.heat.png", s->work, r->name),
                     "--thumb", res->image_show, "--diff-thumb", res->heat_show, "--",
                     r->reference, (char *)image, NULL};
     RunResult run = run_program(argv, NULL, log, 600, RUN_OWN_MEMORY(g->memory_limit));
@@ -87,7 +94,9 @@ static void compare_image(const Grading *g, const Submission *s, int k, const ch
     Verdict v = run.ok ? VERDICT_PASS : VERDICT_FAIL;
     res->compared = run.end == RUN_EXITED && run.status <= 1;
     res->identical = res->compared && f->max[0] == 0 && f->max[1] == 0 && f->max[2] == 0;
-    res->copy = res->identical && same_bytes(image, r->reference);
+    /* A Monte Carlo render's reference is its statistics; raytra's image ships beside it. */
+    res->copy = (res->identical || statistical != NULL) && same_bytes(image, r->reference);
+    res->copy = res->copy || same_bytes(image, shipped_image(g, k));
     if (res->compared && statistical != NULL)
         set_verdict(res, v, "%s", statistical);
     else if (res->identical)
@@ -127,8 +136,10 @@ static void judge_file(const Grading *g, const Submission *s, int k, const char 
     else if (!S_ISREG(st.st_mode))
         set_verdict(res, VERDICT_UNREADABLE, "%s is not a regular file (%s)", name,
                     imgfile_kind_text(st.st_mode));
-    else if (stat(g->renders[k].reference, &ref) == 0 && ref.st_dev == st.st_dev &&
-             ref.st_ino == st.st_ino)
+    else if ((stat(g->renders[k].reference, &ref) == 0 && ref.st_dev == st.st_dev &&
+              ref.st_ino == st.st_ino) ||
+             (stat(shipped_image(g, k), &ref) == 0 && ref.st_dev == st.st_dev &&
+              ref.st_ino == st.st_ino))
         set_verdict(res, VERDICT_LINK, "%s is a hard link to the reference image", name);
     else
         compare_image(g, s, k, path);

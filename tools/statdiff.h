@@ -21,10 +21,10 @@
  * noise says, such as more samples than asked, a denoiser or the mean image), and at
  * most the standard's bound over the image and in any one square (calibrated,
  * docs/grading.md). */
-#define STATDIFF_NOISE_LOW 0.6
+#define STATDIFF_NOISE_LOW 0.75
 #define STATDIFF_GOOD_IMAGE 1.6
-#define STATDIFF_GOOD_BLOCK 2.4
-#define STATDIFF_OK_IMAGE 4.0
+#define STATDIFF_GOOD_BLOCK 3.5
+#define STATDIFF_OK_IMAGE 3.0
 #define STATDIFF_OK_BLOCK 6.0
 
 /* The course's two standards of a soft shadow: "good", stratified or correlated light
