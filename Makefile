@@ -15,8 +15,10 @@
 #   make fuzz        build the libFuzzer harnesses of the scene, OBJ and OpenEXR readers (clang)
 #   make fuzz-run    fuzz each reader for FUZZ_SECONDS (default 1800) s (docs/robustness.md)
 #   make mistakes    render the gallery of common mistakes and write docs/mistakes.md
-#   make check-statistics  part 1.6's grading by statistics: raytra with 20 seeds passes,
+#   make check-statistics  part 1.6's grading by statistics: right programs with 2 seeds pass,
 #                    right and wrong solutions pass and fail (tests/mc-variants, a few minutes)
+#   make calibrate-statistics  the statistical grading's false-fail rate over 2000 seeds a
+#                    scene and right program (MC_COUNT, MC_OUT=DIR keeps the verdicts; hours)
 #   make statistics-figure  draw the z-score heat maps docs/grading.md shows
 #   make check-slurm  grade a made-up class through tools/slurm/grade-slurm on a Slurm cluster
 #                    of one node it starts (as root; installs slurm-wlm and munge, or skips)
@@ -44,7 +46,7 @@ FUZZ_SECONDS ?= 1800
 .PHONY: all test demo check-demo check-chromium references docs check-docs check-slides check-figures check-layout check-course clean \
         check-robust check-fuzz-regressions check-bad-input check-interrupt check-nonfinite \
         check-course-render check-renders valgrind fuzz fuzz-run bench mistakes starter check-starter check-starters \
-        check-exercises check-statistics statistics-figure gradescope check-gradescope check-slurm
+        check-exercises check-statistics calibrate-statistics statistics-figure gradescope check-gradescope check-slurm
 .NOTPARALLEL:
 
 all:
@@ -194,15 +196,29 @@ mistakes: all
 	@$(SUBMAKE) -C tools/mistakes
 	@tools/mistakes/gallery.sh
 
-# Monte Carlo renders judged by statistics (docs/grading.md): raytra's own with seeds of
-# their own pass, each variant of part 1.6 (tests/mc-variants) passes or fails as it should.
+# Monte Carlo renders judged by statistics (docs/grading.md): right programs (raytra and
+# other generators and schemes) with MC_SEEDS seeds of their own each pass, each variant
+# of part 1.6 (tests/mc-variants) passes or fails as it should.
 MC_PART := milestones/1.6-monte-carlo
+MC_SEEDS ?= 2
 check-statistics:
 	$(DEPS_STEP)
 	@$(SUBMAKE) all
 	@$(SUBMAKE) -C tests/mc-variants
+	@tests/mc-variants/calibrate.sh $(call program,1.6-monte-carlo) tests/mc-variants/$(BUILD) \
+	    $(MC_PART)/references $(MC_SEEDS)
 	@tests/mc-variants/run.sh $(call program,1.6-monte-carlo) tests/mc-variants/$(BUILD) \
 	    $(IMGDIFF) $(MC_PART)/references
+
+# The false-fail rate of the statistical grading, measured: MC_COUNT seeds (default 2000)
+# of every right program and graded scene, in PNG, PFM and EXR (hours on two cores).
+MC_COUNT ?= 2000
+calibrate-statistics:
+	$(DEPS_STEP)
+	@$(SUBMAKE) all
+	@$(SUBMAKE) -C tests/mc-variants
+	@nice -n 10 tests/mc-variants/calibrate.sh $(call program,1.6-monte-carlo) \
+	    tests/mc-variants/$(BUILD) $(MC_PART)/references $(MC_COUNT) $(MC_OUT)
 
 # A class graded on Slurm (docs/grading.md): shards and a merge, on a cluster of one node
 # started and stopped by the test, give the report that one run of grade gives.

@@ -35,6 +35,11 @@ typedef struct {
     long differing, pixels;  /* differing: pixels with a channel difference above threshold */
     int box[4];        /* x0, y0, x1, y1 around the differing pixels (when some differ) */
     double heat_scale; /* the difference the heat map shows white */
+    /* A Monte Carlo render's statistical test (docs/grading.md): the largest |z| of the
+     * bias test and its critical value; the noise ratio and its bounds; the pixels the
+     * references saw without noise that differ. */
+    double bias_z, bias_critical, noise, noise_low, noise_high;
+    long exact;
 } Figures;
 
 /* Where a render's positional words begin in its argv, after program, scene and image. */

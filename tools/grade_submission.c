@@ -86,7 +86,11 @@ static void compare_image(const Grading *g, const Submission *s, int k, const ch
                sscanf(line, "rmse %lf", &f->rmse) == 1 ||
                sscanf(line, "psnr %lf", &f->psnr) == 1 ||
                sscanf(line, "differing %ld %ld", &f->differing, &f->pixels) == 2 ||
-               sscanf(line, "heat_scale %lf", &f->heat_scale) == 1);
+               sscanf(line, "heat_scale %lf", &f->heat_scale) == 1 ||
+               sscanf(line, "bias_worst %lf %lf", &f->bias_z, &f->bias_critical) == 2 ||
+               sscanf(line, "noise_image %lf %lf %lf", &f->noise, &f->noise_low,
+                      &f->noise_high) == 3 ||
+               sscanf(line, "exact %ld", &f->exact) == 1);
     }
     if (in != NULL)
         fclose(in);
