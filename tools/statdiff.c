@@ -440,8 +440,8 @@ static const BlockTest *worst_test(const StatDiff *d)
 }
 
 /* Writes the verdict's reason into text and the failed test's name into test; returns
- * whether the image passes. Biased (bias, exact) always fails; then too little noise,
- * then more than the standard allows. */
+ * whether the image passes. Biased (bias, then exact) always fails; then too little
+ * noise, then more than the standard allows. */
 static bool verdict(const StatDiff *d, const McRef *ref, int width, int height, char *test,
                     char *text, size_t size)
 {
@@ -456,6 +456,13 @@ static bool verdict(const StatDiff *d, const McRef *ref, int width, int height, 
     if (d->nonfinite > 0) {
         strcpy(test, "nonfinite");
         snprintf(text, size, "%ld pixel values are not finite (NaN or infinite)", d->nonfinite);
+    } else if (d->rejected > 0) {
+        strcpy(test, "bias");
+        snprintf(text, size,
+                 "bias: %d of %d tests differ from the reference beyond chance (family-wise "
+                 "%g); the worst, %s, %c: %s by %.3g %s, z = %.1f",
+                 d->rejected, d->count + 3, STATDIFF_ALPHA, where, "RGB"[w->c],
+                 w->diff > 0 ? "brighter" : "darker", fabs(w->diff), unit, w->z);
     } else if (d->deep > 0 || d->fringe >= d->fringe_limit) {
         strcpy(test, "exact");
         if (d->deep > 0)
@@ -467,16 +474,9 @@ static bool verdict(const StatDiff *d, const McRef *ref, int width, int height, 
         else
             snprintf(text, size,
                      "exact: %ld pixels differ where all %d renders of the reference agree, next "
-                     "to noisy ones (a correct render differs in fewer than %ld but 1 time in "
-                     "%.0f)",
-                     d->fringe, ref->variance_samples, d->fringe_limit, 1 / STATDIFF_ALPHA_EXACT);
-    } else if (d->rejected > 0) {
-        strcpy(test, "bias");
-        snprintf(text, size,
-                 "bias: %d of %d tests differ from the reference beyond chance (family-wise "
-                 "%g); the worst, %s, %c: %s by %.3g %s, z = %.1f",
-                 d->rejected, d->count + 3, STATDIFF_ALPHA, where, "RGB"[w->c],
-                 w->diff > 0 ? "brighter" : "darker", fabs(w->diff), unit, w->z);
+                     "to noisy ones (at most %ld allowed: a correct render has more with a "
+                     "chance below %g)",
+                     d->fringe, ref->variance_samples, d->fringe_limit - 1, STATDIFF_ALPHA_EXACT);
     } else if (n != NULL && d->noise_image < STATDIFF_NOISE_LOW) {
         strcpy(test, "smooth");
         snprintf(text, size,
