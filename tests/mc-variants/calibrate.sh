@@ -12,9 +12,12 @@
 # PNG, the PFM and the EXR the program would write (VARIANTS/mcjudge), and prints the
 # table of failures: per scene, program and format, and per submission (the same seed of
 # every scene: a student's hand-in fails when one of its scenes fails).
+# MC_SCENES (an extended regular expression) keeps the scenes whose names it matches
+# whole: a run of some scenes counts renders, not submissions.
 # Seeds are done in batches of MC_BATCH (default 25), every program and scene a batch,
 # so that a run cut short still covers them all; the raw verdicts go to OUT/raw.txt
-# (default: a temporary folder), a line a render and format.
+# (default: a temporary folder), a line a render and format; COUNT 0 prints the table
+# of the verdicts already in OUT/raw.txt.
 # Exit status 0 when the failures are at most 0.1 % of the submissions, 1 otherwise.
 set -u
 [ $# -ge 4 ] || { echo "usage: $0 RAYTRA VARIANTS REFDIR COUNT [OUT]" >&2; exit 2; }
@@ -26,7 +29,7 @@ trap 'rm -rf "$tmp"' EXIT
 trap 'exit 130' INT TERM
 [ -n "$out" ] || out=$tmp/out
 mkdir -p "$out"
-: >"$out/raw.txt"
+[ "$count" -eq 0 ] || : >"$out/raw.txt"
 
 # The correct programs: NAME PROGRAM STANDARD.
 cat >"$tmp/programs" <<PROGRAMS
@@ -37,7 +40,8 @@ transposed $variants/raytra-transposed good
 shift $variants/raytra-shift good
 random-light $variants/raytra-random-light ok
 PROGRAMS
-sed -n 's/^~\([^[:space:]]*\)\.[a-z]*[[:space:]]/\1 /p' "$refdir/renders.txt" >"$tmp/scenes"
+sed -n 's/^~\([^[:space:]]*\)\.[a-z]*[[:space:]]/\1 /p' "$refdir/renders.txt" |
+    grep -E "^(${MC_SCENES:-.*}) " >"$tmp/scenes"
 [ -s "$tmp/scenes" ] || { echo "calibrate.sh: no statistical reference in $refdir/renders.txt" >&2; exit 2; }
 
 start=$(date +%s)
