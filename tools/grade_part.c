@@ -71,7 +71,8 @@ static void make_argv(Render *r, char *scene_path, char **words, int n,
                       const CliOption *const *tables, FILE *notes)
 {
     r->argv = grade_alloc(((size_t)n + RENDER_WORDS + 1) * sizeof *r->argv);
-    int *at = grade_alloc(((size_t)n + 1) * sizeof *at), *place = grade_alloc(((size_t)n + 1) * sizeof *place);
+    int *at = grade_alloc(((size_t)n + 1) * sizeof *at);
+    int *place = grade_alloc(((size_t)n + 1) * sizeof *place);
     int options = 0;
     r->argv[1] = scene_path;
     int kept = RENDER_WORDS;

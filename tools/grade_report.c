@@ -153,14 +153,13 @@ static void write_heading(FILE *f, const Grading *g)
             g->time_limit, g->build_time_limit, grade_size_text(g->memory_limit));
     if (monte_carlo > 0)
         fprintf(f,
-                "<p class=\"meta\">%s Monte Carlo render%s judged by statistics against the "
-                "mean and variance of 64 of raytra's renders (<code>NAME.stats.exr</code>), not "
-                "by pixel tolerances: "
-                "biased (a block's bias test, or the exact test of the pixels the references "
-                "saw without noise) fails; so does too little noise, or more than the "
-                "&ldquo;%s&rdquo; standard of soft shadows allows.</p>\n",
-                monte_carlo == g->render_count ? "Every scene is a" : "Scenes marked ~ are",
-                monte_carlo == g->render_count ? "," : "s,", g->standard != NULL ? html(g->standard) : "good");
+                "<p class=\"meta\">Monte Carlo renders (%d of the %d scenes) are judged by "
+                "statistics against the mean and variance of 64 of raytra's renders "
+                "(<code>NAME.stats.exr</code>), not by pixel tolerances: biased (a block's bias "
+                "test, or the exact test of the pixels the references saw without noise) fails; "
+                "so does too little noise, or more than the &ldquo;%s&rdquo; standard of soft "
+                "shadows allows.</p>\n",
+                monte_carlo, g->render_count, g->standard != NULL ? html(g->standard) : "good");
     if (g->illustrations != NULL)
         fprintf(f, "<p class=\"meta\">Not graded (illustrations): %s.</p>\n",
                 html(g->illustrations));

@@ -36,8 +36,9 @@ typedef struct {
     double z, p;   /* the z-score of p, beyond the rounding allowance; its p-value */
     bool rejected; /* biased, by Holm's procedure */
     /* The sums the test and the noise test make over the block: differences, squared
-     * differences, reference means, variances with their floors, floors, the reference's variances and
-     * their squares; the largest deviation either way the range allows (codes). */
+     * differences, reference means, variances with their floors, floors, the reference's
+     * variances and their squares; the largest deviation either way the range allows
+     * (codes). */
     double sum_d, sum_d2, sum_m, sum_v, floors, noise, noise2, up, down;
 } BlockTest;
 
@@ -49,8 +50,8 @@ typedef struct {
 
 /* The comparison of a whole image. */
 typedef struct {
-    bool codes;        /* compared as 8-bit code values (a PNG, or any image at P = 1) */
-    bool bounded;      /* the bias test bounds its tails by Bernstein's inequality (P = 1) */
+    bool codes;   /* compared as 8-bit code values (a PNG, or any image at P = 1) */
+    bool bounded; /* the bias test bounds its tails by Bernstein's inequality (P = 1) */
     StatStandard standard;
     int nx, ny, count; /* blocks across and down; block tests (blocks x channels) */
     BlockTest *tests;
@@ -301,7 +302,9 @@ static bool statdiff_compare(const McRef *ref, const Image *img, bool png, StatS
     /* At P = 1 a pixel is one sample, lit or not: its sums are far from normal in the far
      * tail, and a code value's bounded range bounds it (Bernstein). */
     bool bounded = ref->p == 1;
-    *d = (StatDiff){.codes = png || bounded, .bounded = bounded, .standard = standard,
+    *d = (StatDiff){.codes = png || bounded,
+                    .bounded = bounded,
+                    .standard = standard,
                     .noise_worst = {.ratio = -1}};
     d->nx = (img->width + STATDIFF_BLOCK - 1) / STATDIFF_BLOCK;
     d->ny = (img->height + STATDIFF_BLOCK - 1) / STATDIFF_BLOCK;
@@ -462,7 +465,7 @@ static bool verdict(const StatDiff *d, const McRef *ref, int width, int height, 
                  "bias: %d of %d tests differ from the reference beyond chance (family-wise "
                  "%g); the worst, %s, %c: %s by %.3g %s, z = %.1f",
                  d->rejected, d->count + 3, STATDIFF_ALPHA, where, "RGB"[w->c],
-                 w->diff > 0 ? "brighter" : "darker", fabs(w->diff), unit, w->z);
+                 w -> diff > 0 ? "brighter" : "darker", fabs(w->diff), unit, w->z);
     } else if (d->deep > 0 || d->fringe >= d->fringe_limit) {
         strcpy(test, "exact");
         if (d->deep > 0)
@@ -499,10 +502,10 @@ static bool verdict(const StatDiff *d, const McRef *ref, int width, int height, 
         snprintf(text, size,
                  "noise: unbiased, but the square %s, %c, is %.2f times as noisy as raytra's at "
                  "P %d S %d, more than the \"%s\" standard allows (%.2f): %s?",
-                 where, "RGB"[n->c], n->ratio, ref->p, ref->s, standard_name(d->standard),
+                 where, "RGB"[n->c], n -> ratio, ref -> p, ref -> s, standard_name(d->standard),
                  most_square,
-                 d->standard == STATDIFF_OK ? "pixels not stratified"
-                                            : "pixels or light samples not stratified");
+                 d -> standard == STATDIFF_OK ? "pixels not stratified"
+                                              : "pixels or light samples not stratified");
     } else {
         snprintf(text, size,
                  "converges to the reference: no block biased (largest |z| %.2f, critical %.2f), "
@@ -529,8 +532,10 @@ static long faulted_pixels(const StatDiff *d, const Image *img, int box[4])
         for (int bx = 0; bx < d->nx; bx++) {
             const BlockTest *t = &d->tests[3 * (by * d->nx + bx)];
             bool biased = t[0].rejected || t[1].rejected || t[2].rejected;
-            for (int y = by * STATDIFF_BLOCK; y < by * STATDIFF_BLOCK + box_side(by * STATDIFF_BLOCK, img->height); y++)
-                for (int x = bx * STATDIFF_BLOCK; x < bx * STATDIFF_BLOCK + box_side(bx * STATDIFF_BLOCK, img->width); x++)
+            for (int y = by * STATDIFF_BLOCK;
+                 y < by * STATDIFF_BLOCK + box_side(by * STATDIFF_BLOCK, img->height); y++)
+                for (int x = bx * STATDIFF_BLOCK;
+                     x < bx * STATDIFF_BLOCK + box_side(bx * STATDIFF_BLOCK, img->width); x++)
                     if (biased || d->mark[(long)y * img->width + x]) {
                         differing++;
                         box[0] = x < box[0] ? x : box[0], box[1] = y < box[1] ? y : box[1];
@@ -557,14 +562,14 @@ static void print_figures(const StatDiff *d, const McRef *ref, const Image *img,
     if (req->machine) {
         printf("mode statistics\nstandard %s\nsize %d %d\nmax %.9g %.9g %.9g\nmean %.9g\n"
                "rmse %.9g\npsnr %.9g\ndiffering %ld %ld\n",
-               standard_name(d->standard), img->width, img->height, d->max[0], d->max[1],
-               d->max[2], mean, rmse, -20 * log10(rmse), differing, pixels);
+               standard_name(d->standard), img->width, img->height, d->max[0], d->max[1], d->max[2],
+               mean, rmse, -20 * log10(rmse), differing, pixels);
         if (differing > 0)
             printf("box %d %d %d %d\n", box[0], box[1], box[2], box[3]);
         printf("exact %ld %ld %ld\n", d->deep, d->fringe, d->fringe_limit);
         printf("bias_tests %d %d\nbias_worst %.6g %.6g %s %c\nnoise_image %.6g %.6g %.6g\n",
-               d->rejected, d->count + 3, w->z, d->z_critical, where, "RGB"[w->c],
-               d->noise_image, STATDIFF_NOISE_LOW, most_image);
+               d->rejected, d->count + 3, w->z, d->z_critical, where, "RGB"[w->c], d -> noise_image,
+               STATDIFF_NOISE_LOW, most_image);
         if (n != NULL) {
             square_text(n, img->width, img->height, where, sizeof where);
             printf("noise_block %.6g %.6g %s %c\n", n->ratio, most_square, where, "RGB"[n->c]);
@@ -598,7 +603,7 @@ static void print_figures(const StatDiff *d, const McRef *ref, const Image *img,
                           : "p-values by the normal law");
         printf("    largest |z|: %.2f at %s, %c: mean difference %+.3g %s (standard "
                "error %.3g; %.3g allowed for rounding); %d tests fail\n",
-               fabs(w->z), where, "RGB"[w->c], w->diff, d->codes ? "codes" : "", w->se,
+               fabs(w->z), where, "RGB"[w->c], w -> diff, d -> codes ? "codes" : "", w->se,
                allowance(d->codes, w->n > 0 ? w->sum_m / w->n : 0), d->rejected);
         printf("noise test: the residual's RMS is %.2f times the expected one over the noisy "
                "squares of %d x %d pixels (%d, a channel each; from %.2f to %.2f)",

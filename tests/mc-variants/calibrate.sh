@@ -9,7 +9,8 @@
 # from drand48, with the strata counted column by column, with the light's strata
 # correlated by a random cyclic shift (all judged by the "good" standard), and with
 # random points on the light (judged by the "ok" standard); judges each render as the
-# PNG, the PFM and the EXR the program would write (VARIANTS/mcjudge), and prints the
+# PNG, the PFM and the EXR the program would write (VARIANTS/mcjudge; raytra's also as a
+# PNG written by truncation, which a student's writer may do), and prints the
 # table of failures: per scene, program and format, and per submission (the same seed of
 # every scene: a student's hand-in fails when one of its scenes fails).
 # MC_SCENES (an extended regular expression) keeps the scenes whose names it matches
@@ -58,8 +59,10 @@ while [ "$first" -lt "$count" ]; do
                     { echo "calibrate.sh: $program failed on $name" >&2; exit 2; }
                 s=$((s + 1))
             done
+            # raytra's renders are judged as a PNG written by truncation too (png-trunc).
             ok=
             [ "$standard" = good ] || ok=--ok
+            [ "$program" != raytra ] || ok=--truncate
             # shellcheck disable=SC2046,SC2086 # the renders' names have no spaces
             TMPDIR=$tmp "$variants/mcjudge" $ok "$refdir/$name.stats.exr" $(ls "$tmp"/*.pfm) |
                 sed "s|^$tmp/\([0-9]*\)\.pfm |$program $name \1 |" >>"$out/raw.txt" ||
