@@ -23,7 +23,7 @@
  * docs/grading.md). */
 #define STATDIFF_NOISE_LOW 0.75
 #define STATDIFF_GOOD_IMAGE 1.6
-#define STATDIFF_GOOD_BLOCK 3.0
+#define STATDIFF_GOOD_BLOCK 3.5
 #define STATDIFF_OK_IMAGE 3.0
 #define STATDIFF_OK_BLOCK 6.0
 
