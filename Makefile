@@ -15,8 +15,10 @@
 #   make fuzz        build the libFuzzer harnesses of the scene, OBJ and OpenEXR readers (clang)
 #   make fuzz-run    fuzz each reader for FUZZ_SECONDS (default 1800) s (docs/robustness.md)
 #   make mistakes    render the gallery of common mistakes and write docs/mistakes.md
-#   make check-statistics  part 1.6's grading by statistics: raytra with 20 seeds passes,
+#   make check-statistics  part 1.6's grading by statistics: right programs with 2 seeds pass,
 #                    right and wrong solutions pass and fail (tests/mc-variants, a few minutes)
+#   make calibrate-statistics  the statistical grading's false-fail rate over 2000 seeds a
+#                    scene and right program (MC_COUNT, MC_OUT=DIR keeps the verdicts; hours)
 #   make statistics-figure  draw the z-score heat maps docs/grading.md shows
 #   make check-bvh-variants  part 1.4's grading: correct BVHs unlike raytra's pass every scene,
 #                    wrong ones fail, saying why (tests/bvh-variants, a few minutes)
@@ -50,8 +52,8 @@ FUZZ_SECONDS ?= 1800
 .PHONY: all test demo check-demo check-chromium references docs check-docs check-slides check-figures check-layout check-course clean \
         check-robust check-fuzz-regressions check-bad-input check-interrupt check-nonfinite \
         check-course-render check-renders valgrind fuzz fuzz-run bench mistakes starter check-starter check-starter-chapter check-starters \
-        check-exercises check-statistics check-bvh-variants statistics-figure gradescope check-gradescope \
-        check-slurm check-contain
+        check-exercises check-statistics calibrate-statistics check-bvh-variants statistics-figure gradescope \
+        check-gradescope check-slurm check-contain
 .NOTPARALLEL:
 
 all:
@@ -206,13 +208,17 @@ mistakes: all
 	@$(SUBMAKE) -C tools/mistakes
 	@tools/mistakes/gallery.sh
 
-# Monte Carlo renders judged by statistics (docs/grading.md): raytra's own with seeds of
-# their own pass, each variant of part 1.6 (tests/mc-variants) passes or fails as it should.
+# Monte Carlo renders judged by statistics (docs/grading.md): right programs (raytra and
+# other generators and schemes) with MC_SEEDS seeds of their own each pass, each variant
+# of part 1.6 (tests/mc-variants) passes or fails as it should.
 MC_PART := milestones/1.6-monte-carlo
+MC_SEEDS ?= 2
 check-statistics:
 	$(DEPS_STEP)
 	@$(SUBMAKE) all
 	@$(SUBMAKE) -C tests/mc-variants
+	@tests/mc-variants/calibrate.sh $(call program,1.6-monte-carlo) tests/mc-variants/$(BUILD) \
+	    $(MC_PART)/references $(MC_SEEDS)
 	@tests/mc-variants/run.sh $(call program,1.6-monte-carlo) tests/mc-variants/$(BUILD) \
 	    $(IMGDIFF) $(MC_PART)/references
 
@@ -223,6 +229,16 @@ check-bvh-variants:
 	@$(SUBMAKE) all
 	@$(SUBMAKE) -C tests/bvh-variants
 	@tests/bvh-variants/run.sh $(TOOLS_DIR)/$(BUILD)/grade tests/bvh-variants/$(BUILD)
+
+# The false-fail rate of the statistical grading, measured: MC_COUNT seeds (default 2000)
+# of every right program and graded scene, in PNG, PFM and EXR (hours on two cores).
+MC_COUNT ?= 2000
+calibrate-statistics:
+	$(DEPS_STEP)
+	@$(SUBMAKE) all
+	@$(SUBMAKE) -C tests/mc-variants
+	@nice -n 10 tests/mc-variants/calibrate.sh $(call program,1.6-monte-carlo) \
+	    tests/mc-variants/$(BUILD) $(MC_PART)/references $(MC_COUNT) $(MC_OUT)
 
 # A class graded on Slurm (docs/grading.md): shards and a merge, on a cluster of one node
 # started and stopped by the test, give the report that one run of grade gives.

@@ -458,6 +458,39 @@ check "the note on raytra's options" grep -qF \
     "grade: note: spheres-three.png: raytra's option --convention lecture is not given to students' programs" stderr.txt
 check "the note on an option with a value" grep -qF "raytra's option --max-depth 3 is not given" stderr.txt
 
+# Part 1.6's P and S reach a program in the course's order, raytra SCENE OUTPUT P S,
+# whatever order renders.txt names their options in.
+mkdir -p 1.6-test/references
+cp "$refs/spheres-three.png" 1.6-test/references/
+echo 'spheres-three.png scenes/spheres-three.scn --light-samples 2 --seed 4 --samples 3' \
+    >1.6-test/references/renders.txt
+rm -f arguments.txt
+checks=$((checks + 1))
+"$grade" --out "out dir" ./1.6-test words >stdout.txt 2>stderr.txt || fail "grade ./1.6-test failed"
+check "P and S in the course's order" test "$(cat arguments.txt)" = "4 3 2 "
+
+# Part 1.6's shipped files handed in: a byte copy of raytra's image of each Monte Carlo
+# render (a correct render, which passes) and of a statistical reference (whose mean has
+# too little noise) are flagged copy; a hard link to a shipped image is a LINK.
+mc=$top/milestones/1.6-monte-carlo/references
+mkdir -p mc-copies/copier
+for image in $(sed -n 's/^~\([^[:space:]]*\).*/\1/p' "$mc/renders.txt"); do
+    cp "$mc/$image" mc-copies/copier/
+done
+rm mc-copies/copier/demo.png
+cp "$mc/demo.stats.exr" mc-copies/copier/demo.exr
+rm mc-copies/copier/soft-shadow-1-1.png
+ln "$mc/soft-shadow-1-1.png" mc-copies/copier/soft-shadow-1-1.png 2>/dev/null ||
+    cp "$mc/soft-shadow-1-1.png" mc-copies/copier/soft-shadow-1-1.png
+checks=$((checks + 1))
+"$grade" -q --out mc-out 1.6 mc-copies >stdout.txt 2>stderr.txt
+[ $? -le 1 ] || fail "grade 1.6 on copies failed: $(cat stderr.txt)"
+check "copies of part 1.6's shipped images pass, flagged" \
+    test "$(grep -c '^copier,[a-z0-9-]*,PASS,.*,copy$' mc-out/grades.csv)" -eq 4
+check "a copy of a statistical reference fails, flagged" \
+    grep -q '^copier,demo,FAIL,.*smooth: too little noise.*,copy$' mc-out/grades.csv
+check "a hard link to a shipped image" grep -q '^copier,soft-shadow-1-1,\(LINK\|PASS,.*,copy$\)' mc-out/grades.csv
+
 # Each part's own raytra, handed in as a student's program, passes every graded scene of
 # its part; the illustrations (!IMAGE in renders.txt) are not graded, and say so. A part
 # whose raytra is not built (make -C tools grade-test builds them all) is skipped, told.

@@ -36,6 +36,11 @@ typedef struct {
     long differing, pixels;  /* differing: pixels with a channel difference above threshold */
     int box[4];        /* x0, y0, x1, y1 around the differing pixels (when some differ) */
     double heat_scale; /* the difference the heat map shows white */
+    /* A Monte Carlo render's statistical test (docs/grading.md): the largest |z| of the
+     * bias test and its critical value; the noise ratio and its bounds; the pixels the
+     * references saw without noise that differ. */
+    double bias_z, bias_critical, noise, noise_low, noise_high;
+    long exact;
 } Figures;
 
 /* Where a render's positional words begin in its argv, after program, scene and image. */
@@ -61,6 +66,9 @@ typedef struct {
     double points;        /* what passing it is worth (grading.conf; 1 by default) */
     const char *visibility; /* Gradescope's: visible, hidden, after_due_date, after_published */
     bool hidden;          /* an instructor's own scene (--hidden), shipped in no starter */
+    char *shipped;        /* the image the references folder ships for it: its reference, or
+                           * beside a Monte Carlo render's statistics raytra's own render;
+                           * NULL for a hidden scene */
     char *canary;         /* the reference's bytes marked as the grader's (a PNG with a text
                            * chunk more): what a program that copies the file it found in its
                            * own folder writes; NULL for a reference that is no PNG */
@@ -115,6 +123,7 @@ typedef struct {
     char *imgdiff;           /* the imgdiff program */
     const char *threshold;   /* imgdiff's --threshold, as text */
     const char *allow;       /* imgdiff's --allow, as text */
+    const char *standard;    /* imgdiff's --standard: good or ok */
     double time_limit;       /* seconds for each run of a student's program */
     double build_time_limit; /* seconds for make */
     long long memory_limit;  /* bytes of address space; 0: none */

@@ -48,14 +48,34 @@ static const CliOption *option_of(const CliOption *const *tables, const char *wo
     return word[2] == '\0' ? cli_option_lettered(tables, word[1]) : NULL;
 }
 
+/* Returns the place of option o among the options of tables that the course gives as
+ * positional arguments, in the order the course gives them (the tables' order): P is 0
+ * and S 1 in part 1.6, whatever order a renders.txt line names them in. */
+static int argument_place(const CliOption *const *tables, const CliOption *o)
+{
+    int place = 0;
+    for (int t = 0; tables[t] != NULL; t++)
+        for (const CliOption *c = tables[t]; c->name != NULL; c++) {
+            if (c == o)
+                return place;
+            place += c->argument != NULL;
+        }
+    return place;
+}
+
 /* Makes r->argv, a student's command line, of the scene's path and the words of its
  * renders.txt line (words[0..n)) that students' programs get: the positional words, and
- * the value of an option the course gives as a positional argument (1.4's MODE); raytra's
- * own options are left out, with a note on `notes`. */
+ * the values of the options the course gives as positional arguments (1.4's MODE, 1.6's
+ * P and S), where the line names them, but among themselves in the course's order (P
+ * before S, whatever order the line names them in); raytra's own options are left out,
+ * with a note on `notes`. */
 static void make_argv(Render *r, char *scene_path, char **words, int n,
                       const CliOption *const *tables, FILE *notes)
 {
     r->argv = grade_alloc(((size_t)n + RENDER_WORDS + 1) * sizeof *r->argv);
+    int *at = grade_alloc(((size_t)n + 1) * sizeof *at);
+    int *place = grade_alloc(((size_t)n + 1) * sizeof *place);
+    int options = 0;
     r->argv[1] = scene_path;
     int kept = RENDER_WORDS;
     for (int k = 0; k < n; k++) {
@@ -65,14 +85,23 @@ static void make_argv(Render *r, char *scene_path, char **words, int n,
         const char *value = eq != NULL ? eq + 1 : next ? words[k + 1] : NULL;
         if (words[k][0] != '-' || words[k][1] == '\0')
             r->argv[kept++] = grade_format("%s", words[k]);
-        else if (o != NULL && o->argument != NULL && value != NULL)
+        else if (o != NULL && o->argument != NULL && value != NULL) {
+            at[options] = kept, place[options++] = argument_place(tables, o);
             r->argv[kept++] = grade_format("%s", value);
-        else
+        } else
             fprintf(notes, "grade: note: %s: raytra's option %s%s%s is not given to students' "
                            "programs\n",
                     r->image, words[k], next ? " " : "", next ? words[k + 1] : "");
         k += next;
     }
+    /* The options' values sorted into the course's order, in the places they took. */
+    for (int a = 1; a < options; a++)
+        for (int b = a; b > 0 && place[b - 1] > place[b]; b--) {
+            char *value = r->argv[at[b - 1]];
+            int p = place[b - 1];
+            r->argv[at[b - 1]] = r->argv[at[b]], place[b - 1] = place[b];
+            r->argv[at[b]] = value, place[b] = p;
+        }
 }
 
 /* Sets how render r, of a line IMAGE=OTHER or IMAGE>MASK (how: '=' or '>', `other` the name
@@ -149,6 +178,9 @@ static bool add_render(Grading *g, char **words, int n, const char *where, const
         return grade_fail("%s: a hidden scene is judged against its own reference alone", where);
     if (judged != NULL && !judge_of(g, r, how, judged, where))
         return false;
+    r->shipped = r->hidden                    ? NULL
+                 : r->judge == JUDGE_SAME_AS ? g->renders[r->same_as].shipped
+                                             : grade_format("%s/%s", references, image);
     return r->hidden || grade_kind(r->reference) == S_IFREG ||
            grade_fail("%s: no reference image %s (make references makes it)", where, r->reference);
 }
@@ -432,7 +464,7 @@ void part_make_canaries(Grading *g)
                        (unsigned long)time(NULL), (unsigned long)getpid());
     for (int k = 0; k < g->render_count; k++) {
         Render *r = &g->renders[k];
-        FILE *in = fopen(r->reference, "rb");
+        FILE *in = r->shipped != NULL ? fopen(r->shipped, "rb") : NULL;
         unsigned char *bytes = NULL;
         long size = in != NULL && fseek(in, 0, SEEK_END) == 0 ? ftell(in) : -1;
         if (size > 20 && size < (1L << 28) && fseek(in, 0, SEEK_SET) == 0)

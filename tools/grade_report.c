@@ -114,12 +114,21 @@ static void put_picture(FILE *f, const char *path)
         fclose(in);
 }
 
+/* Tells whether render r is a Monte Carlo render, judged by statistics (~IMAGE). */
+static bool statistical(const Render *r)
+{
+    size_t n = strlen(r->reference), end = strlen(".stats.exr");
+    return n > end && strcmp(r->reference + n - end, ".stats.exr") == 0;
+}
+
 /* Writes the page's head, with a style rule a reference picture, each embedded once and
  * shown as a background beside every submission's image; the title block; and the
  * summary: a row a submission, linking to its details. */
 static void write_heading(FILE *f, const Grading *g)
 {
-    int passed = 0, w, h;
+    int passed = 0, w, h, monte_carlo = 0;
+    for (int k = 0; k < g->render_count; k++)
+        monte_carlo += statistical(&g->renders[k]);
     fprintf(f, "<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n"
                "<meta name=\"viewport\" content=\"width=device-width, initial-scale=1\">\n"
                "<title>%s: grading report</title>\n<style>\n%s", html(g->part), style);
@@ -131,13 +140,26 @@ static void write_heading(FILE *f, const Grading *g)
         }
     fprintf(f, "</style>\n</head>\n<body>\n<header class=\"page\"><div>\n<h1>Grading report: "
                "part %s</h1>\n<p class=\"meta\">%d submission%s from <code>%s</code>, %d scene%s "
-               "each, graded %s.</p>\n<p class=\"meta\">A pixel differs when one of its channels "
-               "differs by more than %s; an image passes when at most the fraction %s of its "
-               "pixels differ. A program gets %g s a scene and %g s to build; memory limit: "
-               "%s.</p>\n",
+               "each, graded %s.</p>\n<p class=\"meta\">%s A program gets %g s a scene and "
+               "%g s to build; memory limit: %s.</p>\n",
             html(g->part), g->sub_count, plural(g->sub_count), html(g->submissions),
-            g->render_count, plural(g->render_count), g->started, html(g->threshold),
-            html(g->allow), g->time_limit, g->build_time_limit, grade_size_text(g->memory_limit));
+            g->render_count, plural(g->render_count), g->started,
+            monte_carlo == g->render_count
+                ? ""
+                : grade_format("A pixel differs when one of its channels differs by more than "
+                               "%s; an image passes when at most the fraction %s of its pixels "
+                               "differ.",
+                               html(g->threshold), html(g->allow)),
+            g->time_limit, g->build_time_limit, grade_size_text(g->memory_limit));
+    if (monte_carlo > 0)
+        fprintf(f,
+                "<p class=\"meta\">Monte Carlo renders (%d of the %d scenes) are judged by "
+                "statistics against the mean and variance of 64 of raytra's renders "
+                "(<code>NAME.stats.exr</code>), not by pixel tolerances: biased (a block's bias "
+                "test, or the exact test of the pixels the references saw without noise) fails; "
+                "so does too little noise, or more than the &ldquo;%s&rdquo; standard of soft "
+                "shadows allows.</p>\n",
+                monte_carlo, g->render_count, g->standard != NULL ? html(g->standard) : "good");
     if (g->illustrations != NULL)
         fprintf(f, "<p class=\"meta\">Not graded (illustrations): %s.</p>\n",
                 html(g->illustrations));
@@ -191,12 +213,17 @@ static void write_figure(FILE *f, const char *same, const char *path, double wid
 /* Writes the pictures of a scene side by side, the reference, the submitted image and the
  * heat map (the reference's picture and a black one for an identical image), with imgdiff's
  * figures. */
-static void write_pictures(FILE *f, const SceneResult *res, int k)
+static void write_pictures(FILE *f, const SceneResult *res, int k, bool statistics)
 {
     const Figures *fig = &res->figures;
     double width = res->relative_width > 0 && res->relative_width < 1 ? res->relative_width : 1;
     char *caption = "Differences";
-    if (res->identical)
+    if (statistics && res->compared)
+        caption = grade_format("Bias test: each 8 x 8 block's largest |z|, black within "
+                               "rounding, white at the critical |z| = %.3g (fails); pixels "
+                               "compared exactly that differ, white",
+                               fig->heat_scale);
+    else if (res->identical)
         caption = "Differences: none, the images are identical";
     else if (res->compared)
         caption = grade_format("Differences: black where equal, white at %.3g/255",
@@ -207,7 +234,17 @@ static void write_pictures(FILE *f, const SceneResult *res, int k)
                  "Submission", "no image");
     write_figure(f, res->identical ? "black ref" : NULL, res->heat_show, 1, k,
                  "heat map of the differences", caption, "no comparison");
-    if (res->compared)
+    if (statistics && res->compared)
+        fprintf(f,
+                "<table class=\"figures\"><tr><th>Bias: largest |z|</th><td>%.3g (fails beyond "
+                "%.3g)</td></tr><tr><th>Noise, times raytra's</th><td>%.3g (from %.3g to %.3g)"
+                "</td></tr><tr><th>Exact pixels differing</th><td>%ld</td></tr><tr><th>Pixels "
+                "faulted</th><td>%ld (%.3g%%)</td></tr><tr><th>RMSE from the mean</th><td>%.4g"
+                "</td></tr></table>\n",
+                fabs(fig->bias_z), fig->bias_critical, fig->noise, fig->noise_low,
+                fig->noise_high, fig->exact, fig->differing, 100.0 * fig->differing / fig->pixels,
+                fig->rmse);
+    else if (res->compared)
         fprintf(f,
                 "<table class=\"figures\"><tr><th>Max diff R, G, B</th><td>%.3g, %.3g, %.3g /255"
                 "</td></tr><tr><th>Mean abs diff</th><td>%.3g /255</td></tr><tr><th>RMSE</th><td>"
@@ -287,7 +324,7 @@ static void write_html(FILE *f, const Grading *g)
                 fprintf(f, "<p class=\"file\">Command <code>%s</code></p>\n",
                         html(report_command(s, res)));
             if (res->compared || res->relative_width > 0)
-                write_pictures(f, res, k);
+                write_pictures(f, res, k, statistical(r));
             write_log(f, "Program output (the last lines)",
                       res->command != NULL && res->log_tail == NULL ? "(nothing)" : res->log_tail,
                       verdict_info[res->verdict].tally == TALLY_ERROR);

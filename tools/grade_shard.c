@@ -91,9 +91,11 @@ void shard_put_submission(FILE *f, const Grading *g, const Submission *s)
         put_path(f, g->work, r->heat_show);
         shard_put_text(f, r->log_tail);
         shard_put_text(f, r->command);
-        fprintf(f, " %a %a %a %a %a %a %a %a %ld %ld %d %d %d %d %a\n", x->threshold, x->allow,
+        fprintf(f, " %a %a %a %a %a %a %a %a %ld %ld %d %d %d %d %a", x->threshold, x->allow,
                 x->max[0], x->max[1], x->max[2], x->mean, x->rmse, x->psnr, x->differing, x->pixels,
                 x->box[0], x->box[1], x->box[2], x->box[3], x->heat_scale);
+        fprintf(f, " %a %a %a %a %a %ld\n", x->bias_z, x->bias_critical, x->noise, x->noise_low,
+                x->noise_high, x->exact);
     }
 }
 
@@ -217,6 +219,11 @@ static bool get_submission(Reader *r, const Grading *g, Submission *s, const cha
         for (int n = 0; n < 4; n++)
             f->box[n] = (int)get_number(r, 22 + n);
         f->heat_scale = get_number(r, 26);
+        double *statistics[] = {&f->bias_z, &f->bias_critical, &f->noise, &f->noise_low,
+                                &f->noise_high};
+        for (int n = 0; n < 5; n++)
+            *statistics[n] = get_number(r, 27 + n);
+        f->exact = (long)get_number(r, 32);
         s->tally[verdict_info[x->verdict].tally]++;
     }
     return !r->bad || grade_fail("%s:%d: a word is not as grade writes it", r->path, r->line);

@@ -76,11 +76,12 @@ static DiffRun run_imgdiff(const Grading *g, const Submission *s, int k, const c
     const Render *r = &g->renders[k];
     SceneResult *res = &s->results[k];
     Figures *f = &res->figures;
-    char *argv[24] = {g->imgdiff, "--machine", "--threshold", (char *)g->threshold, "--allow",
-                      (char *)g->allow, "--diff", grade_format("%s/%s.heat.png", s->work, r->name),
-                      "--thumb", res->image_show, "--diff-thumb", res->heat_show};
-    int n = 12;
-    while (*how != NULL && n < 20)
+    char *argv[26] = {g->imgdiff, "--machine", "--threshold", (char *)g->threshold, "--allow",
+                      (char *)g->allow, "--standard", (char *)g->standard, "--diff",
+                      grade_format("%s/%s.heat.png", s->work, r->name), "--thumb",
+                      res->image_show, "--diff-thumb", res->heat_show};
+    int n = 14;
+    while (*how != NULL && n < 22)
         argv[n++] = *how++;
     argv[n++] = "--";
     argv[n++] = (char *)against;
@@ -107,7 +108,11 @@ static DiffRun run_imgdiff(const Grading *g, const Submission *s, int k, const c
                sscanf(line, "rmse %lf", &f->rmse) == 1 ||
                sscanf(line, "psnr %lf", &f->psnr) == 1 ||
                sscanf(line, "differing %ld %ld", &f->differing, &f->pixels) == 2 ||
-               sscanf(line, "heat_scale %lf", &f->heat_scale) == 1);
+               sscanf(line, "heat_scale %lf", &f->heat_scale) == 1 ||
+               sscanf(line, "bias_worst %lf %lf", &f->bias_z, &f->bias_critical) == 2 ||
+               sscanf(line, "noise_image %lf %lf %lf", &f->noise, &f->noise_low,
+                      &f->noise_high) == 3 ||
+               sscanf(line, "exact %ld", &f->exact) == 1);
     }
     if (in != NULL)
         fclose(in);
@@ -146,9 +151,11 @@ static void compare_image(const Grading *g, const Submission *s, int k, const ch
     /* A program writes the reference's bytes when it renders as the model answer does, and
      * the canary's when it copies the file it found in its folder; images handed in are
      * flagged when they are the reference's file. */
-    res->copy = res->identical &&
-                (s->program ? r->canary != NULL && same_bytes(image, r->canary)
-                            : same_bytes(image, r->reference));
+    res->copy = s->program ? (res->identical || d.statistical != NULL) && r->canary != NULL &&
+                                 same_bytes(image, r->canary)
+                           : ((res->identical || d.statistical != NULL) &&
+                              same_bytes(image, r->reference)) ||
+                                 (r->shipped != NULL && same_bytes(image, r->shipped));
     /* It matches the reference: now against the program's own OTHER, exactly. */
     bool same = other != NULL && v == VERDICT_PASS;
     if (same) {
@@ -211,8 +218,10 @@ static void judge_file(const Grading *g, const Submission *s, int k, const char 
     else if (!S_ISREG(st.st_mode))
         set_verdict(res, VERDICT_UNREADABLE, "%s is not a regular file (%s)", name,
                     imgfile_kind_text(st.st_mode));
-    else if (stat(g->renders[k].reference, &ref) == 0 && ref.st_dev == st.st_dev &&
-             ref.st_ino == st.st_ino)
+    else if ((stat(g->renders[k].reference, &ref) == 0 && ref.st_dev == st.st_dev &&
+              ref.st_ino == st.st_ino) ||
+             (g->renders[k].shipped != NULL && stat(g->renders[k].shipped, &ref) == 0 && ref.st_dev == st.st_dev &&
+              ref.st_ino == st.st_ino))
         set_verdict(res, VERDICT_LINK, "%s is a hard link to the reference image", name);
     else
         compare_image(g, s, k, path);
@@ -281,8 +290,8 @@ static int plant_canary(const char *path, const struct stat *st, int type, struc
     for (int k = 0; type == FTW_F && S_ISREG(st->st_mode) && k < planting->render_count; k++) {
         const Render *r = &planting->renders[k];
         struct stat ref;
-        if (r->canary == NULL || stat(r->reference, &ref) != 0 || ref.st_size != st->st_size ||
-            !same_bytes(path, r->reference))
+        if (r->canary == NULL || stat(r->shipped, &ref) != 0 || ref.st_size != st->st_size ||
+            !same_bytes(path, r->shipped))
             continue;
         char *cp[] = {"cp", "-f", "--", r->canary, (char *)path, NULL};
         run_student(cp, NULL, NULL, 60, 0);

@@ -26,6 +26,7 @@ typedef struct {
     double scale;     /* the difference shown white in the heat map; 0: the largest found */
     bool quiet, help, machine; /* machine: figures as NAME VALUE lines, for tools/grade */
     bool cover; /* --cover: a pixel differs when A is drawn there and B is not */
+    StatStandard standard;     /* a Monte Carlo render's: "good" or "ok" (statdiff.h) */
 } DiffOptions;
 
 /* How two images of the same size differ. */
@@ -52,6 +53,7 @@ enum {
     OPT_DIFF_THUMB,
     OPT_SCALE,
     OPT_COVER,
+    OPT_STANDARD,
     OPT_QUIET,
     OPT_MACHINE,
     OPT_HELP
@@ -84,6 +86,11 @@ static const ToolOption options[] = {
      "judge coverage, not values: a pixel differs when A\nis drawn there and B is not (a pixel is "
      "drawn when\na channel is above T; the background is black)",
      NULL},
+    {"standard", 0, "NAME",
+     "against a statistical reference (a Monte Carlo render):\nthe course's soft shadow that "
+     "passes, good (stratified\nor correlated light samples) or ok (random points on\nthe "
+     "light)",
+     "good"},
     {"quiet", 'q', NULL, "print only the verdict", NULL},
     {"machine", 0, NULL,
      "print the figures as NAME VALUE lines instead, for\nprograms "
@@ -131,6 +138,12 @@ static bool set_option(void *state, int k, const char *value)
           : k == OPT_COVER ? &o->cover
                            : &o->machine) = true;
         return true;
+    }
+    if (k == OPT_STANDARD) {
+        if (statdiff_standard_from_name(value, &o->standard))
+            return true;
+        fprintf(stderr, "imgdiff: --standard takes good or ok, got '%s'\n", value);
+        return false;
     }
     if (k == OPT_DIFF || k == OPT_THUMB || k == OPT_DIFF_THUMB) {
         *(k == OPT_DIFF ? &o->diff_path : k == OPT_THUMB ? &o->thumb_path : &o->diff_thumb) = value;
@@ -399,7 +412,8 @@ int main(int argc, char **argv)
     /* A statistical reference of Monte Carlo renders: judged by statistics (statdiff.c). */
     if (kind[0] == IMGFILE_EXR && mcref_is(o.paths[0]))
         return statdiff_run(&(StatDiffRequest){o.paths[0], o.paths[1], kind[1], o.diff_path,
-                                               o.diff_thumb, o.thumb_path, o.quiet, o.machine});
+                                               o.diff_thumb, o.thumb_path, o.quiet, o.machine,
+                                               o.standard});
     Image img[2] = {{0}};
     Error err;
     int read = 0;

@@ -139,3 +139,167 @@ void montecarlo_point(const MonteCarlo *mc, Rng *rng, int i, int j, int k, doubl
     }
 }
 #endif
+
+#if defined VARIANT_xorshift || defined VARIANT_drand48
+#include "rng.h"
+double __wrap_rng_uniform(Rng *rng);
+
+/* Right, as a student may write it: every sample's numbers from a generator of one's own,
+ * xorshift64* or drand48's 48-bit linear congruence, seeded once from the sample's
+ * stream (its state hashed on the first draw, marked by an even inc). */
+double __wrap_rng_uniform(Rng *rng)
+{
+    if (rng->inc & 1) {
+        rng->state = rng_hash(rng->state ^ rng->inc) | 1;
+        rng->inc = 0;
+    }
+#ifdef VARIANT_xorshift
+    uint64_t x = rng->state;
+    x ^= x >> 12;
+    x ^= x << 25;
+    x ^= x >> 27;
+    rng->state = x;
+    return (double)((x * 0x2545f4914f6cdd1du) >> 11) / 9007199254740992.0;
+#else
+    rng->state = (0x5deece66du * rng->state + 0xb) & ((1ull << 48) - 1);
+    return (double)rng->state / 281474976710656.0;
+#endif
+}
+#endif
+
+#ifdef VARIANT_transposed
+void __wrap_strata_point(Sampling sampling, Rng *rng, int k, int n, double *u, double *v);
+
+/* Right: the strata counted column by column, not row by row: another order, as good. */
+void __wrap_strata_point(Sampling sampling, Rng *rng, int k, int n, double *u, double *v)
+{
+    double ru = rng_uniform(rng), rv = rng_uniform(rng);
+    *u = sampling == SAMPLING_RANDOM ? ru : (k / n + ru) / n;
+    *v = sampling == SAMPLING_RANDOM ? rv : (k % n + rv) / n;
+}
+#endif
+
+#ifdef VARIANT_shift
+void __wrap_strata_shuffle(Rng *rng, int *perm, int count);
+
+/* Right: the light's strata correlated with the pixel's by a random cyclic shift, not a
+ * random permutation: sub-pixel k takes light stratum (k + r) mod P^2. Unbiased, since
+ * each ray's light point is still uniform over the light. */
+void __wrap_strata_shuffle(Rng *rng, int *perm, int count)
+{
+    int r = (int)rng_below(rng, (uint32_t)count);
+    for (int k = 0; k < count; k++)
+        perm[k] = (k + r) % count;
+}
+#endif
+
+#ifdef VARIANT_random_light
+/* Right by the "ok" standard: every shadow ray to a uniform random point of the whole
+ * light, not stratified, not correlated with the pixel's strata. */
+void montecarlo_light_point(const MonteCarlo *mc, const Sample *sample, int q, double *ru,
+                            double *rv)
+{
+    (void)mc, (void)q;
+    *ru = rng_uniform(sample->rng);
+    *rv = rng_uniform(sample->rng);
+}
+#endif
+
+#if defined VARIANT_bright_2 || defined VARIANT_bright_1
+Color __real_montecarlo_pixel(const MonteCarlo *mc, int i, int j, RayStats *stats);
+Color __wrap_montecarlo_pixel(const MonteCarlo *mc, int i, int j, RayStats *stats);
+
+/* Wrong: every pixel 2 % (1 %) too bright, as a light's power slightly off would make it. */
+Color __wrap_montecarlo_pixel(const MonteCarlo *mc, int i, int j, RayStats *stats)
+{
+#ifdef VARIANT_bright_2
+    return color_scale(__real_montecarlo_pixel(mc, i, j, stats), 1.02);
+#else
+    return color_scale(__real_montecarlo_pixel(mc, i, j, stats), 1.01);
+#endif
+}
+#endif
+
+#ifdef VARIANT_denoise
+Color __real_montecarlo_pixel(const MonteCarlo *mc, int i, int j, RayStats *stats);
+Color __wrap_montecarlo_pixel(const MonteCarlo *mc, int i, int j, RayStats *stats);
+
+/* Wrong: a denoiser, the pixel averaged with its four neighbours' estimates (a cross of
+ * five pixels, clamped at the image's edges). */
+Color __wrap_montecarlo_pixel(const MonteCarlo *mc, int i, int j, RayStats *stats)
+{
+    int nx = mc->camera.nx, ny = mc->camera.ny;
+    int di[] = {0, 1, -1, 0, 0}, dj[] = {0, 0, 0, 1, -1};
+    Color sum = color(0, 0, 0);
+    for (int k = 0; k < 5; k++) {
+        int x = i + di[k] < 0 ? 0 : i + di[k] >= nx ? nx - 1 : i + di[k];
+        int y = j + dj[k] < 0 ? 0 : j + dj[k] >= ny ? ny - 1 : j + dj[k];
+        sum = color_add(sum, __real_montecarlo_pixel(mc, x, y, stats));
+    }
+    return color_scale(sum, 0.2);
+}
+#endif
+
+#ifdef VARIANT_checker
+Color __real_montecarlo_pixel(const MonteCarlo *mc, int i, int j, RayStats *stats);
+Color __wrap_montecarlo_pixel(const MonteCarlo *mc, int i, int j, RayStats *stats);
+
+/* Wrong where the references see no noise: the sky (where the camera ray through the
+ * pixel's centre meets nothing) 0.5 brighter in every other pixel, a checkerboard. */
+Color __wrap_montecarlo_pixel(const MonteCarlo *mc, int i, int j, RayStats *stats)
+{
+    Color c = __real_montecarlo_pixel(mc, i, j, stats);
+    Probe probe;
+    montecarlo_probe(mc, i, j, &probe);
+    if (!probe.hit && (i + j) % 2 == 0)
+        c = color_add(c, color(0.5, 0.5, 0.5));
+    return c;
+}
+#endif
+
+#ifdef VARIANT_more_samples
+bool __real_montecarlo_init(MonteCarlo *mc, const Scene *scene, Surfaces surfaces,
+                            const Options *opts);
+bool __wrap_montecarlo_init(MonteCarlo *mc, const Scene *scene, Surfaces surfaces,
+                            const Options *opts);
+
+/* Wrong: more samples than asked, four times as many: 2P x 2P rays a pixel, or at P = 1
+ * (one ray through the centre) 2S x 2S shadow rays. */
+bool __wrap_montecarlo_init(MonteCarlo *mc, const Scene *scene, Surfaces surfaces,
+                            const Options *opts)
+{
+    if (!__real_montecarlo_init(mc, scene, surfaces, opts))
+        return false;
+    if (mc->pixel_side == 1)
+        mc->light_side *= 2;
+    else
+        mc->pixel_side *= 2;
+    return true;
+}
+#endif
+
+#ifdef VARIANT_no_jitter
+/* Wrong: each of the P x P rays through the centre of its sub-square, not a random point
+ * of it: regular supersampling, which aliases. */
+void montecarlo_point(const MonteCarlo *mc, Rng *rng, int i, int j, int k, double *x, double *y)
+{
+    (void)rng;
+    int n = mc->pixel_side;
+    *x = i + (k % n + 0.5) / n;
+    *y = j + (k / n + 0.5) / n;
+}
+#endif
+
+#ifdef VARIANT_hard_shadow
+/* Wrong: each light sample at the centre of its stratum, not a random point of it: at
+ * S = 1, without correlation, the light's centre alone, a hard shadow. */
+void montecarlo_light_point(const MonteCarlo *mc, const Sample *sample, int q, double *ru,
+                            double *rv)
+{
+    int n = mc->light_side, stratum = q;
+    if (n == 1 && sample->strata_side > 1)
+        n = sample->strata_side, stratum = sample->stratum;
+    *ru = (stratum % n + 0.5) / n;
+    *rv = (stratum / n + 0.5) / n;
+}
+#endif
