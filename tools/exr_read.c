@@ -116,6 +116,8 @@ static bool read_attributes(FILE *f, ExrHeader *h, bool keep, Error *err)
 const unsigned char *exr_attribute(const ExrHeader *h, const char *name, const char *type,
                                    uint32_t *size)
 {
+    if (h->attributes == NULL)
+        return NULL;
     const unsigned char *at = h->attributes, *end = at + h->attributes_size;
     while (at < end) {
         const char *n = (const char *)at, *t = n + strlen(n) + 1;
