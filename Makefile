@@ -24,6 +24,8 @@
 #                    default out/gradescope-<part>.zip (docs/grading.md, section 7)
 #   make check-gradescope  that autograder, unpacked and run on a correct, a buggy and an
 #                    empty submission of part 1.3 (a few minutes)
+#   make check-debian11  build, unit tests and that autograder in a Debian 11 root, whose
+#                    OpenEXR 2.5 is Ubuntu 22.04's (as root; debootstrap; a few minutes)
 #
 # WERROR=1 turns warnings into errors; SANITIZE=1 builds and tests everything
 # with AddressSanitizer and UndefinedBehaviorSanitizer.
@@ -44,7 +46,8 @@ FUZZ_SECONDS ?= 1800
 .PHONY: all test demo check-demo check-chromium references docs check-docs check-slides check-figures check-layout check-course clean \
         check-robust check-fuzz-regressions check-bad-input check-interrupt check-nonfinite \
         check-course-render check-renders valgrind fuzz fuzz-run bench mistakes starter check-starter check-starters \
-        check-exercises check-statistics statistics-figure gradescope check-gradescope check-slurm
+        check-exercises check-statistics statistics-figure gradescope check-gradescope check-slurm \
+        check-debian11
 .NOTPARALLEL:
 
 all:
@@ -226,6 +229,10 @@ gradescope:
 check-gradescope:
 	@tools/deps.sh gradescope-test
 	@tests/gradescope.sh
+
+# OpenEXR 2 (Ubuntu 22.04, Gradescope's newest image) as well as 3: in a Debian 11 root.
+check-debian11:
+	@tests/debian11.sh
 
 # The figures of the statistical grading (docs/grading.md, chapter 1.6): z-score heat maps.
 statistics-figure:
