@@ -117,19 +117,27 @@ static void put_header(Bytes *b, int width, int height, const ExrPlane *planes,
     put_le(b, 0, 1);
 }
 
-/* The bytes of lines y0 to y1 - 1 as the format lays them out: each line, each channel in
- * turn (in the order of the header), its floats little-endian. */
-static void pack_lines(const ExrPlane *planes, const int *order, int count, int width, int y0,
-                       int y1, Bytes *raw)
+/* Stores the bytes of lines y0 to y1 - 1 in raw as the format lays them out: each line,
+ * each channel in turn (in the order of the header), its floats little-endian; returns
+ * how many. */
+static size_t pack_lines(const ExrPlane *planes, const int *order, int count, int width, int y0,
+                         int y1, unsigned char *raw)
 {
-    raw->size = 0;
+    unsigned char *at = raw;
     for (int y = y0; y < y1; y++)
         for (int c = 0; c < count; c++) {
             const ExrPlane *p = &planes[order[c]];
             const float *row = p->first + (long)y * width * p->step;
-            for (int x = 0; x < width; x++)
-                put_float(raw, row[(long)x * p->step]);
+            for (int x = 0; x < width; x++, at += 4) {
+                uint32_t bits;
+                memcpy(&bits, &row[(long)x * p->step], sizeof bits);
+                at[0] = (unsigned char)bits;
+                at[1] = (unsigned char)(bits >> 8);
+                at[2] = (unsigned char)(bits >> 16);
+                at[3] = (unsigned char)(bits >> 24);
+            }
         }
+    return (size_t)(at - raw);
 }
 
 /* ZIP's preparation of the bytes before deflate: the even bytes, then the odd ones (the
@@ -137,15 +145,13 @@ static void pack_lines(const ExrPlane *planes, const int *order, int count, int 
  * from the one before, plus 128. */
 static void zip_prepare(const unsigned char *raw, size_t n, unsigned char *out)
 {
-    unsigned char *even = out, *odd = out + (n + 1) / 2;
-    for (size_t k = 0; k < n; k++)
-        *(k % 2 == 0 ? even++ : odd++) = raw[k];
-    unsigned char before = out[0];
-    for (size_t k = 1; k < n; k++) {
-        unsigned char now = out[k];
-        out[k] = (unsigned char)(now - before + 128);
-        before = now;
-    }
+    size_t half = (n + 1) / 2;
+    for (size_t k = 0; k < half; k++)
+        out[k] = raw[2 * k];
+    for (size_t k = 0; k < n / 2; k++)
+        out[half + k] = raw[2 * k + 1];
+    for (size_t k = n - 1; k > 0; k--)
+        out[k] = (unsigned char)(out[k] - out[k - 1] + 128);
 }
 
 /* Writes n bytes at the stream's position; false (in err) on failure. */
@@ -163,12 +169,12 @@ static bool write_all(FILE *f, const void *bytes, size_t n, Error *err)
 static bool write_chunks(FILE *f, int width, int height, const ExrPlane *planes,
                          const int *order, int count, uint64_t *table, Error *err)
 {
-    Bytes raw = {0}, chunk = {0};
+    Bytes chunk = {0};
     size_t most = (size_t)count * 4 * (size_t)width * 16;
-    unsigned char *prepared = malloc(most);
+    unsigned char *raw = malloc(most), *prepared = malloc(most);
     uLongf bound = compressBound((uLong)most);
     unsigned char *deflated = malloc(bound);
-    bool ok = prepared != NULL && deflated != NULL;
+    bool ok = raw != NULL && prepared != NULL && deflated != NULL;
     if (!ok)
         error_set(err, "out of memory");
     for (int y = 0, k = 0; ok && y < height; y += 16, k++) {
@@ -178,18 +184,13 @@ static bool write_chunks(FILE *f, int width, int height, const ExrPlane *planes,
             ok = false;
             break;
         }
-        pack_lines(planes, order, count, width, y, y + 16 < height ? y + 16 : height, &raw);
-        if (raw.failed) {
-            error_set(err, "out of memory");
-            ok = false;
-            break;
-        }
-        zip_prepare(raw.data, raw.size, prepared);
+        size_t n = pack_lines(planes, order, count, width, y, y + 16 < height ? y + 16 : height, raw);
+        zip_prepare(raw, n, prepared);
         uLongf size = bound;
         const unsigned char *data = deflated;
-        if (compress(deflated, &size, prepared, (uLong)raw.size) != Z_OK || size >= raw.size) {
-            data = raw.data;
-            size = (uLongf)raw.size;
+        if (compress(deflated, &size, prepared, (uLong)n) != Z_OK || size >= n) {
+            data = raw;
+            size = (uLongf)n;
         }
         off_t at = ftello(f);
         table[k] = (uint64_t)at;
@@ -201,7 +202,7 @@ static bool write_chunks(FILE *f, int width, int height, const ExrPlane *planes,
         if (at < 0)
             error_set(err, "%s", strerror(errno));
     }
-    free(raw.data);
+    free(raw);
     free(chunk.data);
     free(prepared);
     free(deflated);

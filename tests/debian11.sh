@@ -5,7 +5,7 @@
 #
 # Makes a Debian 11 (bullseye) root with debootstrap, from Debian's packages, once: it is
 # kept in $RAYTRA_ROOTS (default /var/tmp/raytra-roots) under a name made of what decides
-# its packages (tools/deps.sh, tools/gradescope/setup.sh and this script), so that a later
+# its packages (tools/deps.sh, tools/gradescope/setup.sh and this script's $base), so that a later
 # run starts at once and a change to the packages makes a new root. Into it go `make`
 # (the README asks for it) and git (make gradescope packs the files git tracks), then
 # everything else as the README and setup.sh install it: by tools/deps.sh, run by make,
@@ -34,7 +34,10 @@ if ! command -v debootstrap >/dev/null 2>&1; then
 fi
 roots=${RAYTRA_ROOTS:-/var/tmp/raytra-roots}
 mirror=${DEBIAN_MIRROR:-http://deb.debian.org/debian}
-key=$(cat "$top/tools/deps.sh" "$top/tools/gradescope/setup.sh" "$0" | sha256sum | cut -c 1-12)
+# What the root gets before raytra's own scripts install the rest.
+base="bullseye minbase make git"
+key=$({ echo "$base"; cat "$top/tools/deps.sh" "$top/tools/gradescope/setup.sh"; } |
+    sha256sum | cut -c 1-12)
 root=$roots/bullseye-$key
 start=$(date +%s)
 mkdir -p "$roots" || exit 2
@@ -51,6 +54,7 @@ trap 'unmount' EXIT
 trap 'exit 130' INT TERM
 mount_root() { # ROOT
     mount --bind /dev "$1/dev" && mounted="$1/dev" &&
+        mount --bind /dev/pts "$1/dev/pts" && mounted="$1/dev/pts $mounted" &&
         mount -t proc proc "$1/proc" && mounted="$1/proc $mounted" &&
         cp /etc/resolv.conf "$1/etc/resolv.conf"
 }
@@ -67,8 +71,9 @@ if [ ! -f "$root/.raytra-root" ]; then
     debootstrap --variant=minbase bullseye "$root.new" "$mirror" >"$roots/debootstrap.log" 2>&1 ||
         { say "debootstrap failed (its log: $roots/debootstrap.log)"; exit 1; }
     mount_root "$root.new" || exit 1
-    in_root "$root.new" 'apt-get update -qq && apt-get install -y -qq --no-install-recommends make git >/dev/null' ||
-        { say "apt-get could not install make and git in the root"; exit 1; }
+    in_root "$root.new" 'apt-get update -qq && apt-get install -y -qq --no-install-recommends make git' \
+        >"$roots/apt.log" 2>&1 ||
+        { say "apt-get could not install make and git in the root (its log: $roots/apt.log)"; exit 1; }
     unmount
     echo "Debian 11 root for raytra's tests, key $key" >"$root.new/.raytra-root"
     rm -rf "$root" && mv "$root.new" "$root" || exit 2

@@ -295,9 +295,11 @@ static void unprepare(unsigned char *in, size_t n, unsigned char *out)
 {
     for (size_t k = 1; k < n; k++)
         in[k] = (unsigned char)(in[k - 1] + in[k] - 128);
-    const unsigned char *even = in, *odd = in + (n + 1) / 2;
-    for (size_t k = 0; k < n; k++)
-        out[k] = k % 2 == 0 ? *even++ : *odd++;
+    size_t half = (n + 1) / 2;
+    for (size_t k = 0; k < half; k++)
+        out[2 * k] = in[k];
+    for (size_t k = 0; k < n / 2; k++)
+        out[2 * k + 1] = in[half + k];
 }
 
 /* Turns the chunk's packed bytes (packed of them in in) into its n raw bytes in out;
@@ -334,18 +336,19 @@ static void scatter(const ExrHeader *h, const unsigned char *raw, long y, long l
             int bytes = ch->type == EXR_HALF ? 2 : 4;
             if (targets[c].first != NULL) {
                 float *out = targets[c].first + (line - h->y0) * h->width * targets[c].step;
-                for (long x = 0; x < n; x++, out += targets[c].step) {
-                    const unsigned char *p = raw + x * bytes;
-                    uint32_t bits = ch->type == EXR_HALF ? (uint32_t)(p[0] | p[1] << 8) : exr_le32(p);
-                    float v;
-                    if (ch->type == EXR_HALF)
-                        v = exr_half_to_float((uint16_t)bits);
-                    else if (ch->type == EXR_UINT)
-                        v = (float)bits;
-                    else
-                        memcpy(&v, &bits, sizeof v);
-                    *out = v;
-                }
+                int step = targets[c].step;
+                const unsigned char *p = raw;
+                if (ch->type == EXR_HALF)
+                    for (long x = 0; x < n; x++, p += 2)
+                        out[x * step] = exr_half_to_float((uint16_t)(p[0] | p[1] << 8));
+                else if (ch->type == EXR_UINT)
+                    for (long x = 0; x < n; x++, p += 4)
+                        out[x * step] = (float)exr_le32(p);
+                else
+                    for (long x = 0; x < n; x++, p += 4) {
+                        uint32_t bits = exr_le32(p);
+                        memcpy(&out[x * step], &bits, sizeof bits);
+                    }
             }
             raw += n * bytes;
         }

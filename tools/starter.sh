@@ -262,8 +262,10 @@ earlier="the parts in \`milestones/\` other than $part are complete."
     echo
     echo "\`make\` alone builds \`milestones/$part/raytra\`; run it as"
     echo "\`milestones/$part/raytra SCENE OUTPUT.png\` (\`--help\` lists its options)."
-    echo "Packages needed on Debian or Ubuntu: gcc, make, pkg-config, libpng-dev,"
-    echo "libopenexr-dev and check (\`tools/deps.sh test\` installs them when it may)."
+    echo "Packages needed on Debian or Ubuntu: gcc, libc6-dev, make, pkg-config, libpng-dev,"
+    echo "zlib1g-dev and check (\`tools/deps.sh test\` installs them when it may, or names"
+    echo "the command that does, with apt-get, dnf or brew). No OpenEXR: raytra writes and"
+    echo "reads its \`.exr\` files itself."
     echo
     echo "The functions to write:"
     echo
