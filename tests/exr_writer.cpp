@@ -349,6 +349,7 @@ int main(int argc, char **argv)
         write_plain("zip.exr", "RGB", HALF, ZIP_COMPRESSION, 8, 20, 0, 0);
         // RgbaOutputFile's layouts, as RgbaInputFile reads them.
         write_rgba("rgba.exr", WRITE_RGBA, 37, 23, 0, 0, ZIP_COMPRESSION);
+        write_rgba("rgba-decreasing.exr", WRITE_RGBA, 37, 40, 3, -7, ZIP_COMPRESSION, DECREASING_Y);
         write_rgba("yc.exr", WRITE_YC, 64, 48, 0, 0, ZIP_COMPRESSION);
         write_rgba("yca.exr", WRITE_YCA, 50, 34, -6, 4, PIZ_COMPRESSION, DECREASING_Y);
         Chromaticities rec2020(V2f(0.708f, 0.292f), V2f(0.170f, 0.797f), V2f(0.131f, 0.046f),
@@ -366,7 +367,7 @@ int main(int argc, char **argv)
         write_rgba("rgba-dwaa.exr", WRITE_RGBA, 37, 23, 0, 0, DWAA_COMPRESSION);
         write_rgba("yc-dwab.exr", WRITE_YC, 40, 30, 0, 0, DWAB_COMPRESSION);
         write_rgba("y-zips.exr", WRITE_Y, 21, 13, 0, 0, ZIPS_COMPRESSION);
-        for (const char *name : {"rgba.exr", "yc.exr", "yca.exr", "yc-rec2020.exr", "yc-tiny.exr",
+        for (const char *name : {"rgba.exr", "rgba-decreasing.exr", "yc.exr", "yca.exr", "yc-rec2020.exr", "yc-tiny.exr",
                                  "y.exr", "ya.exr", "rgba-pxr24.exr", "rgba-b44.exr",
                                  "yca-b44a.exr", "rgba-dwaa.exr", "yc-dwab.exr", "y-zips.exr"})
             expect_rgba_input(name);

@@ -307,12 +307,13 @@ static void assert_read_as_openexr(const char *const *names)
 
 START_TEST(exr_from_openexr_rgba_output_file)
 {
-    /* RgbaOutputFile's layouts: RGBA; luminance and chroma (the chroma sampled 2 x 2) with
+    /* RgbaOutputFile's layouts: RGBA, in increasing and decreasing line order; luminance and chroma (the chroma sampled 2 x 2) with
      * and without alpha, default and Rec. 2020 chromaticities, compressed or not, the data
      * window away from the origin, decreasing lines, 2 x 2 pixels; luminance alone and with
      * alpha. RgbaInputFile's chroma filter and saturation fix are reproduced exactly. */
-    assert_read_as_openexr((const char *const[]){"rgba.exr", "yc.exr", "yca.exr", "yc-rec2020.exr",
-                                                 "yc-tiny.exr", "y.exr", "ya.exr", NULL});
+    assert_read_as_openexr((const char *const[]){"rgba.exr", "rgba-decreasing.exr", "yc.exr",
+                                                 "yca.exr", "yc-rec2020.exr", "yc-tiny.exr",
+                                                 "y.exr", "ya.exr", NULL});
 }
 END_TEST
 
