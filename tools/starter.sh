@@ -220,6 +220,11 @@ sed "s/@PART@/$part/g" >"$tmp/Makefile" <<'EOF'
 # UndefinedBehaviorSanitizer.
 include common/build.mk
 
+# A function left to write leaves the static inline helpers it calls unused until it is
+# written, which clang warns of (gcc does not): the starter builds without a warning.
+CFLAGS += -Wno-unused-function
+export CFLAGS
+
 STARTER_PART := @PART@
 PART_DIR     := milestones/$(STARTER_PART)
 PART_PROGRAM := $(PART_DIR)/$(if $(filter 1,$(SANITIZE)),$(BUILD)/raytra,raytra)
