@@ -8,7 +8,8 @@
 
 TOP := $(abspath $(dir $(lastword $(MAKEFILE_LIST)))..)
 
-OPT ?= -O2 -g
+# clang writes DWARF 5 by default, which valgrind 3.19 (Debian 12's) cannot read: DWARF 4.
+OPT ?= -O2 -g $(if $(findstring clang,$(CC)),-gdwarf-4)
 
 WARNINGS := -Wall -Wextra -Wpedantic -Wshadow -Wstrict-prototypes \
             -Wmissing-prototypes
