@@ -32,6 +32,8 @@
 #   make check-contain  hostile submissions (chains of 1,500 processes, daemons, a fork
 #                    loop, planted links and FIFOs) graded by tools/grade and run_autograder:
 #                    none outlives its run (as root for all of it; about 5 minutes)
+#   make check-debian11  build, unit tests and that autograder in a Debian 11 root, whose
+#                    OpenEXR 2.5 is Ubuntu 22.04's (as root; debootstrap; a few minutes)
 #
 # WERROR=1 turns warnings into errors; SANITIZE=1 builds and tests everything
 # with AddressSanitizer and UndefinedBehaviorSanitizer.
@@ -53,7 +55,7 @@ FUZZ_SECONDS ?= 1800
         check-robust check-fuzz-regressions check-bad-input check-interrupt check-nonfinite \
         check-course-render check-renders valgrind fuzz fuzz-run bench mistakes starter check-starter check-starter-chapter check-starters \
         check-exercises check-statistics calibrate-statistics check-bvh-variants statistics-figure gradescope \
-        check-gradescope check-slurm check-contain
+        check-gradescope check-slurm check-contain check-debian11
 .NOTPARALLEL:
 
 all:
@@ -270,6 +272,10 @@ check-contain:
 	@tools/deps.sh gradescope-test
 	@$(SUBMAKE) -C tools grade SANITIZE=0
 	@tests/contain.sh tools/build/grade
+
+# OpenEXR 2 (Ubuntu 22.04, Gradescope's newest image) as well as 3: in a Debian 11 root.
+check-debian11:
+	@tests/debian11.sh
 
 # The figures of the statistical grading (docs/grading.md, chapter 1.6): z-score heat maps.
 statistics-figure:

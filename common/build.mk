@@ -8,7 +8,8 @@
 
 TOP := $(abspath $(dir $(lastword $(MAKEFILE_LIST)))..)
 
-OPT ?= -O2 -g
+# clang writes DWARF 5 by default, which valgrind 3.19 (Debian 12's) cannot read: DWARF 4.
+OPT ?= -O2 -g $(if $(findstring clang,$(CC)),-gdwarf-4)
 
 WARNINGS := -Wall -Wextra -Wpedantic -Wshadow -Wstrict-prototypes \
             -Wmissing-prototypes
@@ -30,12 +31,18 @@ endif
 lazy = $(eval $1 := $$(shell $2))$($1)
 PNG_CFLAGS   = $(call lazy,PNG_CFLAGS,pkg-config --cflags libpng 2>/dev/null)
 PNG_LIBS     = $(call lazy,PNG_LIBS,pkg-config --libs libpng 2>/dev/null || echo -lpng -lz)
-# OpenEXR's pkg-config module names its C++ libraries too; raytra needs only the C core.
+# raytra writes OpenEXR itself, on zlib (docs/architecture.md); the tools read what their own
+# reader does not through OpenEXR's C interface to RGBA files (exr_rgba.c), the same in
+# OpenEXR 2 and 3. A student's starter has exr_rgba_none.c instead, and needs no OpenEXR.
+ZLIB_CFLAGS  = $(call lazy,ZLIB_CFLAGS,pkg-config --cflags zlib 2>/dev/null)
+ZLIB_LIBS    = $(call lazy,ZLIB_LIBS,pkg-config --libs zlib 2>/dev/null || echo -lz)
+EXR_RGBA    := $(if $(wildcard $(TOP)/tools/exr_rgba.c),exr_rgba,exr_rgba_none)
 EXR_CFLAGS   = $(call lazy,EXR_CFLAGS,pkg-config --cflags OpenEXR 2>/dev/null || echo -I/usr/include/OpenEXR)
-EXR_ALL_LIBS = $(call lazy,EXR_ALL_LIBS,pkg-config --libs OpenEXR 2>/dev/null)
-EXR_LIBS     = $(or $(filter -L% -lOpenEXRCore%,$(EXR_ALL_LIBS)),-lOpenEXRCore-3_1)
-# What a program that links libraytra.a links for its image files.
-IMAGE_LIBS   = $(PNG_LIBS) $(EXR_LIBS)
+EXR_LIBS     = $(if $(filter exr_rgba,$(EXR_RGBA)),$(call lazy,EXR_LIBS,pkg-config --libs OpenEXR 2>/dev/null || echo -lOpenEXR))
+# What a program that links libraytra.a links for its image files; a tool that reads them
+# links TOOL_IMAGE_LIBS.
+IMAGE_LIBS   = $(PNG_LIBS) $(ZLIB_LIBS)
+TOOL_IMAGE_LIBS = $(IMAGE_LIBS) $(EXR_LIBS)
 CHECK_CFLAGS = $(call lazy,CHECK_CFLAGS,pkg-config --cflags check 2>/dev/null)
 CHECK_LIBS   = $(call lazy,CHECK_LIBS,pkg-config --libs check 2>/dev/null || echo -lcheck -lsubunit -lm)
 

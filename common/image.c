@@ -9,12 +9,6 @@
 
 #include "outfile.h"
 
-/* The eight bytes every PNG file starts with. */
-static const unsigned char magic_png[8] = {137, 'P', 'N', 'G', '\r', '\n', 26, '\n'};
-
-/* The four bytes every OpenEXR file starts with (20000630 as a little-endian integer). */
-static const unsigned char magic_exr[4] = {0x76, 0x2f, 0x31, 0x01};
-
 /* Makes img a black width x height image; false (img empty) when too large or no memory. */
 bool image_init(Image *img, int width, int height)
 {
@@ -109,33 +103,4 @@ bool image_write(const Image *img, const char *path, PngEncoding encoding, Error
         return false;
     }
     return outfile_commit(&out, err);
-}
-
-/* Reads the image at path, PNG, PFM or OpenEXR as its first bytes tell (not its name), into img,
- * which is overwritten; on failure img is left empty. */
-bool image_read(Image *img, const char *path, Error *err)
-{
-    *img = (Image){0};
-    FILE *f = fopen(path, "rb");
-    if (f == NULL) {
-        error_set(err, "%s", strerror(errno));
-        return false;
-    }
-    unsigned char magic[8];
-    size_t n = fread(magic, 1, sizeof magic, f);
-    int read_errno = errno;
-    bool failed = ferror(f);
-    fclose(f);
-    if (failed) {
-        error_set(err, "%s", strerror(read_errno));
-        return false;
-    }
-    if (n == sizeof magic && memcmp(magic, magic_png, sizeof magic) == 0)
-        return image_read_png(img, path, err);
-    if (n >= 2 && magic[0] == 'P' && (magic[1] == 'F' || magic[1] == 'f'))
-        return image_read_pfm(img, path, err);
-    if (n >= sizeof magic_exr && memcmp(magic, magic_exr, sizeof magic_exr) == 0)
-        return image_read_exr(img, path, err);
-    error_set(err, n == 0 ? "empty file" : "not a PNG, PFM or OpenEXR image");
-    return false;
 }

@@ -1,6 +1,7 @@
 // exr_writer.cpp: writes OpenEXR test files with OpenEXR's own C++ API, and what it reads.
 //
 // Usage: exr_writer FOLDER
+//        exr_writer --floats FILE.exr   write FILE.rgba: what InputFile reads of R, G and B
 //
 // Writes into FOLDER the files tests/test_image_exr.c reads with raytra's reader: the
 // layouts other tools write (RgbaOutputFile's RGBA, luminance/chroma, luminance alone;
@@ -24,7 +25,9 @@
 #include <ImfPartType.h>
 #include <ImfRgbaFile.h>
 #include <ImfStandardAttributes.h>
+#include <ImfTiledOutputFile.h>
 #include <ImfTiledRgbaFile.h>
+#include <half.h>
 
 #include <cmath>
 #include <cstdint>
@@ -260,17 +263,93 @@ static void write_deep(const std::string &name)
     out.writePixels(h);
 }
 
+// The value of channel c at pixel (x, y) of the data window in write_plain's files.
+static float value(char c, int x, int y)
+{
+    switch (c) {
+    case 'R': return x * 0.25f;
+    case 'G': return y * 0.5f;
+    case 'B': return 0.1f;
+    case 'Y': return 0.75f + x;
+    default: return 0.5f; // A, and any other
+    }
+}
+
+// Writes a w x h file of the channels named by the letters of names, of the given type and
+// compression, its data window starting at (x0, y0), in scanlines or, when tile > 0, in
+// tiles of tile x tile pixels; the samples are value()'s, converted by the library.
+static void write_plain(const std::string &name, const std::string &names, PixelType type,
+                        Compression compression, int w, int h, int x0, int y0, int tile = 0)
+{
+    Box2i dw(V2i(x0, y0), V2i(x0 + w - 1, y0 + h - 1));
+    Header header(dw, dw, 1, V2f(0, 0), 1, INCREASING_Y, compression);
+    if (tile > 0)
+        header.setTileDescription(TileDescription(tile, tile, ONE_LEVEL));
+    // The samples in the channel's own type: the library converts when it reads, not
+    // when it writes.
+    size_t size = type == HALF ? 2 : 4;
+    std::vector<char> planes(names.size() * w * h * size);
+    FrameBuffer fb;
+    for (size_t k = 0; k < names.size(); k++) {
+        char *plane = planes.data() + k * w * h * size;
+        for (int y = 0; y < h; y++)
+            for (int x = 0; x < w; x++) {
+                float v = value(names[k], x, y);
+                half hv(v);
+                std::memcpy(plane + ((size_t)y * w + x) * size, type == HALF ? (void *)&hv : &v,
+                            size);
+            }
+        std::string channel(1, names[k]);
+        header.channels().insert(channel, Channel(type));
+        fb.insert(channel, Slice(type, plane - (x0 + (long)y0 * w) * (long)size, size, size * w));
+    }
+    if (tile > 0) {
+        TiledOutputFile out(path(name).c_str(), header);
+        out.setFrameBuffer(fb);
+        out.writeTiles(0, out.numXTiles() - 1, 0, out.numYTiles() - 1);
+    } else {
+        OutputFile out(path(name).c_str(), header);
+        out.setFrameBuffer(fb);
+        out.writePixels(h);
+    }
+}
+
 // Writes every test file.
 int main(int argc, char **argv)
 {
+    if (argc == 3 && std::strcmp(argv[1], "--floats") == 0) {
+        folder = ".";
+        try {
+            expect_channels(argv[2]);
+        } catch (const std::exception &e) {
+            std::fprintf(stderr, "exr_writer: %s\n", e.what());
+            return 1;
+        }
+        return 0;
+    }
     if (argc != 2) {
-        std::fprintf(stderr, "usage: %s FOLDER\n", argv[0]);
+        std::fprintf(stderr, "usage: %s FOLDER | --floats FILE.exr\n", argv[0]);
         return 2;
     }
     folder = argv[1];
     try {
+        // Plain layouts, scanline and tiled, half and float (value()'s samples): 40 rows in
+        // chunks of 16, the last one short; partial tiles at the right and the bottom.
+        write_plain("half.exr", "RGBA", HALF, ZIP_COMPRESSION, 9, 40, 0, 0);
+        write_plain("piz.exr", "BGR", HALF, PIZ_COMPRESSION, 33, 70, 0, 0);
+        write_plain("float.exr", "RGB", FLOAT, NO_COMPRESSION, 5, 3, -2, 10);
+        write_plain("rle.exr", "RGB", FLOAT, RLE_COMPRESSION, 7, 70, 3, 1);
+        write_plain("zips.exr", "RGB", HALF, ZIPS_COMPRESSION, 6, 5, 0, 0);
+        write_plain("tiled.exr", "RGB", HALF, ZIP_COMPRESSION, 37, 21, 0, 0, 16);
+        write_plain("tiled-offset.exr", "BGRA", FLOAT, PIZ_COMPRESSION, 37, 21, 5, -3, 16);
+        write_plain("grey.exr", "Y", HALF, ZIP_COMPRESSION, 4, 2, 0, 0);
+        write_plain("alpha.exr", "A", HALF, ZIP_COMPRESSION, 2, 2, 0, 0);
+        write_plain("escape.exr", "\033", HALF, ZIP_COMPRESSION, 2, 2, 0, 0);
+        write_plain("none.exr", "RGB", FLOAT, NO_COMPRESSION, 5, 3, 0, 0);
+        write_plain("zip.exr", "RGB", HALF, ZIP_COMPRESSION, 8, 20, 0, 0);
         // RgbaOutputFile's layouts, as RgbaInputFile reads them.
         write_rgba("rgba.exr", WRITE_RGBA, 37, 23, 0, 0, ZIP_COMPRESSION);
+        write_rgba("rgba-decreasing.exr", WRITE_RGBA, 37, 40, 3, -7, ZIP_COMPRESSION, DECREASING_Y);
         write_rgba("yc.exr", WRITE_YC, 64, 48, 0, 0, ZIP_COMPRESSION);
         write_rgba("yca.exr", WRITE_YCA, 50, 34, -6, 4, PIZ_COMPRESSION, DECREASING_Y);
         Chromaticities rec2020(V2f(0.708f, 0.292f), V2f(0.170f, 0.797f), V2f(0.131f, 0.046f),
@@ -288,7 +367,7 @@ int main(int argc, char **argv)
         write_rgba("rgba-dwaa.exr", WRITE_RGBA, 37, 23, 0, 0, DWAA_COMPRESSION);
         write_rgba("yc-dwab.exr", WRITE_YC, 40, 30, 0, 0, DWAB_COMPRESSION);
         write_rgba("y-zips.exr", WRITE_Y, 21, 13, 0, 0, ZIPS_COMPRESSION);
-        for (const char *name : {"rgba.exr", "yc.exr", "yca.exr", "yc-rec2020.exr", "yc-tiny.exr",
+        for (const char *name : {"rgba.exr", "rgba-decreasing.exr", "yc.exr", "yca.exr", "yc-rec2020.exr", "yc-tiny.exr",
                                  "y.exr", "ya.exr", "rgba-pxr24.exr", "rgba-b44.exr",
                                  "yca-b44a.exr", "rgba-dwaa.exr", "yc-dwab.exr", "y-zips.exr"})
             expect_rgba_input(name);
@@ -317,14 +396,15 @@ int main(int argc, char **argv)
             comment += "A comment that makes the header long, as some tools write one. ";
         write_channels("many.exr", many, 40, 24, 0, 0, ZIP_COMPRESSION, comment);
         expect_rgba_input("many.exr");
-        // R, G and B with a Y: raytra reads R, G and B.
-        write_channels("rgby.exr",
-                       {{"R", FLOAT, 1, 1, {}},
-                        {"G", FLOAT, 1, 1, {}},
-                        {"B", FLOAT, 1, 1, {}},
-                        {"Y", FLOAT, 1, 1, {}}},
-                       13, 11, 0, 0, PIZ_COMPRESSION);
+        // R, G and B with a Y: raytra reads R, G and B; compressed with PIZ it is refused
+        // (OpenEXR's RGBA interface, which decodes PIZ for raytra, would read Y as grey).
+        std::vector<Channel_> rgby = {{"R", FLOAT, 1, 1, {}},
+                                      {"G", FLOAT, 1, 1, {}},
+                                      {"B", FLOAT, 1, 1, {}},
+                                      {"Y", FLOAT, 1, 1, {}}};
+        write_channels("rgby.exr", rgby, 13, 11, 0, 0, ZIP_COMPRESSION);
         expect_channels("rgby.exr");
+        write_channels("rgby-piz.exr", rgby, 13, 11, 0, 0, PIZ_COMPRESSION);
         // R, G and B with subsampled channels raytra does not read, uncompressed (chunks of
         // one line, some without the subsampled ones) and compressed.
         std::vector<Channel_> sub = {{"B", HALF, 1, 1, {}},  {"BY", HALF, 2, 2, {}},

@@ -1,8 +1,10 @@
 #!/bin/sh
 # gradescope.sh: tests part 1.3's Gradescope autograder, run as Gradescope runs it, field by field.
 #
-# Usage: tests/gradescope.sh   (make check-gradescope; needs zip, unzip and jq, which
-#        tools/deps.sh gradescope-test installs)
+# Usage: tests/gradescope.sh [SUBMISSION...]   (make check-gradescope; needs zip, unzip
+#        and jq, which tools/deps.sh gradescope-test installs)
+#   SUBMISSION  run only these of correct, buggy, empty, unbuilt, none, hostile, cut-short
+#               (tests/debian11.sh runs correct and buggy); by default every one
 #
 # In a temporary folder: `make gradescope PART=1.3` writes the zip, which is checked (the
 # scripts at its root, tracked files only, no part's model answer, no build output) and
@@ -36,6 +38,11 @@ root=$tmp/root
 part=1.3-shadows-mirror
 
 . "$top/tests/checks.sh"
+# Tells whether submission $1 is to be run.
+want() {
+    [ -z "$wanted" ] || case " $wanted " in *" $1 "*) true ;; *) false ;; esac
+}
+wanted=$*
 # Prints what jq's filter $1 gives for the results of the last run, compact.
 field() {
     jq -c "$1" "$root/results/results.json"
@@ -145,6 +152,7 @@ printf 'uid %s; bytes \001\033[31m\377 "q" \\ ]]>\n' "$(id -u)"
 kill -SEGV $$
 EOF
 
+if want correct; then
 echo "== correct: part 1.3's solution"
 start=$(date +%s)
 autograde "$correct"
@@ -158,7 +166,9 @@ check "a correct scene is not identical" test "$(field '[.tests[].output |
     startswith("PASS: identical to the reference.")] | all')" = true
 budget=$(sed -n 's/^BUDGET=//p' "$root/source/gradescope.conf")
 echo "gradescope.sh: the correct submission took $seconds s to grade (budget: $budget s)"
+fi
 
+if want buggy; then
 echo "== buggy: a sign flipped in secondary_reflect"
 autograde "$buggy"
 check_results 5 "progression-4-mirror mirrors-facing demo" FAIL
@@ -167,24 +177,32 @@ check "a failure says no box, what to do or the command" test "$(field '[.tests[
     test("\nWhat to do: .*out/check/[a-z0-9-]+\\.heat\\.png") and
     test("\nCommand \\(from the top of the folder\\): ./raytra scenes/[a-z0-9-]+\\.scn " +
         "[a-z0-9-]+\\.png\n")] | all')" = true
+fi
 
+if want empty; then
 echo "== empty"
 autograde "$tmp/empty"
 check_results 0 "$every" MISSING
 check "the summary does not say the folder has no Makefile" \
     test "$(field '.output | test("no Makefile at its top")')" = true
+fi
 
+if want unbuilt; then
 echo "== unbuilt: make fails"
 autograde "$tmp/unbuilt"
 check_results 0 "$every" "BUILD FAILED"
 check "the summary does not say that the build failed, with make's output" test "$(field '.output |
     test("The build failed: make failed ") and
     test("\nThe end of make.s output:\n(.*\n)*main.c:1: error: no main")')" = true
+fi
 
+if want none; then
 echo "== no submission folder at all"
 autograde ""
 check "no folder: the score is not 0" test "$(field .score)" = 0
+fi
 
+if want hostile; then
 echo "== hostile: prints control characters and invalid UTF-8, then crashes"
 autograde "$hostile"
 check_results 0 "$every" CRASHED
@@ -196,13 +214,16 @@ if [ "$(id -u)" -eq 0 ]; then
     check "the program did not run as uid $student_uid" test "$(field '.tests[0].output |
         test("uid '"$student_uid"';")')" = true
 fi
+fi
 
+if want cut-short; then
 echo "== cut short: the correct one, with a time budget of 5 s"
 autograde "$correct" AUTOGRADER_TIME_BUDGET=5
 check "cut short: the score is not 0" test "$(field .score)" = 0
 check "cut short: the output does not say why" \
     test "$(field '.output | test("did not finish within 5 s")')" = true
 check "cut short: tests were given" test "$(field '.tests')" = '[]'
+fi
 
 # The instructor's controls: a zip with a grading.conf (points, visibilities, the part's
 # total) and hidden scenes of the instructor's own, their references rendered into the zip.

@@ -7,6 +7,7 @@
 
 #include "app.h"
 #include "image.h"
+#include "image_read.h"
 #include "testing.h"
 
 /* Grey everywhere but pixel (1, 1) (column 1, row 1 from the bottom), which is NaN. */

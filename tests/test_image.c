@@ -5,6 +5,7 @@
 #include <string.h>
 
 #include "image.h"
+#include "image_read.h"
 #include "stop.h"
 #include "testing.h"
 

@@ -698,8 +698,8 @@ START_TEST(an_obj_file_given_as_a_scene)
     /* One message, and nothing else: neither the comments and statements before the first
      * v line, nor what follows it (an OBJ's s, l and o lines are no scene commands). */
     const char *objs[] = {"# an OBJ\nv 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n",
-                          "# Blender\nmtllib m.mtl\no Cube\nv 0 0 0\nv 1 0 0\nv 0 1 0\n"
-                          "vn 0 0 1\nusemtl M\ns off\nf 1//1 2//1 3//1\nl 1 2\n# end\n",
+                          ("# Blender\nmtllib m.mtl\no Cube\nv 0 0 0\nv 1 0 0\nv 0 1 0\n"
+                           "vn 0 0 1\nusemtl M\ns off\nf 1//1 2//1 3//1\nl 1 2\n# end\n"),
                           "f 1 2 3\nv 0 0 0\n"};
     for (size_t k = 0; k < sizeof objs / sizeof *objs; k++) {
         Loaded l = load(objs[k]);

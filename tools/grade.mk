@@ -21,8 +21,8 @@ GRADE_PART    := $(TOP)/milestones/1.1-spheres-red
 grade: $(GRADE) $(IMGDIFF)
 	@:
 
-$(GRADE): $(GRADE_OBJECTS) $(COMMON_LIB)
-	$(CC) $(ALL_LDFLAGS) -o $@ $^ $(IMAGE_LIBS) -lm
+$(GRADE): $(GRADE_OBJECTS) $(IMAGE_READER) $(COMMON_LIB)
+	$(CC) $(ALL_LDFLAGS) -o $@ $^ $(TOOL_IMAGE_LIBS) -lm
 
 # The script makes its class of submissions in a temporary folder; every part's program is
 # also graded as a student's, against its own references.

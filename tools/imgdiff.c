@@ -7,6 +7,7 @@
 #include <unistd.h>
 
 #include "image.h"
+#include "image_read.h"
 #include "imgdiff.h"
 #include "imgfile.h"
 #include "imgmap.h"

@@ -10,6 +10,7 @@
 #include <unistd.h>
 
 #include "image.h"
+#include "image_read.h"
 
 /* The first bytes read: a PNG's IHDR is at byte 16, a PFM's size within them. An EXR's
  * header, of any length, is parsed by the OpenEXR library. */

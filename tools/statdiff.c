@@ -7,6 +7,7 @@
 #include <string.h>
 
 #include "image.h"
+#include "image_read.h"
 #include "imgmap.h"
 #include "mcref.h"
 

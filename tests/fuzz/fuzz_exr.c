@@ -4,6 +4,7 @@
 
 #include "fuzz.h"
 #include "image.h"
+#include "image_read.h"
 
 /* Nothing to prepare: the reader reads from memory. */
 int LLVMFuzzerInitialize(int *argc, char ***argv)

@@ -19,7 +19,7 @@ static void render(const char *name, const char *output, Image *img)
     snprintf(command, sizeof command, "'%s' -q '%s/scenes/%s' %s", RAYTRA, TOP_DIR, name, output);
     ck_assert_int_eq(system(command), 0);
     Error err;
-    ck_assert_msg(image_read(img, output, &err), "%s", err.text);
+    ck_assert_msg(image_read_pfm(img, output, &err), "%s", err.text);
 }
 
 START_TEST(every_pixel_is_kd_I_cos_theta)

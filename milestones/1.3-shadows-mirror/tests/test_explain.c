@@ -74,7 +74,7 @@ static Color view_centre(const char *name)
     ck_assert_int_eq(status, 0);
     Image img;
     Error err;
-    ck_assert_msg(image_read(&img, "view.pfm", &err), "%s", err.text);
+    ck_assert_msg(image_read_pfm(&img, "view.pfm", &err), "%s", err.text);
     Color c = image_get(&img, 1, 1);
     ck_assert_color_near(image_get(&img, 0, 0), color(0, 0, 0), 0);
     image_free(&img);

@@ -14,7 +14,7 @@ static void render(const char *path, const char *options, Image *img)
     snprintf(command, sizeof command, "'%s' -q %s '%s' out.pfm", RAYTRA, options, path);
     ck_assert_int_eq(system(command), 0);
     Error err;
-    ck_assert_msg(image_read(img, "out.pfm", &err), "%s", err.text);
+    ck_assert_msg(image_read_pfm(img, "out.pfm", &err), "%s", err.text);
 }
 
 /* Returns the distance from c to the part of the line p + s l with s > 0: the shadow

@@ -34,7 +34,7 @@ static void render(bool with_glass, bool lit, const char *options, Image *img)
     snprintf(command, sizeof command, "'%s' -q %s invisible.scn out.pfm", RAYTRA, options);
     ck_assert_int_eq(system(command), 0);
     Error err;
-    ck_assert_msg(image_read(img, "out.pfm", &err), "%s", err.text);
+    ck_assert_msg(image_read_pfm(img, "out.pfm", &err), "%s", err.text);
 }
 
 /* Returns the largest difference between the colours of pixel (i, row) of a and b. */

@@ -133,7 +133,7 @@ START_TEST(the_samples_traced_alone_make_the_pixel)
         ck_assert_int_eq(status, 0);
         Image img;
         Error err;
-        ck_assert_msg(image_read(&img, "out.pfm", &err), "%s", err.text);
+        ck_assert_msg(image_read_pfm(&img, "out.pfm", &err), "%s", err.text);
         ck_assert_color_near(image_get(&img, 13, 21), mean, 1e-6);
         image_free(&img);
     }

@@ -13,7 +13,7 @@ static void render(const char *path, const char *arguments, Image *img)
     snprintf(command, sizeof command, "'%s' -q '%s' out.pfm %s", RAYTRA, path, arguments);
     ck_assert_int_eq(system(command), 0);
     Error err;
-    ck_assert_msg(image_read(img, "out.pfm", &err), "%s", err.text);
+    ck_assert_msg(image_read_pfm(img, "out.pfm", &err), "%s", err.text);
 }
 
 /* The edge of the anti-aliasing test, in pixel coordinates: y = a + b x. */
