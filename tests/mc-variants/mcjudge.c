@@ -7,6 +7,7 @@
 #include <unistd.h>
 
 #include "image.h"
+#include "image_read.h"
 #include "mcref.h"
 #include "statdiff.h"
 
