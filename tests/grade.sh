@@ -486,10 +486,10 @@ checks=$((checks + 1))
 "$grade" -q --out mc-out 1.6 mc-copies >stdout.txt 2>stderr.txt
 [ $? -le 1 ] || fail "grade 1.6 on copies failed: $(cat stderr.txt)"
 check "copies of part 1.6's shipped images pass, flagged" \
-    test "$(grep -c '^copier,[a-z0-9-]*,PASS,.*,copy$' mc-out/grades.csv)" -eq 4
+    test "$(grep -c '^copier,[a-z0-9-]*,PASS,.*,copy,[0-9.]*$' mc-out/grades.csv)" -eq 4
 check "a copy of a statistical reference fails, flagged" \
-    grep -q '^copier,demo,FAIL,.*smooth: too little noise.*,copy$' mc-out/grades.csv
-check "a hard link to a shipped image" grep -q '^copier,soft-shadow-1-1,\(LINK\|PASS,.*,copy$\)' mc-out/grades.csv
+    grep -q '^copier,demo,FAIL,.*smooth: too little noise.*,copy,[0-9.]*$' mc-out/grades.csv
+check "a hard link to a shipped image" grep -q '^copier,soft-shadow-1-1,\(LINK\|PASS,.*,copy,[0-9.]*$\)' mc-out/grades.csv
 
 # Each part's own raytra, handed in as a student's program, passes every graded scene of
 # its part; the illustrations (!IMAGE in renders.txt) are not graded, and say so. A part

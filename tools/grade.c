@@ -74,6 +74,7 @@ static const GradeOption options[] = {
     {{"help", 'h', NULL, "show this help and exit", NULL}, OPT_FLAG, offsetof(Grading, help)},
 };
 enum { OPTION_COUNT = sizeof options / sizeof options[0] };
+_Static_assert(OPTION_COUNT <= TOOLOPT_MAX, "toolopt parses at most TOOLOPT_MAX options");
 
 /* Prints the usage and the options. */
 static void print_help(void)
