@@ -66,6 +66,7 @@ typedef struct {
     double points;        /* what passing it is worth (grading.conf; 1 by default) */
     const char *visibility; /* Gradescope's: visible, hidden, after_due_date, after_published */
     bool hidden;          /* an instructor's own scene (--hidden), shipped in no starter */
+    bool statistical;     /* a Monte Carlo render (~IMAGE), judged by its statistics */
     char *shipped;        /* the image the references folder ships for it: its reference, or
                            * beside a Monte Carlo render's statistics raytra's own render;
                            * NULL for a hidden scene */

@@ -158,7 +158,8 @@ static bool add_render(Grading *g, char **words, int n, const char *where, const
             return grade_fail("%s: a scene named %.*s is graded already", where, stem, image);
     Render *r = &g->renders[g->render_count++];
     *r = (Render){.image = grade_format("%s", image), .scene = grade_format("%s", words[1]),
-                  .points = 1, .visibility = "visible", .hidden = references == NULL};
+                  .points = 1, .visibility = "visible", .hidden = references == NULL,
+                  .statistical = statistical};
     r->name = grade_format("%.*s", stem, image);
     r->reference = r->hidden              ? NULL
                    : statistical          ? grade_format("%s/%.*s.stats.exr", references, stem, image)

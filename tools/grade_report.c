@@ -114,12 +114,6 @@ static void put_picture(FILE *f, const char *path)
         fclose(in);
 }
 
-/* Tells whether render r is a Monte Carlo render, judged by statistics (~IMAGE). */
-static bool statistical(const Render *r)
-{
-    size_t n = strlen(r->reference), end = strlen(".stats.exr");
-    return n > end && strcmp(r->reference + n - end, ".stats.exr") == 0;
-}
 
 /* Writes the page's head, with a style rule a reference picture, each embedded once and
  * shown as a background beside every submission's image; the title block; and the
@@ -128,7 +122,7 @@ static void write_heading(FILE *f, const Grading *g)
 {
     int passed = 0, w, h, monte_carlo = 0;
     for (int k = 0; k < g->render_count; k++)
-        monte_carlo += statistical(&g->renders[k]);
+        monte_carlo += g->renders[k].statistical;
     fprintf(f, "<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n"
                "<meta name=\"viewport\" content=\"width=device-width, initial-scale=1\">\n"
                "<title>%s: grading report</title>\n<style>\n%s", html(g->part), style);
@@ -324,7 +318,7 @@ static void write_html(FILE *f, const Grading *g)
                 fprintf(f, "<p class=\"file\">Command <code>%s</code></p>\n",
                         html(report_command(s, res)));
             if (res->compared || res->relative_width > 0)
-                write_pictures(f, res, k, statistical(r));
+                write_pictures(f, res, k, r->statistical);
             write_log(f, "Program output (the last lines)",
                       res->command != NULL && res->log_tail == NULL ? "(nothing)" : res->log_tail,
                       verdict_info[res->verdict].tally == TALLY_ERROR);

@@ -195,7 +195,7 @@ static bool get_submission(Reader *r, const Grading *g, Submission *s, const cha
     for (int k = 0; k < g->render_count && !r->bad; k++) {
         SceneResult *x = &s->results[k];
         Figures *f = &x->figures;
-        if (!next_line(r) || !line_is(r, "scene", 26))
+        if (!next_line(r) || !line_is(r, "scene", 32))
             return grade_fail("%s:%d: expected scene %d of %s", r->path, r->line, k + 1, s->name);
         double v = get_number(r, 1);
         r->bad |= !(v >= 0 && v < VERDICT_COUNT) || s->work == NULL;
@@ -286,7 +286,7 @@ static void put_heading(FILE *f, const Grading *g)
                               ? grade_format("%s>%s", print, fingerprint(r->mask))
                           : r->judge == JUDGE_SAME_AS ? grade_format("%s=%d", print, r->same_as)
                                                       : print);
-        fprintf(f, " %a %d", r->points, r->hidden);
+        fprintf(f, " %a %d %d", r->points, r->hidden, r->statistical);
         shard_put_text(f, r->visibility);
         for (char **a = r->argv + RENDER_WORDS; *a != NULL; a++)
             shard_put_text(f, *a);
@@ -348,15 +348,15 @@ static bool get_heading(Reader *r, Grading *g, const char *work)
         else if (line == 6 && line_is(r, "renders", 1) && (renders = (int)get_number(r, 1)) > 0 &&
                  renders < 100000)
             g->renders = grade_alloc((size_t)renders * sizeof *g->renders);
-        else if (line > 6 && line <= 6 + renders && r->count >= 8 &&
+        else if (line > 6 && line <= 6 + renders && r->count >= 9 &&
                  line_is(r, "render", r->count - 1)) {
             Render *x = &g->renders[g->render_count++];
             *x = (Render){.image = get_word(r, 1), .name = get_word(r, 2), .scene = get_word(r, 3),
                           .points = get_number(r, 5), .hidden = get_number(r, 6) != 0,
-                          .visibility = get_word(r, 7)};
-            x->argv = grade_alloc((size_t)(r->count - 8 + RENDER_WORDS + 1) * sizeof *x->argv);
-            for (int k = 8; k < r->count; k++)
-                x->argv[RENDER_WORDS + k - 8] = get_word(r, k);
+                          .statistical = get_number(r, 7) != 0, .visibility = get_word(r, 8)};
+            x->argv = grade_alloc((size_t)(r->count - 9 + RENDER_WORDS + 1) * sizeof *x->argv);
+            for (int k = 9; k < r->count; k++)
+                x->argv[RENDER_WORDS + k - 9] = get_word(r, k);
             x->reference_show = grade_format("%s/references/%s.png", work, x->name);
         } else if (line == 7 + renders && line_is(r, "class", 1) &&
                    (members = (int)get_number(r, 1)) >= 0 && members < 1000000)
