@@ -85,7 +85,7 @@ for k in 1 2 3; do
     check "shard $k of 3 written" test -f "shard $k/shard.txt" -a ! -e "shard $k/report.html"
 done
 check "shard 1 holds every third submission from the first" \
-    test "$(ls "shard 1/work" | tr '\n' ' ')" = "01-ann 04-dee hidden-scenes references "
+    test "$(ls "shard 1/work" | tr '\n' ' ')" = "01-ann 04-dee canaries hidden-scenes references "
 "$grade" merge -q --out merged "shard 3" "shard 1" "shard 2" 2>stderr.txt
 check "merge: exit 0" test $? -eq 0
 check "merge: the same report and table as one run" $same one merged
