@@ -267,11 +267,12 @@ EOF
     if grep -q __asan_init "$latest" "$raytra"; then
         echo "skip memcheck: a sanitized build, which AddressSanitizer checks instead"
     elif command -v valgrind >/dev/null 2>&1; then
-        # Given up mid-pixel, the workers still hold the scene and the image when the
-        # process ends: no memory error may come of it (what they hold is not freed, on
-        # purpose, so leaks are not counted here).
+        # Given up mid-pixel (every pixel of steep.scn takes seconds, so that the pixels
+        # under way are given up however fast the machine), the workers still hold the
+        # scene and the image when the process ends: no memory error may come of it (what
+        # they hold is not freed, on purpose, so leaks are not counted here).
         wrapper="valgrind -q --error-exitcode=99 --leak-check=no"
-        interrupt_render slow.scn INT 2 600 "SIGINT in a pixel of seconds, under memcheck" yes 5
+        interrupt_render steep.scn INT 2 600 "SIGINT in a pixel of seconds, under memcheck" yes 5
         # Workers that finish their pixel within the grace leave nothing behind at all.
         program='' options=''
         wrapper="valgrind -q --error-exitcode=99 --leak-check=full --show-leak-kinds=all"
