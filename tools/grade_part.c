@@ -384,8 +384,9 @@ double part_points(const Grading *g, const Submission *s, double *max)
 /* Makes the references of the hidden scenes (--hidden): each one's DIR/references/IMAGE
  * when it is there (make gradescope renders them into its zip), or else rendered now by
  * the part's model answer (built first) into OUT/work/references/hidden; and copies the scenes
- * to OUT/work/hidden-scenes, where a student's program may read them (the folder itself
- * may be readable by the grader's user alone). False (reported) on trouble. */
+ * to OUT/work/hidden-scenes, readable by all, where a student's program reads them (DIR
+ * itself may be readable by the grader's user alone, and its files' modes come along with
+ * cp). False (reported) on trouble. */
 bool part_render_hidden(Grading *g)
 {
     char *part_dir = grade_format("%s/milestones/%s", g->top, g->part);
@@ -396,7 +397,8 @@ bool part_render_hidden(Grading *g)
     if (!any)
         return true;
     char *copy[] = {"sh", "-c", "mkdir -- \"$2\" && cp -R -P -- \"$1/.\" \"$2\" && "
-                                "rm -rf -- \"$2/references\" \"$2/renders.txt\"",
+                                "rm -rf -- \"$2/references\" \"$2/renders.txt\" && "
+                                "chmod -R a+rX -- \"$2\"",
                     "sh", (char *)g->hidden, scenes, NULL};
     if (!run_program(copy, NULL, NULL, 600, 0).ok)
         return grade_fail("cannot copy the hidden scenes of %s to %s", g->hidden, scenes);
