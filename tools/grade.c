@@ -348,7 +348,8 @@ static bool show_references(Grading *g)
         char *log = grade_format("%s/references/%s.log", g->work, r->name);
         r->reference_show = grade_format("%s/references/%s.png", g->work, r->name);
         /* A Monte Carlo render's statistics judge raytra's own render, which ships beside. */
-        char *image = r->statistical ? grade_format("%s/%s", g->references, r->image) : r->reference;
+        char *image =
+            r->statistical ? grade_format("%s/%s", g->references, r->image) : r->reference;
         char *argv[] = {g->imgdiff, "-q", "--threshold", (char *)g->threshold, "--allow",
                         (char *)g->allow, "--standard", (char *)g->standard, "--thumb",
                         r->reference_show, "--", r->reference, image, NULL};
