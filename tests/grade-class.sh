@@ -108,6 +108,9 @@ check "mini: the shards merge" "$grade" merge -q --out mini-merged "mini 1" mini
 check_refused "half is shard 2 of 2, mini 1 of 3" "mini 1" half "mini 3"
 "$grade" -q --shard 2/3 --out strict --threshold 0.001 1.1 mini 2>stderr.txt
 check_refused "other tolerances" "mini 1" strict "mini 3"
+"$grade" -q --shard 2/3 --out lenient --standard ok 1.1 mini 2>stderr.txt
+check "a shard notes its --standard" grep -q '^tolerances .* =ok$' lenient/shard.txt
+check_refused "other tolerances or another --standard" "mini 1" lenient "mini 3"
 mkdir -p other/1.1-spheres-red
 cp -R "$refs" other/1.1-spheres-red/
 cp "$refs/demo.png" other/1.1-spheres-red/references/spheres-three.png

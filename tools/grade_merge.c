@@ -46,7 +46,7 @@ static char *difference(const char *a, const char *b)
     static const char *const keys[][2] = {
         {"part", "another part"},
         {"submissions", "another class folder"},
-        {"tolerances", "other tolerances"},
+        {"tolerances", "other tolerances or another --standard"},
         {"limits", "other limits"},
         {"points", "another grading.conf"},
         {"illustrations", "other references"},

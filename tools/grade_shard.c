@@ -12,7 +12,7 @@
 #include "toolopt.h"
 
 /* The first line of a results file, with the version of its format. */
-#define RESULTS_MAGIC "grade-results 2"
+#define RESULTS_MAGIC "grade-results 3"
 
 /* Reads --shard K/N into g and checks what goes with it; false (reported) when it cannot. */
 bool shard_parse(Grading *g)
@@ -270,6 +270,7 @@ static void put_heading(FILE *f, const Grading *g)
     fputs("\ntolerances", f);
     shard_put_text(f, g->threshold);
     shard_put_text(f, g->allow);
+    shard_put_text(f, g->standard);
     fprintf(f, "\nlimits %a %a %lld\npoints %a\nillustrations", g->time_limit,
             g->build_time_limit, g->memory_limit, g->part_points);
     shard_put_text(f, g->illustrations);
@@ -336,8 +337,8 @@ static bool get_heading(Reader *r, Grading *g, const char *work)
             g->part = get_word(r, 1);
         else if (line == 1 && line_is(r, "submissions", 1))
             g->submissions = get_word(r, 1);
-        else if (line == 2 && line_is(r, "tolerances", 2))
-            g->threshold = get_word(r, 1), g->allow = get_word(r, 2);
+        else if (line == 2 && line_is(r, "tolerances", 3))
+            g->threshold = get_word(r, 1), g->allow = get_word(r, 2), g->standard = get_text(r, 3);
         else if (line == 3 && line_is(r, "limits", 3))
             g->time_limit = get_number(r, 1), g->build_time_limit = get_number(r, 2),
             g->memory_limit = (long long)get_number(r, 3);
