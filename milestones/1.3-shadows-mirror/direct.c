@@ -57,13 +57,17 @@ Color direct_incident(const Tracer *tr, const Hit *hit, Ray r, const Incident *i
 
 /* excerpt: direct-light */
 /* Part 1.3's light hook: the light of one point or directional light, by direct_incident.
- * An area light waits for part 1.6, which samples its square: until then it adds nothing. */
+ * An area light waits for part 1.6, which samples its square: until then it adds nothing,
+ * and the trace says so. */
 Color direct_light(const void *ctx, const Tracer *tr, const Hit *hit, Ray r, const Light *light,
                    int depth, Path *path)
 {
     (void)ctx;
-    if (light->kind == LIGHT_AREA)
+    if (light->kind == LIGHT_AREA) {
+        explain_line(tr->explain, depth + 2,
+                     "an area light: part 1.6 samples it; until then it adds nothing");
         return color(0, 0, 0);
+    }
     Incident in = light_incident(light, hit->point, scene_light_falls_off(tr->scene));
     return direct_incident(tr, hit, r, &in, depth, path);
 }

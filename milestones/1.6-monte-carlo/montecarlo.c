@@ -32,6 +32,7 @@ bool montecarlo_init(MonteCarlo *mc, const Scene *scene, Surfaces surfaces, cons
     refract_init(&mc->below, scene, surfaces, fresnel, opts);
     mc->below.tracer.hooks.light = montecarlo_light;
     mc->below.tracer.hooks.light_ctx = mc;
+    mc->below.tracer.hooks.light_areas = true;
     return true;
 }
 
