@@ -9,7 +9,7 @@
 /* Returns the shadow ray from hit's point towards the light in, and in *tmax how far
  * it may go: only what lies before the light blocks it, measured from the ray's own
  * origin, a hair off the point. A directional light is infinitely far away. */
-static Ray shadow_ray(const Tracer *tr, const Hit *hit, Ray r, const Incident *in, double *tmax)
+Ray direct_shadow_ray(const Tracer *tr, const Hit *hit, Ray r, const Incident *in, double *tmax)
 {
     Ray shadow = secondary_ray(hit, r, in->dir, tr->offset);
     *tmax = in->distance - vec3_dot(vec3_sub(shadow.origin, hit->point), in->dir);
@@ -22,7 +22,7 @@ bool direct_in_shadow(const Tracer *tr, const Hit *hit, Ray r, const Incident *i
                       Path *path)
 {
     double tmax = 0;
-    Ray shadow = shadow_ray(tr, hit, r, in, &tmax);
+    Ray shadow = direct_shadow_ray(tr, hit, r, in, &tmax);
     return tracer_blocked(tr, shadow, tmax, depth, path);
 }
 /* end excerpt: direct-in-shadow */

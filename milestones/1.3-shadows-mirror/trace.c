@@ -84,6 +84,31 @@ bool tracer_blocked(const Tracer *tr, Ray shadow, double tmax, int depth, Path *
     return true;
 }
 
+/* Finds the closest surface on a shadow ray with 0 < t < tmax, for a walk through glass
+ * that has crossed so many surfaces already. The first stretch is the ray that
+ * tracer_blocked counted and told; each later one, from a glass surface on, is a shadow
+ * ray of its own: counted, and told with what it meets or that it reaches the light. */
+bool tracer_shadow_hit(const Tracer *tr, Ray shadow, double tmax, int crossed, int depth, Hit *hit,
+                       Path *path)
+{
+    bool found = tr->surfaces.hit(tr->surfaces.data, shadow, 0, tmax, hit);
+    if (crossed == 0)
+        return found;
+    path->stats->rays[RAY_SHADOW]++;
+    if (tr->explain != NULL) {
+        char from[96], along[96];
+        explain_line(tr->explain, depth + 2,
+                     "shadow ray on through glass (crossing %d) from %s along %s", crossed,
+                     explain_vec3(shadow.origin, from, sizeof from),
+                     explain_vec3(shadow.dir, along, sizeof along));
+        if (found)
+            world_explain_hit(tr->explain, depth + 3, hit);
+        else
+            explain_line(tr->explain, depth + 3, "reaches the light");
+    }
+    return found;
+}
+
 /* Returns the radiance along a ray that a hit sends on (or the camera's, at depth 0),
  * counting it as kind: the tracer's radiance hook, told with its ray and its result. */
 Color tracer_trace(const Tracer *tr, Ray r, RayKind kind, int depth, Path *path)

@@ -66,11 +66,11 @@ typedef struct {
 /* Everything a traced ray needs besides the ray, shared by every thread: read only. */
 struct Tracer {
     const Scene *scene;
-    Surfaces surfaces; /* how a ray finds what it hits */
-    int max_depth;     /* reflected rays a path may take */
-    bool two_sided;    /* shade back faces with their own material, not yellow */
-    double offset;     /* where secondary rays start: see secondary_ray */
-    TracerHooks hooks; /* part 1.3's own, or what a later part plugs in */
+    Surfaces surfaces;      /* how a ray finds what it hits */
+    int max_depth;          /* reflected rays a path may take */
+    bool two_sided;         /* shade back faces with their own material, not yellow */
+    double offset;          /* where secondary rays start: see secondary_ray */
+    TracerHooks hooks;      /* part 1.3's own, or what a later part plugs in */
     const Explain *explain; /* --trace-pixel: where the seams tell each step; NULL when not */
 };
 /* end excerpt: tracer-struct */
@@ -83,6 +83,8 @@ Tracer tracer_make(const Scene *scene, Surfaces surfaces, const Options *opts);
 Color trace_radiance(const Tracer *tr, Ray r, int depth, Path *path);
 bool tracer_hit(const Tracer *tr, Ray r, int depth, Hit *hit);
 bool tracer_blocked(const Tracer *tr, Ray shadow, double tmax, int depth, Path *path);
+bool tracer_shadow_hit(const Tracer *tr, Ray shadow, double tmax, int crossed, int depth, Hit *hit,
+                       Path *path);
 Color tracer_trace(const Tracer *tr, Ray r, RayKind kind, int depth, Path *path);
 Color tracer_light(const Tracer *tr, const Hit *hit, Ray r, int k, int depth, Path *path);
 Color tracer_through(const Tracer *tr, const Hit *hit, Ray r, const Incident *in, int depth,
