@@ -235,6 +235,7 @@ put docs/starters.md marked-functions "$tmp/marked"
 put docs/architecture.md reading-load "$tmp/load"
 # Every block "output NAME" of the chapters, from a run of its own.
 for doc in docs/*.md README.md milestones/*/README.md; do
+    # shellcheck disable=SC2013 # a name is one word
     for name in $(sed -n 's/^ *<!-- generated: output \([^ ]*\) -->$/\1/p' "$doc"); do
         output "$name" >"$tmp/output" || exit 1
         put "$doc" "output $name" "$tmp/output"
