@@ -121,7 +121,7 @@ Color tracer_trace(const Tracer *tr, Ray r, RayKind kind, int depth, Path *path)
     return c;
 }
 
-/* Prints, for --trace-pixel, which light k is and, when it is behind the surface, so. */
+/* Prints, for --trace-pixel, which light k is, and whether it is behind the surface. */
 static void explain_light(const Tracer *tr, const Hit *hit, int k, int depth)
 {
     static const char *const kinds[] = {"point", "directional", "area"};
