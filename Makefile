@@ -137,10 +137,15 @@ check-chromium:
 check-course:
 	@tests/course-scenes.sh check $(LATEST)
 
+# The docs' tool outputs come from runs of the programs (tools/doctables.sh): built first.
+DOCTABLES := BUILD=$(BUILD) RAYTRA_PROGRAM=$(if $(filter 1,$(SANITIZE)),$(BUILD)/raytra,raytra) \
+             tools/doctables.sh
 check-docs:
+	@$(SUBMAKE) all
+	@$(SUBMAKE) -C tools/mistakes
 	@$(SUBMAKE) -C tools docsnip
 	@$(DOCSNIP) --root . --check $(CHAPTERS) && echo "check-docs: every excerpt matches the source"
-	@tools/doctables.sh --check
+	@$(DOCTABLES) --check
 	@tools/marked.sh check-explain && echo "check-docs: no function a student writes prints to --trace-pixel"
 
 # Every SVG of docs/figures is well-formed with a viewBox; every figure linked to exists.
@@ -182,9 +187,11 @@ check-slides:
 	@tests/slides.sh
 
 docs:
+	@$(SUBMAKE) all
+	@$(SUBMAKE) -C tools/mistakes
 	@$(SUBMAKE) -C tools docsnip
 	@$(DOCSNIP) --root . --update $(CHAPTERS)
-	@tools/doctables.sh --update
+	@$(DOCTABLES) --update
 
 # Each part renders the demo scene as the line of its references/renders.txt that names
 # the scene says (part 1.4 draws its BVH's leaf boxes, part 1.6 takes P = 2 and S = 2), so

@@ -221,6 +221,7 @@ typedef struct {
     const Scene *scene;
     const Options *opts;
     int x, y, sample;
+    int samples; /* the pixel's samples, P x P, where the part samples pixels; 0 elsewhere */
 } TraceJob;
 
 /* Traces the one pixel of --trace-pixel, printing its ray tree and its colour before and
@@ -244,7 +245,7 @@ static void trace_one_pixel(void *arg)
     RayStats stats = {{0}};
     if (sample >= 0) {
         Color s = program->sample(ctx, x, j, sample, &stats);
-        int side = cli_int(opts, program->samples_option), count = side * side;
+        int count = t->samples;
         printf("sample %d: colour (%.9g, %.9g, %.9g); the pixel's colour is the mean of its "
                "%d sample%s\n",
                sample, s.r, s.g, s.b, count, count == 1 ? "" : "s");
@@ -264,8 +265,8 @@ static void trace_one_pixel(void *arg)
  * reported) when it would print more than TRACE_MAX_LINES lines, and warns when it may.
  * The part estimates the lines (Program.trace_lines): at least fewest, and at most most
  * when every mirror and glass path goes on to the depth limit. */
-static bool trace_size_ok(const Program *program, const void *ctx, const Options *opts,
-                          int sample)
+static bool trace_size_ok(const Program *program, const void *ctx, const Options *opts, int sample,
+                          int samples)
 {
     double fewest = 0, most = 0;
     if (program->trace_lines != NULL)
@@ -273,13 +274,11 @@ static bool trace_size_ok(const Program *program, const void *ctx, const Options
     if (fewest <= TRACE_MAX_LINES && most <= TRACE_MAX_LINES)
         return true;
     char how[200] = "";
-    if (program->sample != NULL && sample < 0) {
-        int side = cli_int(opts, program->samples_option);
+    if (samples > 0 && sample < 0)
         snprintf(how, sizeof how,
                  "; trace one of its %d samples with --trace-pixel %s@K (K from 0 to %d), or "
                  "take fewer samples",
-                 side * side, opts->trace_pixel, side * side - 1);
-    }
+                 samples, opts->trace_pixel, samples - 1);
     if (fewest > TRACE_MAX_LINES) {
         fprintf(stderr,
                 "raytra: --trace-pixel %s would print at least %.3g million lines, more than "
@@ -422,9 +421,10 @@ int app_main(const Program *program, int argc, char **argv)
     note_ignored(program, &scene);
     int trace_x = 0, trace_y = 0, trace_sample = -1;
     Explain explain = {stdout, &scene};
+    /* The pixel's samples, where the part samples pixels: the one place this reads them. */
+    int side = program->sample != NULL ? cli_int(&opts, program->samples_option) : 0;
+    int samples = side * side;
     if (opts.trace_pixel != NULL) {
-        int side = program->sample != NULL ? cli_int(&opts, program->samples_option) : 0;
-        int samples = side * side;
         if (!parse_pixel(opts.trace_pixel, &scene.camera, samples, &trace_x, &trace_y,
                          &trace_sample)) {
             status = EXIT_USAGE;
@@ -434,12 +434,12 @@ int app_main(const Program *program, int argc, char **argv)
     }
     if (program->setup != NULL && !program->setup(&scene, &opts, &ctx))
         goto done;
-    if (tracing && !trace_size_ok(program, ctx, &opts, trace_sample)) {
+    if (tracing && !trace_size_ok(program, ctx, &opts, trace_sample, samples)) {
         status = EXIT_USAGE;
         goto done;
     }
     if (tracing) {
-        TraceJob trace = {program, ctx, &scene, &opts, trace_x, trace_y, trace_sample};
+        TraceJob trace = {program, ctx, &scene, &opts, trace_x, trace_y, trace_sample, samples};
         /* A trace given up after a stop still prints from the scene: never return. */
         if (!render_call(trace_one_pixel, &trace))
             give_up(NULL, "the trace");

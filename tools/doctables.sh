@@ -9,6 +9,11 @@
 #                     lines of the earlier parts it uses (its Makefile's USES), and the
 #                     lines of its student's path: the definitions its chapter's table
 #                     between <!-- student-path --> and <!-- end student-path --> names
+#   output NAME       what a tool prints, from a real run on the repository's own files
+#                     (the outputs below): the block stands as generated, fences included
+# A block may stand indented, inside a list item: its lines get the marker's indent.
+# The outputs run the built programs: BUILD (default build) names the tools' and parts'
+# build folder, RAYTRA_PROGRAM (default raytra) a part's program in its folder.
 # --check exits 1, naming the doc, when a table is not what the source makes now.
 set -u
 top=$(cd "$(dirname "$0")/.." && pwd) || exit 2
@@ -120,19 +125,104 @@ reading_load() {
     done
 }
 
-# Replaces the table NAME of doc with what stands in file new; --check compares instead.
+# The tool outputs. Each runs a built program, from the top of the repository, on files
+# the repository holds, and prints the block the doc shows: the command, when the doc
+# shows it, and what the program printed. Fails, saying so, when a program is not built.
+build=${BUILD:-build}
+program=${RAYTRA_PROGRAM:-raytra}
+built() {
+    [ -x "$1" ] || { echo "doctables: no $1: build it first (make; make -C tools/mistakes)" >&2; exit 1; }
+}
+
+# raytra's --trace-pixel on a scene: the command and the tree. Arguments: PART OPTIONS...
+trace() {
+    part=$1; shift
+    built "milestones/$part/$program"
+    echo '```'
+    echo "\$ milestones/$part/raytra $*"
+    # shellcheck disable=SC2068 # the options are words by design
+    "milestones/$part/$program" $@ 2>&1 || { echo "doctables: raytra failed: $*" >&2; exit 1; }
+    echo '```'
+}
+
+# The lines of standard input matching each pattern in turn, the first after the last
+# found, with "  ..." where lines are left out.
+pick() {
+    awk -v patterns="$*" '
+        BEGIN { n = split(patterns, p, "|"); k = 1 }
+        k <= n && index($0, p[k]) { if (NR > last + 1) print "  ..."; print; last = NR; k++ }
+        END { if (k <= n) { print "doctables: no line with \"" p[k] "\"" >"/dev/stderr"; exit 1 } }'
+}
+
+# A starter's make check on part 1.2's phong-sweep.png, rendered by part 1.2 with the
+# specular highlight of a light behind the surface (docs/mistakes.md): into $tmp/check,
+# its lines in $tmp/check.out, imgdiff's report in $tmp/check/out/check/phong-sweep.diff.txt.
+starter_check() {
+    [ -f "$tmp/check.out" ] && return
+    mistake=tools/mistakes/$build/raytra-specular-behind
+    built "$mistake"
+    built "tools/$build/imgdiff"
+    mkdir -p "$tmp/check/part/references" "$tmp/check/tests" || exit 1
+    echo "phong-sweep.png scenes/phong-sweep.scn" >"$tmp/check/part/references/renders.txt"
+    cp milestones/1.2-shading/references/phong-sweep.png "$tmp/check/part/references/" || exit 1
+    (cd "$tmp/check" && "$top/tools/starter-check.sh" part "$top/$mistake" tests \
+        "$top/tools/$build/imgdiff" out/check) >"$tmp/check.out" 2>&1
+    grep -q '^FAIL phong-sweep.png: ' "$tmp/check.out" ||
+        { echo "doctables: the starter check did not fail phong-sweep.png:" >&2; cat "$tmp/check.out" >&2; exit 1; }
+}
+
+# Prints the output NAME.
+output() {
+    case $1 in
+    starter-check-fail)
+        starter_check
+        echo '```'
+        grep -E '^(FAIL |     heat map: )' "$tmp/check.out"
+        echo '```' ;;
+    imgdiff-report)
+        starter_check
+        echo '```'
+        echo "\$ tools/build/imgdiff milestones/1.2-shading/references/phong-sweep.png phong-sweep.png"
+        (cd "$tmp/check/out/check" && "$top/tools/$build/imgdiff" \
+            "$top/milestones/1.2-shading/references/phong-sweep.png" phong-sweep.png)
+        echo '```' ;;
+    trace-pixel-1.3) trace 1.3-shadows-mirror -q scenes/trace-pixel.scn --trace-pixel 1,1 ;;
+    trace-pixel-1.6-sample)
+        trace 1.6-monte-carlo -q scenes/exercises/1.6-edges.scn --samples 2 --trace-pixel 1,1@2 ;;
+    trace-glass-shadow) trace 1.5-refraction -q --trace-pixel 1,1 scenes/trace-glass-shadow.scn ;;
+    trace-glass-absorbing)
+        trace 1.5-refraction --trace-pixel 100,100 scenes/glass-absorbing.scn >"$tmp/absorbing" || exit 1
+        sed -n 1,2p "$tmp/absorbing"
+        sed 1,2d "$tmp/absorbing" | pick "glass of index 1.5, entering|reflected ray from|not followed|absorbed inside"
+        echo '```' ;;
+    note-1.1)
+        built "milestones/1.1-spheres-red/$program"
+        echo '```'
+        echo "\$ milestones/1.1-spheres-red/raytra -q scenes/demo.scn demo.png"
+        "milestones/1.1-spheres-red/$program" -q scenes/demo.scn "$tmp/demo.png" 2>&1 ;
+        echo '```' ;;
+    *) echo "doctables: no output named $1" >&2; exit 1 ;;
+    esac
+}
+
+# Replaces the block NAME of doc with what stands in file new; --check compares instead.
+# The block may stand indented: its lines get the indent of its marker.
 status=0
 put() {
     doc=$1 name=$2 new=$3
-    grep -q "^<!-- generated: $name -->\$" "$doc" ||
+    grep -q "^ *<!-- generated: $name -->\$" "$doc" ||
         { echo "$doc: no '<!-- generated: $name -->' line for the table" >&2; status=1; return; }
     awk -v name="$name" -v new="$new" '
-        $0 == "<!-- generated: " name " -->" { print; while ((getline l <new) > 0) print l; skip = 1; next }
-        skip && $0 == "<!-- end generated -->" { skip = 0 }
+        { line = $0; sub(/^ +/, "", line) }
+        line == "<!-- generated: " name " -->" {
+            print; indent = substr($0, 1, length($0) - length(line))
+            while ((getline l <new) > 0) print (l == "" ? "" : indent l)
+            close(new); skip = 1; next }
+        skip && line == "<!-- end generated -->" { skip = 0 }
         !skip' "$doc" >"$tmp/doc"
     if cmp -s "$tmp/doc" "$doc"; then return; fi
     if [ "$mode" = check ]; then
-        echo "$doc: the table '$name' is not what the source makes now; run 'make docs'" >&2
+        echo "$doc: the block '$name' is not what the source makes now; run 'make docs'" >&2
         status=1
     else
         cp "$tmp/doc" "$doc" && echo "updated $doc ($name)"
@@ -143,5 +233,13 @@ marked_functions >"$tmp/marked" || exit 1
 reading_load >"$tmp/load" || exit 1
 put docs/starters.md marked-functions "$tmp/marked"
 put docs/architecture.md reading-load "$tmp/load"
+# Every block "output NAME" of the chapters, from a run of its own.
+for doc in docs/*.md README.md milestones/*/README.md; do
+    # shellcheck disable=SC2013 # a name is one word
+    for name in $(sed -n 's/^ *<!-- generated: output \([^ ]*\) -->$/\1/p' "$doc"); do
+        output "$name" >"$tmp/output" || exit 1
+        put "$doc" "output $name" "$tmp/output"
+    done
+done
 [ "$mode" = check ] && [ $status -eq 0 ] && echo "doctables: every generated table is current"
 exit $status

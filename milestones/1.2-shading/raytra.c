@@ -7,12 +7,31 @@
 #include "view.h"
 #include "world.h"
 
+/* What every pixel reads: the camera and the scene, and --two-sided, read once. */
+typedef struct {
+    View view;
+    bool two_sided;
+} Part12;
+
+/* Builds the camera of the scene and reads --two-sided. */
+static bool setup(const Scene *scene, const Options *opts, void **ctx)
+{
+    Part12 *part = malloc(sizeof *part);
+    if (part == NULL)
+        return false;
+    *part = (Part12){.view = {camera_make(&scene->camera), scene, opts},
+                     .two_sided = cli_flag(opts, "two-sided")};
+    *ctx = part;
+    return true;
+}
+
 /* excerpt: shade-pixel */
 /* Part 1.2's pixel: the surface nearest the eye, lit by every light; black where the ray
  * meets nothing. */
 static Color shade_pixel(const void *ctx, int i, int j, RayStats *stats)
 {
-    const View *view = ctx;
+    const Part12 *part = ctx;
+    const View *view = &part->view;
     const Explain *explain = view->opts->explain;
     Ray r = camera_ray(&view->camera, i + 0.5, j + 0.5);
     stats->rays[RAY_PRIMARY]++;
@@ -23,15 +42,16 @@ static Color shade_pixel(const void *ctx, int i, int j, RayStats *stats)
         return color(0, 0, 0);
     }
     world_explain_hit(explain, 1, &hit);
-    shade_explain_lights(explain, view->scene, &hit, r, cli_flag(view->opts, "two-sided"));
-    return shade_direct_radiance(view->scene, &hit, r, cli_flag(view->opts, "two-sided"));
+    shade_explain_lights(explain, view->scene, &hit, r, part->two_sided);
+    return shade_direct_radiance(view->scene, &hit, r, part->two_sided);
 }
 /* end excerpt: shade-pixel */
 
 /* Tells --view what the camera ray meets first, and how many lights face the point. */
 static void probe_pixel(const void *ctx, int i, int j, Probe *probe)
 {
-    const View *view = ctx;
+    const Part12 *part = ctx;
+    const View *view = &part->view;
     const Scene *scene = view->scene;
     Ray r = camera_ray(&view->camera, i + 0.5, j + 0.5);
     Hit hit;
@@ -42,7 +62,7 @@ static void probe_pixel(const void *ctx, int i, int j, Probe *probe)
                      .t = hit.t,
                      .normal = n,
                      .surface = world_surface_id(scene, &hit),
-                     .kd = shade_material(scene, &hit, cli_flag(view->opts, "two-sided"))->diffuse};
+                     .kd = shade_material(scene, &hit, part->two_sided)->diffuse};
     for (int k = 0; k < scene->light_count; k++) {
         Incident in = light_incident(&scene->lights[k], hit.point, false);
         probe->lights_visible += scene->lights[k].kind != LIGHT_AREA && vec3_dot(n, in.dir) > 0;
@@ -55,7 +75,7 @@ static const Program program = {
             .purpose = "the nearest surface of each pixel, lit by Blinn-Phong shading"},
     .features = FEATURE_SPHERES | FEATURE_PLANES | FEATURE_TRIANGLES | FEATURE_POINT_LIGHTS |
                 FEATURE_DIRECTIONAL_LIGHTS | FEATURE_SHADING,
-    .setup = view_setup,
+    .setup = setup,
     .pixel = shade_pixel,
     .probe = probe_pixel,
     .views = 1u << VIEW_LIGHT_COUNT,

@@ -9,7 +9,7 @@
 /* Returns the shadow ray from hit's point towards the light in, and in *tmax how far
  * it may go: only what lies before the light blocks it, measured from the ray's own
  * origin, a hair off the point. A directional light is infinitely far away. */
-static Ray shadow_ray(const Tracer *tr, const Hit *hit, Ray r, const Incident *in, double *tmax)
+Ray direct_shadow_ray(const Tracer *tr, const Hit *hit, Ray r, const Incident *in, double *tmax)
 {
     Ray shadow = secondary_ray(hit, r, in->dir, tr->offset);
     *tmax = in->distance - vec3_dot(vec3_sub(shadow.origin, hit->point), in->dir);
@@ -22,7 +22,7 @@ bool direct_in_shadow(const Tracer *tr, const Hit *hit, Ray r, const Incident *i
                       Path *path)
 {
     double tmax = 0;
-    Ray shadow = shadow_ray(tr, hit, r, in, &tmax);
+    Ray shadow = direct_shadow_ray(tr, hit, r, in, &tmax);
     return tracer_blocked(tr, shadow, tmax, depth, path);
 }
 /* end excerpt: direct-in-shadow */
@@ -57,13 +57,17 @@ Color direct_incident(const Tracer *tr, const Hit *hit, Ray r, const Incident *i
 
 /* excerpt: direct-light */
 /* Part 1.3's light hook: the light of one point or directional light, by direct_incident.
- * An area light waits for part 1.6, which samples its square: until then it adds nothing. */
+ * An area light waits for part 1.6, which samples its square: until then it adds nothing,
+ * and the trace says so. */
 Color direct_light(const void *ctx, const Tracer *tr, const Hit *hit, Ray r, const Light *light,
                    int depth, Path *path)
 {
     (void)ctx;
-    if (light->kind == LIGHT_AREA)
+    if (light->kind == LIGHT_AREA) {
+        explain_line(tr->explain, depth + 2,
+                     "an area light: part 1.6 samples it; until then it adds nothing");
         return color(0, 0, 0);
+    }
     Incident in = light_incident(light, hit->point, scene_light_falls_off(tr->scene));
     return direct_incident(tr, hit, r, &in, depth, path);
 }

@@ -10,6 +10,7 @@
 #include "render.h"
 #include "trace.h"
 
+Ray direct_shadow_ray(const Tracer *tr, const Hit *hit, Ray r, const Incident *in, double *tmax);
 bool direct_in_shadow(const Tracer *tr, const Hit *hit, Ray r, const Incident *in, int depth,
                       Path *path);
 Color direct_through(const void *ctx, const Tracer *tr, const Hit *hit, Ray r, const Incident *in,

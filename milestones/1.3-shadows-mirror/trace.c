@@ -6,6 +6,18 @@
 #include "shade.h"
 #include "world.h"
 
+/* Part 1.3's radiance hook: trace_radiance, which needs no context. */
+static Color trace_radiance_hook(const void *ctx, const Tracer *tr, Ray r, int depth, Path *path)
+{
+    (void)ctx;
+    return trace_radiance(tr, r, depth, path);
+}
+
+/* Part 1.3's own hooks, with which every tracer starts: mirrors (trace_radiance), point
+ * and directional lights (direct_light), shadows all or nothing (direct_through). */
+const TracerHooks tracer_hooks = {
+    .radiance = trace_radiance_hook, .light = direct_light, .through = direct_through};
+
 /* Returns the tracer of scene, finding hits with surfaces, set up by the command line;
  * its hooks are part 1.3's own. */
 Tracer tracer_make(const Scene *scene, Surfaces surfaces, const Options *opts)
@@ -15,6 +27,7 @@ Tracer tracer_make(const Scene *scene, Surfaces surfaces, const Options *opts)
                     .max_depth = cli_int(opts, "max-depth"),
                     .two_sided = cli_flag(opts, "two-sided"),
                     .offset = cli_number(opts, "ray-offset"),
+                    .hooks = tracer_hooks,
                     .explain = opts->explain};
 }
 
@@ -71,6 +84,31 @@ bool tracer_blocked(const Tracer *tr, Ray shadow, double tmax, int depth, Path *
     return true;
 }
 
+/* Finds the closest surface on a shadow ray with 0 < t < tmax, for a walk through glass
+ * that has crossed so many surfaces already. The first stretch is the ray that
+ * tracer_blocked counted and told; each later one, from a glass surface on, is a shadow
+ * ray of its own: counted, and told with what it meets or that it reaches the light. */
+bool tracer_shadow_hit(const Tracer *tr, Ray shadow, double tmax, int crossed, int depth, Hit *hit,
+                       Path *path)
+{
+    bool found = tr->surfaces.hit(tr->surfaces.data, shadow, 0, tmax, hit);
+    if (crossed == 0)
+        return found;
+    path->stats->rays[RAY_SHADOW]++;
+    if (tr->explain != NULL) {
+        char from[96], along[96];
+        explain_line(tr->explain, depth + 2,
+                     "shadow ray on through glass (crossing %d) from %s along %s", crossed,
+                     explain_vec3(shadow.origin, from, sizeof from),
+                     explain_vec3(shadow.dir, along, sizeof along));
+        if (found)
+            world_explain_hit(tr->explain, depth + 3, hit);
+        else
+            explain_line(tr->explain, depth + 3, "reaches the light");
+    }
+    return found;
+}
+
 /* Returns the radiance along a ray that a hit sends on (or the camera's, at depth 0),
  * counting it as kind: the tracer's radiance hook, told with its ray and its result. */
 Color tracer_trace(const Tracer *tr, Ray r, RayKind kind, int depth, Path *path)
@@ -78,13 +116,12 @@ Color tracer_trace(const Tracer *tr, Ray r, RayKind kind, int depth, Path *path)
     path->stats->rays[kind]++;
     explain_ray(tr->explain, depth, kind == RAY_PRIMARY ? "camera" : render_ray_kind_name(kind), r);
     const TracerHooks *h = &tr->hooks;
-    Color c = h->radiance != NULL ? h->radiance(h->radiance_ctx, tr, r, depth, path)
-                                  : trace_radiance(tr, r, depth, path);
+    Color c = h->radiance(h->radiance_ctx, tr, r, depth, path);
     explain_color(tr->explain, depth + 1, "radiance", c);
     return c;
 }
 
-/* Prints, for --trace-pixel, which light k is and, when it can add nothing, why. */
+/* Prints, for --trace-pixel, which light k is, and whether it is behind the surface. */
 static void explain_light(const Tracer *tr, const Hit *hit, int k, int depth)
 {
     static const char *const kinds[] = {"point", "directional", "area"};
@@ -92,12 +129,8 @@ static void explain_light(const Tracer *tr, const Hit *hit, int k, int depth)
     char where[300];
     explain_line(tr->explain, depth + 1, "light %d, %s%s", k, kinds[light->kind],
                  explain_where(tr->explain, light->line, where, sizeof where));
-    if (light->kind == LIGHT_AREA && tr->hooks.light == NULL)
-        explain_line(tr->explain, depth + 2,
-                     "an area light: part 1.6 samples it; until then "
-                     "it adds nothing");
-    else if (light->kind != LIGHT_AREA &&
-             vec3_dot(shade_normal(hit), light_incident(light, hit->point, false).dir) <= 0)
+    if (light->kind != LIGHT_AREA &&
+        vec3_dot(shade_normal(hit), light_incident(light, hit->point, false).dir) <= 0)
         explain_line(tr->explain, depth + 2, "behind the surface");
 }
 
@@ -109,8 +142,7 @@ Color tracer_light(const Tracer *tr, const Hit *hit, Ray r, int k, int depth, Pa
         explain_light(tr, hit, k, depth);
     const Light *light = &tr->scene->lights[k];
     const TracerHooks *h = &tr->hooks;
-    Color c = h->light != NULL ? h->light(h->light_ctx, tr, hit, r, light, depth, path)
-                               : direct_light(NULL, tr, hit, r, light, depth, path);
+    Color c = h->light(h->light_ctx, tr, hit, r, light, depth, path);
     explain_color(tr->explain, depth + 2, "adds", c);
     return c;
 }
@@ -129,8 +161,7 @@ Color tracer_through(const Tracer *tr, const Hit *hit, Ray r, const Incident *in
                      in->radiance.b);
     }
     const TracerHooks *h = &tr->hooks;
-    Color through = h->through != NULL ? h->through(h->through_ctx, tr, hit, r, in, depth, path)
-                                       : direct_through(NULL, tr, hit, r, in, depth, path);
+    Color through = h->through(h->through_ctx, tr, hit, r, in, depth, path);
     if (e != NULL) {
         if (color_is_black(through)) {
             explain_line(e, depth + 2, "in shadow");
@@ -164,8 +195,8 @@ void trace_probe(const Tracer *tr, Ray r, Probe *probe)
     RayStats stats = {{0}};
     Path path = {.stats = &stats, .weight = 1};
     for (int k = 0; k < scene->light_count; k++) {
-        /* Part 1.3's lights: area lights only from part 1.6 on, which hooks in its own. */
-        if (scene->lights[k].kind == LIGHT_AREA && tr->hooks.light == NULL)
+        /* An area light counts when the light hook lights it (part 1.6's does). */
+        if (scene->lights[k].kind == LIGHT_AREA && !tr->hooks.light_areas)
             continue;
         Incident in = light_incident(&scene->lights[k], hit.point, false);
         probe->lights_visible +=

@@ -36,13 +36,14 @@ typedef struct Tracer Tracer;
 
 /* excerpt: tracer-hooks */
 /* The three hooks a later part plugs into, each a function and the context it is handed
- * (its part's own state; NULL for part 1.3's). Where a hook is NULL, part 1.3's is used. */
+ * (its part's own state; NULL for part 1.3's). tracer_make sets part 1.3's own
+ * (tracer_hooks); a later part replaces one by assigning its function and context. */
 
 /* The radiance arriving along ray r, depth bounces after the camera ray: part 1.3's
  * trace_radiance; part 1.5 traces glass. */
 typedef Color (*RadianceFn)(const void *ctx, const Tracer *tr, Ray r, int depth, Path *path);
 /* The light that one light sends back along r from hit, shadows included: part 1.3's
- * direct_light; part 1.6 samples area lights. */
+ * direct_light, which leaves area lights dark; part 1.6 samples them. */
 typedef Color (*LightFn)(const void *ctx, const Tracer *tr, const Hit *hit, Ray r,
                          const Light *light, int depth, Path *path);
 /* The fraction of the light in that reaches hit's point, per channel: part 1.3's
@@ -55,6 +56,7 @@ typedef struct {
     const void *radiance_ctx;
     LightFn light;
     const void *light_ctx;
+    bool light_areas; /* the light hook lights area lights: false for part 1.3's */
     ThroughFn through;
     const void *through_ctx;
 } TracerHooks;
@@ -64,15 +66,16 @@ typedef struct {
 /* Everything a traced ray needs besides the ray, shared by every thread: read only. */
 struct Tracer {
     const Scene *scene;
-    Surfaces surfaces; /* how a ray finds what it hits */
-    int max_depth;     /* reflected rays a path may take */
-    bool two_sided;    /* shade back faces with their own material, not yellow */
-    double offset;     /* where secondary rays start: see secondary_ray */
-    TracerHooks hooks; /* what later parts plug in; all NULL in part 1.3 */
+    Surfaces surfaces;      /* how a ray finds what it hits */
+    int max_depth;          /* reflected rays a path may take */
+    bool two_sided;         /* shade back faces with their own material, not yellow */
+    double offset;          /* where secondary rays start: see secondary_ray */
+    TracerHooks hooks;      /* part 1.3's own, or what a later part plugs in */
     const Explain *explain; /* --trace-pixel: where the seams tell each step; NULL when not */
 };
 /* end excerpt: tracer-struct */
 
+extern const TracerHooks tracer_hooks;
 extern const CliOption trace_options[];
 extern const CliOption *const trace_part_options[];
 
@@ -80,6 +83,8 @@ Tracer tracer_make(const Scene *scene, Surfaces surfaces, const Options *opts);
 Color trace_radiance(const Tracer *tr, Ray r, int depth, Path *path);
 bool tracer_hit(const Tracer *tr, Ray r, int depth, Hit *hit);
 bool tracer_blocked(const Tracer *tr, Ray shadow, double tmax, int depth, Path *path);
+bool tracer_shadow_hit(const Tracer *tr, Ray shadow, double tmax, int crossed, int depth, Hit *hit,
+                       Path *path);
 Color tracer_trace(const Tracer *tr, Ray r, RayKind kind, int depth, Path *path);
 Color tracer_light(const Tracer *tr, const Hit *hit, Ray r, int k, int depth, Path *path);
 Color tracer_through(const Tracer *tr, const Hit *hit, Ray r, const Incident *in, int depth,

@@ -15,13 +15,18 @@ typedef struct {
     Accel accel;
 } Part15;
 
+/* Frees the part's state. */
+static void cleanup(void *ctx)
+{
+    Part15 *part = ctx;
+    accel_free(&part->accel);
+    free(part);
+}
+
 /* Builds the camera, part 1.4's BVH (or the boxes of MODE) and the tracer of the scene,
- * after checking --fresnel and the glass meshes. */
+ * then checks the glass meshes. */
 static bool setup(const Scene *scene, const Options *opts, void **ctx)
 {
-    FresnelModel fresnel;
-    if (!refract_fresnel_option(opts, &fresnel))
-        return false;
     Part15 *part = malloc(sizeof *part);
     if (part == NULL)
         return false;
@@ -29,9 +34,12 @@ static bool setup(const Scene *scene, const Options *opts, void **ctx)
         free(part);
         return false;
     }
+    if (!refract_init(&part->refractor, scene, accel_surfaces(&part->accel), opts)) {
+        cleanup(part);
+        return false;
+    }
     solid_warn(scene, stderr);
     part->view = (View){camera_make(&scene->camera), scene, opts};
-    refract_init(&part->refractor, scene, accel_surfaces(&part->accel), fresnel, opts);
     *ctx = part;
     return true;
 }
@@ -54,14 +62,6 @@ static void probe_pixel(const void *ctx, int i, int j, Probe *probe)
     Ray r = camera_ray(&part->view.camera, i + 0.5, j + 0.5);
     trace_probe(&part->refractor.tracer, r, probe);
     probe->tests = accel_count_tests(&part->accel, r);
-}
-
-/* Frees the part's state. */
-static void cleanup(void *ctx)
-{
-    Part15 *part = ctx;
-    accel_free(&part->accel);
-    free(part);
 }
 
 /* Estimates the lines --trace-pixel prints: one camera ray a pixel. */

@@ -9,9 +9,9 @@
 #include "shade.h"
 #include "transmit.h"
 
-/* Reads --fresnel, the one place it is read, into *fresnel (Schlick's when it is not
- * given); false, said on standard error, when it names no model. */
-bool refract_fresnel_option(const Options *opts, FresnelModel *fresnel)
+/* Reads --fresnel into *fresnel (Schlick's when it is not given); false, said on standard
+ * error, when it names no model. */
+static bool fresnel_option(const Options *opts, FresnelModel *fresnel)
 {
     const char *name = cli_text(opts, "fresnel");
     *fresnel = FRESNEL_SCHLICK;
@@ -23,11 +23,14 @@ bool refract_fresnel_option(const Options *opts, FresnelModel *fresnel)
 }
 
 /* Sets rf up as the tracer of scene with glass, finding hits with surfaces, set up by the
- * command line: its radiance follows glass (refract_radiance), and its shadow rays
- * pass through glass (transmit_light). rf is the hooks' context: it stays where it is. */
-void refract_init(Refractor *rf, const Scene *scene, Surfaces surfaces, FresnelModel fresnel,
-                  const Options *opts)
+ * command line (the one place that reads part 1.5's options): its radiance follows glass
+ * (refract_radiance), and its shadow rays pass through glass (transmit_light). rf is the
+ * hooks' context: it stays where it is. False (said) on a bad --fresnel. */
+bool refract_init(Refractor *rf, const Scene *scene, Surfaces surfaces, const Options *opts)
 {
+    FresnelModel fresnel;
+    if (!fresnel_option(opts, &fresnel))
+        return false;
     *rf = (Refractor){.tracer = tracer_make(scene, surfaces, opts),
                       .fresnel = fresnel,
                       .min_weight = cli_number(opts, "min-weight")};
@@ -37,6 +40,7 @@ void refract_init(Refractor *rf, const Scene *scene, Surfaces surfaces, FresnelM
     rf->tracer.hooks.through_ctx = rf;
     for (int k = 0; k < scene->material_count; k++)
         rf->has_glass |= refract_is_glass(&scene->materials[k]);
+    return true;
 }
 
 /* excerpt: refract-glass-hit */

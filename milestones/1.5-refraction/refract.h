@@ -30,9 +30,7 @@ static inline bool refract_is_glass(const Material *m)
 extern const CliOption refract_options[];
 extern const CliOption *const refract_part_options[];
 
-bool refract_fresnel_option(const Options *opts, FresnelModel *fresnel);
-void refract_init(Refractor *rf, const Scene *scene, Surfaces surfaces, FresnelModel fresnel,
-                  const Options *opts);
+bool refract_init(Refractor *rf, const Scene *scene, Surfaces surfaces, const Options *opts);
 Hit refract_glass_hit(const Scene *scene, const Hit *hit);
 Color refract_radiance(const void *ctx, const Tracer *tr, Ray r, int depth, Path *path);
 

@@ -1,6 +1,7 @@
 /* transmit.c: shadow rays that pass through glass, dimmed by Fresnel and Beer but not bent. */
 #include "transmit.h"
 
+#include "direct.h"
 #include "secondary.h"
 
 /* starter: todo */
@@ -16,9 +17,9 @@ Color transmit_light(const void *ctx, const Tracer *tr, const Hit *hit, Ray r, c
                      int depth, Path *path)
 {
     const Refractor *rf = ctx;
-    Ray shadow = secondary_ray(hit, r, in->dir, tr->offset);
-    /* As in part 1.3: only what lies before the light counts, from the shadow ray's origin. */
-    double tmax = in->distance - vec3_dot(vec3_sub(shadow.origin, hit->point), in->dir);
+    /* Part 1.3's shadow ray, which only what lies before the light blocks. */
+    double tmax = 0;
+    Ray shadow = direct_shadow_ray(tr, hit, r, in, &tmax);
     if (!tracer_blocked(tr, shadow, tmax, depth, path))
         return color(1, 1, 1);
     if (!rf->has_glass)
@@ -27,7 +28,7 @@ Color transmit_light(const void *ctx, const Tracer *tr, const Hit *hit, Ray r, c
     Color through = color(1, 1, 1);
     for (int crossed = 0; crossed < TRANSMIT_MAX_CROSSINGS; crossed++) {
         Hit at;
-        if (!tr->surfaces.hit(tr->surfaces.data, shadow, 0, tmax, &at))
+        if (!tracer_shadow_hit(tr, shadow, tmax, crossed, depth, &at, path))
             return through; /* the rest of the way to the light is clear */
         const Material *m = &tr->scene->materials[at.material];
         if (!refract_is_glass(m))
@@ -40,7 +41,6 @@ Color transmit_light(const void *ctx, const Tracer *tr, const Hit *hit, Ray r, c
         Ray next = secondary_ray(&at, shadow, shadow.dir, tr->offset);
         tmax -= vec3_dot(vec3_sub(next.origin, shadow.origin), shadow.dir);
         shadow = next;
-        path->stats->rays[RAY_SHADOW]++;
     }
     return color(0, 0, 0);
 }

@@ -26,12 +26,11 @@ bool montecarlo_init(MonteCarlo *mc, const Scene *scene, Surfaces surfaces, cons
         fprintf(stderr, "raytra: P and S must be from 1 to %d\n", MONTECARLO_MAX_SIDE);
         return false;
     }
-    FresnelModel fresnel;
-    if (!refract_fresnel_option(opts, &fresnel))
+    if (!refract_init(&mc->below, scene, surfaces, opts))
         return false;
-    refract_init(&mc->below, scene, surfaces, fresnel, opts);
     mc->below.tracer.hooks.light = montecarlo_light;
     mc->below.tracer.hooks.light_ctx = mc;
+    mc->below.tracer.hooks.light_areas = true;
     return true;
 }
 

@@ -13,7 +13,8 @@ static Tracer tracer(Scene *scene)
     return (Tracer){.scene = scene,
                     .surfaces = surfaces_brute_force(scene),
                     .max_depth = 20,
-                    .offset = SECONDARY_OFFSET};
+                    .offset = SECONDARY_OFFSET,
+                    .hooks = tracer_hooks};
 }
 
 /* A hit on the floor y = 0 at the origin, seen from above. */

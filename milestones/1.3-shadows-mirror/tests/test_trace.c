@@ -14,7 +14,8 @@ static Tracer tracer(const Scene *scene, int max_depth)
     return (Tracer){.scene = scene,
                     .surfaces = surfaces_brute_force(scene),
                     .max_depth = max_depth,
-                    .offset = SECONDARY_OFFSET};
+                    .offset = SECONDARY_OFFSET,
+                    .hooks = tracer_hooks};
 }
 
 START_TEST(facing_mirrors_stop_at_the_depth_limit)

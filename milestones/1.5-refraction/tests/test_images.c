@@ -171,6 +171,44 @@ START_TEST(trace_pixel_tells_the_glass)
 }
 END_TEST
 
+START_TEST(trace_pixel_tells_a_shadow_ray_through_glass)
+{
+    /* scenes/trace-glass-shadow.scn, worked out by hand in its comment: the shadow ray
+     * from the wall meets the glass ball's front, crosses it to its back, goes on to the
+     * light, and (1 - 0.04)^2 0.5^2 of the light gets through. */
+    char command[1024];
+    snprintf(command, sizeof command,
+             "'%s' -q --trace-pixel 1,1 '%s/scenes/trace-glass-shadow.scn' > tree 2>&1", RAYTRA,
+             TOP_DIR);
+    ck_assert_int_eq(system(command), 0);
+    static char text[1 << 16];
+    FILE *f = fopen("tree", "r");
+    size_t n = fread(text, 1, sizeof text - 1, f);
+    text[n] = '\0';
+    fclose(f);
+    /* In this order, each stretch of the shadow ray with what it meets. */
+    const char *expected[] = {
+        "\n    shadow ray from (0, 0, ",
+        "trace-glass-shadow.scn:17) at t = 6.07106781\n",
+        "front face",
+        "\n    shadow ray on through glass (crossing 1) from (4.29289, 0, 4.29289) along "
+        "(0.707107, 0, 0.707107)",
+        "trace-glass-shadow.scn:17) at t = 2\n",
+        "back face",
+        "\n    shadow ray on through glass (crossing 2) from (5.70711, 0, 5.70711)",
+        "\n      reaches the light",
+        "\n    what gets through = (0.2304, 0.2304, 0.2304)\n",
+        "\n    adds = (0.162917, 0.162917, 0.162917)\n",
+    };
+    const char *at = text;
+    for (size_t k = 0; k < sizeof expected / sizeof *expected; k++) {
+        const char *found = strstr(at, expected[k]);
+        ck_assert_msg(found != NULL, "'%s' missing, or out of order, in:\n%s", expected[k], text);
+        at = found + strlen(expected[k]);
+    }
+}
+END_TEST
+
 START_TEST(an_open_glass_mesh_is_warned_about_once)
 {
     /* Two glass triangles sharing one edge: four edges belong to one triangle only. */
@@ -227,6 +265,7 @@ static Suite *images_suite(void)
     tcase_add_test(tc, index_one_shows_a_rim_under_schlick);
     tcase_add_test(tc, a_bad_fresnel_model_is_refused);
     tcase_add_test(tc, trace_pixel_tells_the_glass);
+    tcase_add_test(tc, trace_pixel_tells_a_shadow_ray_through_glass);
     tcase_add_test(tc, an_open_glass_mesh_is_warned_about_once);
     tcase_add_test(tc, a_mirror_of_glass_ends);
     suite_add_tcase(s, tc);

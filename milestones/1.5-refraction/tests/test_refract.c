@@ -17,7 +17,8 @@ static void refractor(Refractor *rf, const Scene *scene, int max_depth, FresnelM
     cli_defaults(&opts, refract_part_options);
     cli_set(&opts, "max-depth", OPTION_INT)->whole = max_depth;
     cli_set(&opts, "min-weight", OPTION_NUMBER)->number = 0;
-    refract_init(rf, scene, surfaces_brute_force(scene), fresnel, &opts);
+    cli_set(&opts, "fresnel", OPTION_TEXT)->text = fresnel == FRESNEL_EXACT ? "exact" : "schlick";
+    ck_assert(refract_init(rf, scene, surfaces_brute_force(scene), &opts));
 }
 
 /* Returns the radiance along the camera ray r, as the Refractor's tracer finds it. */
