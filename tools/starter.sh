@@ -109,7 +109,7 @@ filter() { # MODE SOURCE OUTPUT NAME-IN-LIST LIST [ANCHORS]
         match(head, /[A-Za-z_][A-Za-z0-9_]*$/)
         name = substr(head, RSTART, RLENGTH)
         type = trim(substr(head, 1, RSTART - 1))
-        gsub(/(^|[ \t])(static|inline|extern)[ \t]/, " ", type)
+        while (gsub(/(^|[ \t])(static|inline|extern)[ \t]/, " ", type) > 0) ;
         type = trim(type)
         todo = lines + 1
         emit("    /* TODO: " (hint != "" ? hint : "write " name ": see the comment above.") " */")

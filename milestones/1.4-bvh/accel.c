@@ -11,10 +11,9 @@
  * nothing left to free) when out of memory. */
 bool accel_build(Accel *accel, const Scene *scene, AccelMode mode)
 {
-    struct timespec start, end;
-    clock_gettime(CLOCK_MONOTONIC, &start);
+    clock_t start = clock();
     *accel = (Accel){.mode = mode, .scene = scene};
-    bool ok = true;
+    bool ok;
     if (mode == ACCEL_BOXED || mode == ACCEL_SURFACE_BOXES) {
         int n = scene->sphere_count + scene->plane_count + scene->triangle_count;
         accel->boxes = malloc((size_t)(n > 0 ? n : 1) * sizeof *accel->boxes);
@@ -24,9 +23,7 @@ bool accel_build(Accel *accel, const Scene *scene, AccelMode mode)
     } else {
         ok = bvh_build(&accel->bvh, scene);
     }
-    clock_gettime(CLOCK_MONOTONIC, &end);
-    accel->build_seconds =
-        (double)(end.tv_sec - start.tv_sec) + (end.tv_nsec - start.tv_nsec) * 1e-9;
+    accel->build_seconds = (double)(clock() - start) / CLOCKS_PER_SEC;
     if (!ok) {
         fprintf(stderr, "raytra: not enough memory for the bounding boxes of %s\n", scene->path);
         accel_free(accel);
@@ -102,46 +99,38 @@ static bool box_drawn(const Scene *scene, Box b, int s, Ray r, double tmin, doub
 }
 /* end excerpt: accel-box-hit */
 
-/* Where a leaf's box drawn in mode 2 goes. */
-typedef struct {
-    Hit *hit;
-    bool found;
-} LeafBoxes;
-
 /* Mode 2: a leaf's box (its primitives' boxes together) drawn, in the material of its
- * first primitive. */
+ * first primitive, into the Hit that state is. */
 static bool leaf_box(const Bvh *bvh, BvhRef leaf, Ray r, double tmin, double *tmax, void *state)
 {
-    LeafBoxes *lb = state;
     Box box = box_empty();
     for (uint32_t k = leaf.index; k < leaf.index + leaf.count; k++)
         box = box_union(box, box_of_surface(bvh->scene, bvh->prims[k]));
-    lb->found |= box_drawn(bvh->scene, box, bvh->prims[leaf.index], r, tmin, tmax, lb->hit);
+    box_drawn(bvh->scene, box, bvh->prims[leaf.index], r, tmin, tmax, state);
     return false;
 }
 
 /* Modes 1 and 2: the boxes drawn (every surface's, or the BVH's leaves') instead of the
- * spheres and triangles; planes have no box and are drawn as they are. */
+ * spheres and triangles, then the planes, which have no box, as they are; each lowers t
+ * from tmax to what it shows, so something was found when t < tmax. */
 static bool boxes_hit(const void *data, Ray r, double tmin, double tmax, Hit *hit)
 {
     const Accel *accel = data;
     const Scene *scene = accel->scene;
-    LeafBoxes lb = {hit, false};
+    double t = tmax;
     long tests = 0;
     if (accel->mode == ACCEL_LEAF_BOXES)
-        bvh_traverse(&accel->bvh, r, tmin, &tmax, leaf_box, &lb, &tests);
+        bvh_traverse(&accel->bvh, r, tmin, &t, leaf_box, hit, &tests);
     int spheres = scene->sphere_count, planes = spheres + scene->plane_count;
     for (int s = 0; accel->mode == ACCEL_SURFACE_BOXES && s < planes + scene->triangle_count; s++)
         if (s < spheres || s >= planes)
-            lb.found |= box_drawn(scene, accel->boxes[s], s, r, tmin, &tmax, hit);
-    bool found = lb.found;
-    for (int k = 0; k < scene->plane_count; k++)
-        if (world_intersect(scene, scene->sphere_count + k, r, tmin, tmax, hit)) {
+            box_drawn(scene, accel->boxes[s], s, r, tmin, &t, hit);
+    for (int s = spheres; s < planes; s++)
+        if (world_intersect(scene, s, r, tmin, t, hit)) {
             world_complete_hit(scene, r, hit);
-            tmax = hit->t;
-            found = true;
+            t = hit->t;
         }
-    return found;
+    return t < tmax;
 }
 
 /* Modes 1 and 2: whether any box drawn, or any plane, lies on the ray. */
@@ -168,13 +157,11 @@ static bool bvh_surfaces_blocked(const void *data, Ray r, double tmin, double tm
 /* Returns the Surfaces that answer the tracer's questions in accel's mode. */
 Surfaces accel_surfaces(const Accel *accel)
 {
-    switch (accel->mode) {
-    case ACCEL_BOXED: return (Surfaces){boxed_hit, boxed_blocked, accel};
-    case ACCEL_SURFACE_BOXES: return (Surfaces){boxes_hit, boxes_blocked, accel};
-    case ACCEL_LEAF_BOXES: return (Surfaces){boxes_hit, boxes_blocked, accel};
-    case ACCEL_BVH: break;
-    }
-    return (Surfaces){bvh_surfaces_hit, bvh_surfaces_blocked, accel};
+    if (accel->mode == ACCEL_BOXED)
+        return (Surfaces){boxed_hit, boxed_blocked, accel};
+    if (accel->mode == ACCEL_BVH)
+        return (Surfaces){bvh_surfaces_hit, bvh_surfaces_blocked, accel};
+    return (Surfaces){boxes_hit, boxes_blocked, accel};
 }
 
 /* Returns how many boxes and primitives ray r is tested against to find its closest hit

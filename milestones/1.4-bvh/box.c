@@ -1,5 +1,4 @@
-/* box.c: building axis-aligned boxes, the boxes of spheres and triangles, and the face a ray meets.
- */
+/* box.c: making boxes, the boxes of spheres and triangles, and the face of a box a ray meets. */
 #include "box.h"
 
 #include <math.h>
@@ -14,13 +13,6 @@ Box box_empty(void)
 Vec3 box_center(Box b)
 {
     return vec3_scale(vec3_add(b.lo, b.hi), 0.5);
-}
-
-/* Tells whether box inner lies inside box outer (faces may touch). */
-bool box_contains(Box outer, Box inner)
-{
-    return outer.lo.x <= inner.lo.x && outer.lo.y <= inner.lo.y && outer.lo.z <= inner.lo.z &&
-           inner.hi.x <= outer.hi.x && inner.hi.y <= outer.hi.y && inner.hi.z <= outer.hi.z;
 }
 
 /* excerpt: box-pad */
@@ -101,20 +93,12 @@ bool box_hit_face(Box b, Ray r, double tmin, double tmax, double *t, Vec3 *norma
             axis1 = a;
         }
     }
-    if (!(t0 <= t1))
+    bool enters = t0 > tmin && t0 < tmax;
+    int axis = enters ? axis0 : axis1;
+    *t = enters ? t0 : t1;
+    if (!(t0 <= t1 && *t > tmin && *t < tmax))
         return false;
-    int axis;
-    if (t0 > tmin && t0 < tmax) {
-        *t = t0;
-        axis = axis0;
-    } else if (t1 > tmin && t1 < tmax) {
-        *t = t1;
-        axis = axis1;
-    } else {
-        return false;
-    }
-    /* The face's normal is +-e_axis; we show the side that faces the ray's origin, so a
-     * box seen from inside is lit like one seen from outside. */
+    /* +-e_axis, the side facing the ray's origin: a box seen from inside is lit as from outside. */
     double side = d[axis] > 0 ? -1 : 1;
     *normal = vec3(axis == 0 ? side : 0, axis == 1 ? side : 0, axis == 2 ? side : 0);
     return true;

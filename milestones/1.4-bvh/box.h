@@ -13,8 +13,7 @@ typedef struct {
     Vec3 lo, hi;
 } Box;
 
-/* A ray made ready for slab tests: 1/d once per ray, not once per box. A zero
- * component of d gives an infinite inverse of the same sign (1/+0 = +inf, 1/-0 = -inf). */
+/* A ray made ready for slab tests: 1/d once per ray, not once per box (1/+-0 = +-inf). */
 typedef struct {
     Vec3 origin;
     Vec3 inv_dir;
@@ -28,13 +27,11 @@ static inline BoxRay box_ray(Ray r)
 }
 
 /* excerpt: box-slab */
-/* Narrows [*t0, *t1] to the t where the ray lies between the two planes x_axis = lo and
- * x_axis = hi of one slab (the textbook's slab test; the lecture has no slide on
- * boxes). Entering is at the nearer plane: hi first when the ray travels towards -x.
- * A ray parallel to the slab gets (lo - o) * inf, which is -inf or +inf, and so no
- * constraint or an empty interval, as it should; but a ray starting exactly on a
- * plane of the slab gets 0 * inf = NaN. Every comparison with NaN is false, so the two ifs below
- * leave the interval as it was: the plane counts as part of the box, which is closed. */
+/* Narrows [*t0, *t1] to the t where the ray lies between the planes x_axis = lo and
+ * x_axis = hi (the textbook's slab test): it enters at the nearer plane, hi first when
+ * it travels towards -x. Parallel to the slab, (lo - o) * inf is +-inf: no constraint,
+ * or an empty interval. On a plane of the slab, 0 * inf = NaN, which every comparison
+ * below rejects: the plane counts as part of the box, which is closed. */
 static inline void box_slab(double lo, double hi, double o, double inv, double *t0, double *t1)
 {
     double near = (lo - o) * inv, far = (hi - o) * inv;
@@ -61,7 +58,7 @@ static inline bool box_hit(Box b, const BoxRay *r, double tmin, double tmax, dou
 }
 /* end excerpt: box-slab */
 
-/* Returns the smaller of a and b (inline: the build calls it hundreds of millions of times). */
+/* Returns the smaller of a and b. */
 static inline double box_min(double a, double b)
 {
     return a < b ? a : b;
@@ -97,7 +94,6 @@ static inline double box_half_area(Box b)
 
 Box box_empty(void);
 Vec3 box_center(Box b);
-bool box_contains(Box outer, Box inner);
 Box box_pad(Box b);
 Box box_of_surface(const Scene *scene, int s);
 Box box_of_sphere(const Sphere *s);

@@ -12,7 +12,7 @@
 /* Below this depth the SAH chooses splits; deeper, halving the primitives bounds the depth. */
 #define SAH_MAX_DEPTH 32
 
-/* Returns coordinate axis of v. */
+/* Returns coordinate axis (0, 1, 2: x, y, z) of v. */
 static inline double axis_of(Vec3 v, int axis)
 {
     return axis == 0 ? v.x : axis == 1 ? v.y : v.z;
@@ -137,8 +137,6 @@ static BvhRef build_node(BvhBuilder *b, int begin, int end, int depth, Box *box_
     int n = end - begin;
     int mid = n > 1 && depth < SAH_MAX_DEPTH ? bvh_split(b, begin, end, box, centroids) : -1;
     if (mid <= begin || mid >= end) {
-        /* No split pays, or the tree is deep: a leaf, unless it would hold too many
-         * primitives; then halving them as they are beats no split at all. */
         if (n <= BVH_MAX_LEAF) {
             b->leaf_count++;
             return (BvhRef){(uint32_t)begin, (uint32_t)n};
@@ -210,6 +208,34 @@ size_t bvh_bytes(const Bvh *bvh)
            (size_t)(bvh->prim_count + (int)bvh->planes.count) * sizeof *bvh->prims;
 }
 
+/* A subtree waiting on the traversal's stack, and where the ray may enter its box. */
+typedef struct {
+    BvhRef ref;
+    float entry;
+} Waiting;
+
+/* starter: todo */
+/* excerpt: bvh-nearer-child */
+/* Returns the child of node to visit next, of those the ray meets (bit k of hits set,
+ * as bvh_node_hit returns them, for child k; one at least): the only one, or of two
+ * the nearer by entry (child 0 when as near), the farther then pushed onto stack at
+ * *top with its entry. tests/test_bvh.c: traverse_nearer_first_and_stops. */
+static inline BvhRef nearer_child(const BvhNode *node, int hits, const float entry[2],
+                                  Waiting *stack, int *top)
+{
+    if (hits == 1)
+        return node->child[0];
+    if (hits == 2)
+        return node->child[1];
+    if (entry[1] < entry[0]) {
+        stack[(*top)++] = (Waiting){node->child[0], entry[0]};
+        return node->child[1];
+    }
+    stack[(*top)++] = (Waiting){node->child[1], entry[1]};
+    return node->child[0];
+}
+/* end excerpt: bvh-nearer-child */
+
 /* starter: todo */
 /* excerpt: bvh-traverse */
 /* Visits every leaf whose box ray r may meet with tmin <= t <= *tmax, nearer boxes
@@ -229,10 +255,9 @@ bool bvh_traverse(const Bvh *bvh, Ray r, double tmin, double *tmax, BvhLeafFn le
     if (bvh->prim_count == 0 || !box_hit(bvh->box, &br, tmin, *tmax, &t_root))
         return false;
     FloatRay fr = box_float_ray(r, tmin, bvh->in_range);
-    float entry[2];
-    BvhRef stack[BVH_MAX_DEPTH], at = bvh->root; /* subtrees still to visit */
-    float stack_entry[BVH_MAX_DEPTH];            /* where the ray may enter them */
+    Waiting stack[BVH_MAX_DEPTH];
     int top = 0;
+    BvhRef at = bvh->root;
     for (;;) {
         if (at.count > 0) {
             *tests += at.count;
@@ -240,26 +265,11 @@ bool bvh_traverse(const Bvh *bvh, Ray r, double tmin, double *tmax, BvhLeafFn le
                 return true;
         } else {
             const BvhNode *node = &bvh->nodes[at.index];
+            float entry[2];
             int hits = bvh_node_hit(node, &fr, box_float_tmax(*tmax), entry);
             *tests += 2;
-            if (hits == 3 && entry[1] < entry[0]) { /* both, child 1 the nearer: child 0 waits */
-                stack[top] = node->child[0];
-                stack_entry[top++] = entry[0];
-                at = node->child[1];
-                continue;
-            }
-            if (hits == 3) { /* both, child 0 the nearer (or as near): child 1 waits */
-                stack[top] = node->child[1];
-                stack_entry[top++] = entry[1];
-                at = node->child[0];
-                continue;
-            }
-            if (hits == 1) { /* child 0 alone */
-                at = node->child[0];
-                continue;
-            }
-            if (hits == 2) { /* child 1 alone */
-                at = node->child[1];
+            if (hits != 0) {
+                at = nearer_child(node, hits, entry, stack, &top);
                 continue;
             }
         }
@@ -268,8 +278,8 @@ bool bvh_traverse(const Bvh *bvh, Ray r, double tmin, double *tmax, BvhLeafFn le
             if (top == 0)
                 return false;
             top--;
-        } while (!box_float_reaches(&fr, stack_entry[top], box_float_tmax(*tmax)));
-        at = stack[top];
+        } while (!box_float_reaches(&fr, stack[top].entry, box_float_tmax(*tmax)));
+        at = stack[top].ref;
     }
 }
 /* end excerpt: bvh-traverse */

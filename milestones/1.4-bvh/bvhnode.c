@@ -1,21 +1,15 @@
 /* bvhnode.c: a BVH node's float boxes, and the float ray that tests them without missing a box.
  *
- * Why the float test never misses a box that the exact (double) ray meets. The bound
- * is pbrt-v4's (Pharr, Jakob, Humphreys, "Physically Based Rendering", 4th ed., 6.8.2
- * "Conservative Ray-Bounds Intersections"; Ize, "Robust BVH Ray Traversal", JCGT 2(2),
- * 2013): with u = 2^-24 and gamma(n) = n u / (1 - n u), a slab's t computed as
- * fl(fl(face - o) * fl(1/d)) is its exact t times (1 + theta), |theta| <= gamma(3); so
- * an exit grown by 1 + 2 gamma(3) is never before its entry when the exact exit is not.
- * raytra grows every exit by 2^-20 = 16 u (1/d for the far faces and tmax), more than
- * 2 gamma(3) and the roundings of the grown 1/d and tmax themselves. One term more than
- * pbrt's, because raytra's rays are in double: rounding the origin to float moves a
- * face's t by at most s = |o - o_float| |1/d| on each axis, so the test is
- * t0 <= t1 + 3 s (an entry early by s, an exit late by s, and the rounding of both),
- * with FLT_MIN more for products below float's normal range. The boxes are rounded
- * outwards, so each holds every double box below it. Out of the range where these
- * bounds hold (a coordinate past 2^60, a 1/d past 2^+-60, tmin < 0) every box is met.
- * docs/1.4-bvh.md works the argument through; tests/test_bvh.c tries it on 400 000
- * boxes. */
+ * The bound is pbrt-v4's (Pharr, Jakob, Humphreys, "Physically Based Rendering", 4th ed.,
+ * 6.8.2; Ize, "Robust BVH Ray Traversal", JCGT 2(2), 2013): with u = 2^-24 and gamma(n)
+ * = n u / (1 - n u), a slab's t computed as fl(fl(face - o) * fl(1/d)) is its exact t
+ * times 1 + theta, |theta| <= gamma(3), so an exit grown by 1 + 2 gamma(3) is never before
+ * its entry when the exact exit is not. raytra grows exits by 2^-20 = 16 u (1/d of the
+ * far faces, and tmax), which covers that and its own roundings. Rounding raytra's double
+ * origin to float moves a t by at most s = |o - o_float| |1/d| an axis: the test is
+ * t0 <= t1 + 3 s + FLT_MIN (products below float's normal range). The boxes are rounded
+ * outwards. Out of range (a coordinate past 2^60, |1/d| past 2^+-60, tmin < 0) every box
+ * is met. docs/1.4-bvh.md works it through; tests/test_bvh.c tries it on 400 000 boxes. */
 #include "bvhnode.h"
 
 #include <float.h>
@@ -23,7 +17,7 @@
 
 /* Returns a float no greater than x: x rounded, and moved down past x when rounding
  * went up (by 2^-23 of x, at least one float step; 2^-149 for the smallest floats). */
-float box_float_below(double x)
+static float box_float_below(double x)
 {
     float f = (float)x;
     return (double)f <= x ? f : (float)(x - fabs(x) * 0x1p-23 - 0x1p-149);
@@ -54,11 +48,9 @@ bool box_float_in_range(Box box)
 }
 
 /* excerpt: box-float-ray-make */
-/* Makes ray r, from tmin on, ready for bvh_node_hit: the slack is 3 s + FLT_MIN (see
- * the top of this file). An axis with d = 0 adds nothing to s: no float lies between o
- * and its rounding, so the side of each plane the origin is on stays the same (or the
- * product is 0 * inf, NaN, which the test leaves out). Out of range, every t is 0 and
- * the slack infinite: the ray meets every box. */
+/* Makes ray r, from tmin on, ready for bvh_node_hit: the slack is 3 s + FLT_MIN. An axis
+ * with d = 0 adds nothing to s: rounding o crosses no plane (or makes 0 * inf, NaN, which
+ * the test leaves out). Out of range, every t is 0 and the slack infinite. */
 FloatRay box_float_ray(Ray r, double tmin, bool in_range)
 {
     FloatRay fr = {.tmin = (float)tmin};

@@ -24,10 +24,9 @@ typedef struct {
 } BvhNode;
 /* end excerpt: bvh-node */
 
-/* A ray made ready, once, for bvh_node_hit: its origin in float, 1/d (grown by 2^-20
- * for the far faces), which bound (0 or 1) it enters and leaves each axis's slab by,
- * and the slack that rounding the origin needs. A number the two children share is
- * there twice, so that both are tested side by side. */
+/* A ray made ready once for bvh_node_hit: its origin in float, 1/d (grown by 2^-20 for
+ * the far faces), the bound (0 or 1) it enters and leaves each slab by, the slack; each
+ * number twice, once a child, so that both are tested side by side. */
 typedef struct {
     float origin[3][2];
     float inv_near[3][2], inv_far[3][2];
@@ -42,16 +41,15 @@ static inline float box_float_tmax(double tmax)
     return (float)(tmax * (1 + 0x1p-20));
 }
 
-/* Tells whether a float interval [t0, t1] may hold a t where the exact ray meets the
- * box (bvhnode.c gives the bound that makes it so). */
+/* Tells whether a float interval [t0, t1] may hold a t where the exact ray meets the box. */
 static inline bool box_float_reaches(const FloatRay *fr, float t0, float t1)
 {
     return t0 <= t1 + fr->slack;
 }
 
 /* Narrows each child k's interval [t0[k], t1[k]] to where the ray is in its slab on
- * axis a. The loop over k is one instruction for both children. A NaN (0 * inf: a ray
- * parallel to a face starts in its plane) leaves t0 and t1 as they are. */
+ * axis a, as box_slab does (a NaN leaves them as they are); the loop over k is one
+ * instruction for both children. */
 static inline void node_slab(const BvhNode *node, const FloatRay *fr, int a, float t0[2],
                              float t1[2])
 {
@@ -83,7 +81,6 @@ static inline int bvh_node_hit(const BvhNode *node, const FloatRay *fr, float tm
 
 void bvh_node_set(BvhNode *node, int k, Box box, BvhRef ref);
 Box bvh_node_box(const BvhNode *node, int k);
-float box_float_below(double x);
 bool box_float_in_range(Box box);
 FloatRay box_float_ray(Ray r, double tmin, bool in_range);
 

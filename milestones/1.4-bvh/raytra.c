@@ -1,5 +1,4 @@
-/* raytra.c: part 1.4: the tracer of part 1.3 behind bounding boxes and a bounding volume hierarchy.
- */
+/* raytra.c: part 1.4: part 1.3's tracer behind bounding boxes and a bounding volume hierarchy. */
 #include <stdio.h>
 #include <stdlib.h>
 
@@ -51,22 +50,19 @@ static void probe_pixel(const void *ctx, int i, int j, Probe *probe)
     probe->tests = accel_count_tests(&part->accel, r);
 }
 
-/* Prints the size and build time of the BVH, or of the boxes, after the summary line. */
+/* Prints the size and build time of the BVH (modes 2 and 3) after the summary line. */
 static void report(const void *ctx, const RenderResult *result)
 {
     (void)result;
     const Accel *a = &((const Part14 *)ctx)->accel;
-    if (a->mode == ACCEL_BOXED || a->mode == ACCEL_SURFACE_BOXES) {
-        fprintf(stderr, "raytra: mode %d: %d boxes, made in %.1f ms\n", a->mode,
-                a->scene->sphere_count + a->scene->triangle_count, a->build_seconds * 1e3);
-        return;
-    }
     const Bvh *b = &a->bvh;
-    fprintf(stderr,
-            "raytra: mode %d: BVH of %d primitives: %d interior nodes, %d leaves, depth %d, %.1f "
-            "bytes per primitive, built in %.1f ms\n",
-            a->mode, b->prim_count, b->node_count, b->leaf_count, b->depth,
-            b->prim_count > 0 ? (double)bvh_bytes(b) / b->prim_count : 0.0, a->build_seconds * 1e3);
+    if (a->mode == ACCEL_LEAF_BOXES || a->mode == ACCEL_BVH)
+        fprintf(stderr,
+                "raytra: mode %d: BVH of %d primitives: %d interior nodes, %d leaves, depth %d, "
+                "%.1f bytes per primitive, built in %.1f ms\n",
+                a->mode, b->prim_count, b->node_count, b->leaf_count, b->depth,
+                b->prim_count > 0 ? (double)bvh_bytes(b) / b->prim_count : 0.0,
+                a->build_seconds * 1e3);
 }
 
 /* Frees the part's state. */

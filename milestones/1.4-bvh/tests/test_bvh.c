@@ -108,6 +108,13 @@ static const char *surface_name(const Scene *scene, int s, char *buf, size_t siz
     return buf;
 }
 
+/* Tells whether box inner lies inside box outer (faces may touch). */
+static bool box_contains(Box outer, Box inner)
+{
+    return outer.lo.x <= inner.lo.x && outer.lo.y <= inner.lo.y && outer.lo.z <= inner.lo.z &&
+           inner.hi.x <= outer.hi.x && inner.hi.y <= outer.hi.y && inner.hi.z <= outer.hi.z;
+}
+
 /* What walking a hierarchy found, and the first thing wrong with it, in words. */
 typedef struct {
     const Bvh *bvh;
@@ -395,9 +402,9 @@ START_TEST(traverse_nearer_first_and_stops)
     for (int k = 0; k < 2; k++) {
         long tests = bvh_count_tests(&bvh, ray(from[k], along[k]));
         ck_assert_msg(tests == 4,
-                      "bvh_traverse (with leaf_closest) along %sz: %ld boxes and triangles tested, "
-                      "not 4: the nearer child first, and a subtree beyond the closest hit (*tmax, "
-                      "which leaf_closest lowers) not visited",
+                      "bvh_traverse (nearer_child, leaf_closest) along %sz: %ld boxes and triangles "
+                      "tested, not 4: the nearer child first, and a subtree beyond the closest hit "
+                      "(*tmax, which leaf_closest lowers) not visited",
                       k == 0 ? "-" : "+", tests);
     }
     long tests = 0;
