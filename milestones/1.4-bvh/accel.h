@@ -36,5 +36,6 @@ bool accel_build(Accel *accel, const Scene *scene, AccelMode mode);
 Surfaces accel_surfaces(const Accel *accel);
 void accel_free(Accel *accel);
 long accel_count_tests(const Accel *accel, Ray r);
+AccelMode accel_mode(const Options *opts);
 
 #endif

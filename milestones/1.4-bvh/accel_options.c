@@ -15,3 +15,9 @@ const CliOption accel_options[] = {
 
 const CliOption *const accel_part_options[] = {shade_options, trace_options, accel_options,
                                                NULL};
+
+/* Returns the mode the command line asks for (the course's third argument, or --mode). */
+AccelMode accel_mode(const Options *opts)
+{
+    return (AccelMode)cli_int(opts, "mode");
+}

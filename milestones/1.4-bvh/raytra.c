@@ -22,7 +22,7 @@ static bool setup(const Scene *scene, const Options *opts, void **ctx)
     Part14 *part = malloc(sizeof *part);
     if (part == NULL)
         return false;
-    if (!accel_build(&part->accel, scene, (AccelMode)cli_int(opts, "mode"))) {
+    if (!accel_build(&part->accel, scene, accel_mode(opts))) {
         free(part);
         return false;
     }
