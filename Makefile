@@ -19,8 +19,9 @@
 #   make mistakes    render the gallery of common mistakes and write docs/mistakes.md
 #   make check-statistics  part 1.6's grading by statistics: right programs with 2 seeds pass,
 #                    right and wrong solutions pass and fail (tests/mc-variants, a few minutes)
-#   make calibrate-statistics  the statistical grading's false-fail rate over 2000 seeds a
-#                    scene and right program (MC_COUNT, MC_OUT=DIR keeps the verdicts; hours)
+#   make calibrate-statistics  the statistical grading's false-fail rate over 350 seeds a
+#                    scene and right program, 2,100 renders a scene (MC_COUNT, MC_OUT=DIR
+#                    keeps the verdicts; about an hour on two idle cores)
 #   make statistics-figure  draw the z-score heat maps docs/grading.md shows
 #   make check-bvh-variants  part 1.4's grading: correct BVHs unlike raytra's pass every scene,
 #                    wrong ones fail, saying why (tests/bvh-variants, a few minutes)
@@ -241,9 +242,9 @@ check-bvh-variants:
 	@$(SUBMAKE) -C tests/bvh-variants
 	@tests/bvh-variants/run.sh $(TOOLS_DIR)/$(BUILD)/grade tests/bvh-variants/$(BUILD)
 
-# The false-fail rate of the statistical grading, measured: MC_COUNT seeds (default 2000)
-# of every right program and graded scene, in PNG, PFM and EXR (hours on two cores).
-MC_COUNT ?= 2000
+# The false-fail rate of the statistical grading, measured: MC_COUNT seeds (default 350)
+# of each of the six right programs and graded scene, in PNG, PFM and EXR (an hour or so).
+MC_COUNT ?= 350
 calibrate-statistics:
 	$(DEPS_STEP)
 	@$(SUBMAKE) all
