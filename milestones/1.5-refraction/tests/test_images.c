@@ -191,8 +191,8 @@ START_TEST(trace_pixel_tells_a_shadow_ray_through_glass)
         "\n    shadow ray from (0, 0, ",
         "trace-glass-shadow.scn:17) at t = 6.07106781\n",
         "front face",
-        "\n    shadow ray on through glass (crossing 1) from (4.29289, 0, 4.29289) along "
-        "(0.707107, 0, 0.707107)",
+        ("\n    shadow ray on through glass (crossing 1) from (4.29289, 0, 4.29289) along "
+         "(0.707107, 0, 0.707107)"),
         "trace-glass-shadow.scn:17) at t = 2\n",
         "back face",
         "\n    shadow ray on through glass (crossing 2) from (5.70711, 0, 5.70711)",
