@@ -81,6 +81,24 @@ static inline double vec3_max_abs(Vec3 a)
     return fmax(fabs(a.x), fmax(fabs(a.y), fabs(a.z)));
 }
 
+/* Returns the smaller of each component of a and b (b's where they do not compare). */
+static inline Vec3 vec3_min(Vec3 a, Vec3 b)
+{
+    return vec3(a.x < b.x ? a.x : b.x, a.y < b.y ? a.y : b.y, a.z < b.z ? a.z : b.z);
+}
+
+/* Returns the larger of each component of a and b (b's where they do not compare). */
+static inline Vec3 vec3_max(Vec3 a, Vec3 b)
+{
+    return vec3(a.x > b.x ? a.x : b.x, a.y > b.y ? a.y : b.y, a.z > b.z ? a.z : b.z);
+}
+
+/* Returns component axis of a: x, y, z for 0, 1, 2. */
+static inline double vec3_axis(Vec3 a, int axis)
+{
+    return axis == 0 ? a.x : axis == 1 ? a.y : a.z;
+}
+
 /* Tells whether every component is a finite number (no NaN, no infinity). */
 static inline bool vec3_is_finite(Vec3 a)
 {

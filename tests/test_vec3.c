@@ -34,6 +34,11 @@ START_TEST(lengths)
     /* Within rounding: normalising multiplies by the reciprocal of the length. */
     ck_assert_vec3_near(vec3_normalize(vec3(0, -3, 4)), vec3(0, -0.6, 0.8), 1e-15);
     ck_assert_double_eq(vec3_max_abs(vec3(-7, 2, 5)), 7);
+    ck_assert_vec3_near(vec3_min(vec3(1, -2, 3), vec3(0, 5, INFINITY)), vec3(0, -2, 3), 0);
+    ck_assert_vec3_near(vec3_max(vec3(1, -2, 3), vec3(0, 5, -INFINITY)), vec3(1, 5, 3), 0);
+    ck_assert_double_eq(vec3_axis(vec3(4, 5, 6), 0), 4);
+    ck_assert_double_eq(vec3_axis(vec3(4, 5, 6), 1), 5);
+    ck_assert_double_eq(vec3_axis(vec3(4, 5, 6), 2), 6);
     ck_assert(vec3_is_finite(vec3(1, 2, 3)));
     ck_assert(!vec3_is_finite(vec3(1, NAN, 3)));
     ck_assert(!vec3_is_finite(vec3(1, 2, -INFINITY)));

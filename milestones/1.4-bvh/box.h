@@ -58,23 +58,10 @@ static inline bool box_hit(Box b, const BoxRay *r, double tmin, double tmax, dou
 }
 /* end excerpt: box-slab */
 
-/* Returns the smaller of a and b. */
-static inline double box_min(double a, double b)
-{
-    return a < b ? a : b;
-}
-
-/* Returns the larger of a and b. */
-static inline double box_max(double a, double b)
-{
-    return a > b ? a : b;
-}
-
 /* Returns the smallest box holding a and b. */
 static inline Box box_union(Box a, Box b)
 {
-    return (Box){vec3(box_min(a.lo.x, b.lo.x), box_min(a.lo.y, b.lo.y), box_min(a.lo.z, b.lo.z)),
-                 vec3(box_max(a.hi.x, b.hi.x), box_max(a.hi.y, b.hi.y), box_max(a.hi.z, b.hi.z))};
+    return (Box){vec3_min(a.lo, b.lo), vec3_max(a.hi, b.hi)};
 }
 
 /* Returns the smallest box holding b and the point p. */

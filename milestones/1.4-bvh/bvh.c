@@ -12,12 +12,6 @@
 /* Below this depth the SAH chooses splits; deeper, halving the primitives bounds the depth. */
 #define SAH_MAX_DEPTH 32
 
-/* Returns coordinate axis (0, 1, 2: x, y, z) of v. */
-static inline double axis_of(Vec3 v, int axis)
-{
-    return axis == 0 ? v.x : axis == 1 ? v.y : v.z;
-}
-
 /* Returns the bin of centroid coordinate c, for bins of width 1 / scale from lo. */
 static inline int bin_of(double c, double lo, double scale)
 {
@@ -45,46 +39,36 @@ int bvh_split(BvhBuilder *b, int begin, int end, Box box, Box centroids)
     double area = box_half_area(box);
     if (!(area > 0))
         return -1; /* a point or a line: every split looks free, the SAH cannot choose */
-    int n = end - begin;
-    /* The bins of the three axes are filled in one pass over the primitives. */
-    double lo[3], scale[3];
-    Box bin_box[3][BVH_BINS];
-    int bin_count[3][BVH_BINS] = {{0}};
-    for (int a = 0; a < 3; a++) {
-        lo[a] = axis_of(centroids.lo, a);
-        double extent = axis_of(centroids.hi, a) - lo[a];
-        /* Every centroid on one plane: nothing to split along this axis. */
-        scale[a] = extent > 0 ? BVH_BINS / extent : 0;
-        for (int k = 0; k < BVH_BINS; k++)
-            bin_box[a][k] = box_empty();
-    }
-    for (int k = begin; k < end; k++) {
-        int p = b->prims[k];
-        for (int a = 0; a < 3; a++) {
-            int bin = bin_of(axis_of(b->centroids[p], a), lo[a], scale[a]);
-            bin_box[a][bin] = box_union(bin_box[a][bin], b->boxes[p]);
-            bin_count[a][bin]++;
-        }
-    }
+    int n = end - begin, best_axis = -1, best_bin = 0;
     double best_cost = n * COST_INTERSECT;
-    int best_axis = -1, best_bin = 0;
     for (int a = 0; a < 3; a++) {
-        if (scale[a] == 0)
-            continue;
+        double lo = vec3_axis(centroids.lo, a), extent = vec3_axis(centroids.hi, a) - lo;
+        if (!(extent > 0))
+            continue; /* every centroid on one plane: nothing to split along this axis */
+        /* Each bin's primitives: how many, and the box that holds them. */
+        Box bin_box[BVH_BINS];
+        int bin_count[BVH_BINS] = {0};
+        for (int k = 0; k < BVH_BINS; k++)
+            bin_box[k] = box_empty();
+        for (int k = begin; k < end; k++) {
+            int p = b->prims[k], bin = bin_of(vec3_axis(b->centroids[p], a), lo, BVH_BINS / extent);
+            bin_box[bin] = box_union(bin_box[bin], b->boxes[p]);
+            bin_count[bin]++;
+        }
         /* One sweep from the right gathers A_R N_R for each plane, one from the left A_L N_L. */
         double right_cost[BVH_BINS];
         Box right = box_empty();
         int right_n = 0;
         for (int k = BVH_BINS - 1; k > 0; k--) {
-            right = box_union(right, bin_box[a][k]);
-            right_n += bin_count[a][k];
+            right = box_union(right, bin_box[k]);
+            right_n += bin_count[k];
             right_cost[k] = box_half_area(right) * right_n;
         }
         Box left = box_empty();
         int left_n = 0;
         for (int k = 1; k < BVH_BINS; k++) {
-            left = box_union(left, bin_box[a][k - 1]);
-            left_n += bin_count[a][k - 1];
+            left = box_union(left, bin_box[k - 1]);
+            left_n += bin_count[k - 1];
             if (left_n == 0 || left_n == n)
                 continue;
             double cost = COST_TRAVERSE +
@@ -99,10 +83,11 @@ int bvh_split(BvhBuilder *b, int begin, int end, Box box, Box centroids)
     if (best_axis < 0)
         return -1;
     /* Partition in place: primitives of bins below best_bin to the front. */
+    double lo = vec3_axis(centroids.lo, best_axis);
+    double scale = BVH_BINS / (vec3_axis(centroids.hi, best_axis) - lo);
     int i = begin, j = end - 1;
     while (i <= j) {
-        if (bin_of(axis_of(b->centroids[b->prims[i]], best_axis), lo[best_axis], scale[best_axis]) <
-            best_bin) {
+        if (bin_of(vec3_axis(b->centroids[b->prims[i]], best_axis), lo, scale) < best_bin) {
             i++;
         } else {
             int swap = b->prims[i];
@@ -113,6 +98,17 @@ int bvh_split(BvhBuilder *b, int begin, int end, Box box, Box centroids)
     return i;
 }
 /* end excerpt: bvh-sah */
+
+/* Stores child k of node: where it is, and its box. */
+void bvh_node_set(BvhNode *node, int k, Box box, BvhRef ref)
+{
+    double lo[3] = {box.lo.x, box.lo.y, box.lo.z}, hi[3] = {box.hi.x, box.hi.y, box.hi.z};
+    for (int a = 0; a < 3; a++) {
+        node->bound[0][a][k] = lo[a];
+        node->bound[1][a][k] = hi[a];
+    }
+    node->child[k] = ref;
+}
 
 /* starter: todo */
 /* excerpt: bvh-build-node */
@@ -176,15 +172,11 @@ bool bvh_build(Bvh *bvh, const Scene *scene)
         b.boxes[s] = box_of_surface(scene, s);
         b.centroids[s] = plane ? vec3(0, 0, 0) : box_center(b.boxes[s]);
     }
-    Box box = box_empty();
+    bvh->box = box_empty();
     if (ok && n > 0)
-        bvh->root = build_node(&b, 0, n, 0, &box);
+        bvh->root = build_node(&b, 0, n, 0, &bvh->box);
     BvhNode *fit = ok ? realloc(b.nodes, (size_t)(b.node_count + 1) * sizeof *fit) : NULL;
     bvh->nodes = fit != NULL ? fit : b.nodes;
-    BvhNode rounded;
-    bvh_node_set(&rounded, 0, box, bvh->root);
-    bvh->box = bvh_node_box(&rounded, 0);
-    bvh->in_range = box_float_in_range(box);
     bvh->node_count = b.node_count, bvh->leaf_count = b.leaf_count, bvh->depth = b.depth;
     free(b.boxes);
     free(b.centroids);
@@ -211,7 +203,7 @@ size_t bvh_bytes(const Bvh *bvh)
 /* A subtree waiting on the traversal's stack, and where the ray may enter its box. */
 typedef struct {
     BvhRef ref;
-    float entry;
+    double entry;
 } Waiting;
 
 /* starter: todo */
@@ -220,7 +212,7 @@ typedef struct {
  * as bvh_node_hit returns them, for child k; one at least): the only one, or of two
  * the nearer by entry (child 0 when as near), the farther then pushed onto stack at
  * *top with its entry. tests/test_bvh.c: traverse_nearer_first_and_stops. */
-static inline BvhRef nearer_child(const BvhNode *node, int hits, const float entry[2],
+static inline BvhRef nearer_child(const BvhNode *node, int hits, const double entry[2],
                                   Waiting *stack, int *top)
 {
     if (hits == 1)
@@ -240,12 +232,12 @@ static inline BvhRef nearer_child(const BvhNode *node, int hits, const float ent
 /* excerpt: bvh-traverse */
 /* Visits every leaf whose box ray r may meet with tmin <= t <= *tmax, nearer boxes
  * first, calling leaf for each; stops, returning true, when leaf returns true. A leaf
- * may lower *tmax: the boxes are then tested up to the new one. A node's two children
- * are tested by bvh_node_hit with box_float_tmax(*tmax) (the root's, bvh->box, by box_hit);
- * a subtree that waited on the stack is visited only if box_float_reaches from its
- * entry to box_float_tmax(*tmax). Adds to *tests the boxes tested (the root's, two a
- * node) and the primitives of the leaves visited. No recursion: a stack of BVH_MAX_DEPTH.
- * tests/test_bvh.c: traverse_nearer_first_and_stops, and the comparisons with brute force. */
+ * may lower *tmax: the boxes are then tested up to the new one. The root's box,
+ * bvh->box, is tested by box_hit, a node's two children by bvh_node_hit; a subtree
+ * that waited on the stack is visited only if its entry is still no farther than
+ * *tmax. Adds to *tests the boxes tested (the root's, two a node) and the primitives
+ * of the leaves visited. No recursion: a stack of BVH_MAX_DEPTH. tests/test_bvh.c:
+ * traverse_nearer_first_and_stops, and the comparisons with brute force. */
 bool bvh_traverse(const Bvh *bvh, Ray r, double tmin, double *tmax, BvhLeafFn leaf, void *state,
                   long *tests)
 {
@@ -254,7 +246,6 @@ bool bvh_traverse(const Bvh *bvh, Ray r, double tmin, double *tmax, BvhLeafFn le
     *tests += bvh->prim_count > 0;
     if (bvh->prim_count == 0 || !box_hit(bvh->box, &br, tmin, *tmax, &t_root))
         return false;
-    FloatRay fr = box_float_ray(r, tmin, bvh->in_range);
     Waiting stack[BVH_MAX_DEPTH];
     int top = 0;
     BvhRef at = bvh->root;
@@ -265,8 +256,8 @@ bool bvh_traverse(const Bvh *bvh, Ray r, double tmin, double *tmax, BvhLeafFn le
                 return true;
         } else {
             const BvhNode *node = &bvh->nodes[at.index];
-            float entry[2];
-            int hits = bvh_node_hit(node, &fr, box_float_tmax(*tmax), entry);
+            double entry[2];
+            int hits = bvh_node_hit(node, &br, tmin, *tmax, entry);
             *tests += 2;
             if (hits != 0) {
                 at = nearer_child(node, hits, entry, stack, &top);
@@ -278,7 +269,7 @@ bool bvh_traverse(const Bvh *bvh, Ray r, double tmin, double *tmax, BvhLeafFn le
             if (top == 0)
                 return false;
             top--;
-        } while (!box_float_reaches(&fr, stack[top].entry, box_float_tmax(*tmax)));
+        } while (stack[top].entry > *tmax);
         at = stack[top].ref;
     }
 }

@@ -2,10 +2,11 @@
 #ifndef RAYTRA_BVH_H
 #define RAYTRA_BVH_H
 
+#include <math.h>
 #include <stdbool.h>
+#include <stdint.h>
 
 #include "box.h"
-#include "bvhnode.h"
 #include "hit.h"
 #include "ray.h"
 #include "scene.h"
@@ -17,13 +18,60 @@
 /* Bins per axis of the binned SAH build. */
 #define BVH_BINS 16
 
+/* excerpt: bvh-node */
+/* Where a subtree is: an interior node, or a leaf's run of primitives. */
+typedef struct {
+    uint32_t index; /* interior: the node in nodes; leaf: its first entry of prims */
+    uint32_t count; /* leaf: how many primitives (1 to BVH_MAX_LEAF); interior: 0 */
+} BvhRef;
+
+/* An interior node: its two children's boxes, so that one visit tests both, and where
+ * the children are. Nodes are stored depth first: a first child that is a node comes
+ * right after its parent. */
+typedef struct {
+    double bound[2][3][2]; /* child k's box spans bound[0][a][k] to bound[1][a][k] on axis a */
+    BvhRef child[2];
+} BvhNode;
+/* end excerpt: bvh-node */
+
+/* Narrows each child k's [t0[k], t1[k]] to where the ray (origin o, 1/d inv on axis a)
+ * is in its slab on axis a, as box_slab does: it enters at bound 1 (hi) when it travels
+ * towards -a. */
+static inline void node_slab(const BvhNode *node, int a, double o, double inv, double t0[2],
+                             double t1[2])
+{
+    int near = signbit(inv) ? 1 : 0;
+    for (int k = 0; k < 2; k++) {
+        double enter = (node->bound[near][a][k] - o) * inv;
+        double leave = (node->bound[1 - near][a][k] - o) * inv;
+        t0[k] = enter > t0[k] ? enter : t0[k];
+        t1[k] = leave < t1[k] ? leave : t1[k];
+    }
+}
+
+/* excerpt: bvh-node-hit */
+/* Tests both children's boxes of node against ray r, from tmin to tmax, as box_hit
+ * does: returns bit k set when the ray meets child k's box, and sets entry[k] to where
+ * it enters it. */
+static inline int bvh_node_hit(const BvhNode *node, const BoxRay *r, double tmin, double tmax,
+                               double entry[2])
+{
+    double t1[2] = {tmax, tmax};
+    entry[0] = entry[1] = tmin;
+    node_slab(node, 0, r->origin.x, r->inv_dir.x, entry, t1);
+    node_slab(node, 1, r->origin.y, r->inv_dir.y, entry, t1);
+    node_slab(node, 2, r->origin.z, r->inv_dir.z, entry, t1);
+    return (entry[0] <= t1[0]) | (entry[1] <= t1[1]) << 1;
+}
+/* end excerpt: bvh-node-hit */
+
 /* excerpt: bvh-struct */
 /* The hierarchy. A primitive is a surface number of part 1.2's world_intersect:
  * spheres, then planes, then triangles. Planes have no box: they stay out of the
  * tree and are tested after it. */
 typedef struct {
     const Scene *scene;
-    Box box;        /* the root's box, rounded outwards to floats as the nodes' boxes are */
+    Box box;        /* the root's box */
     BvhRef root;    /* a node, or a leaf when there are few primitives */
     BvhNode *nodes; /* the interior nodes; none when the root is a leaf or there is nothing */
     int node_count;
@@ -31,8 +79,7 @@ typedef struct {
     int prim_count; /* in the tree; the planes follow them in prims */
     BvhRef planes;  /* the planes, as one more run of prims: not in the tree */
     int leaf_count;
-    int depth;     /* levels below the root */
-    bool in_range; /* the float test holds for the tree's box (box_float_in_range) */
+    int depth; /* levels below the root */
 } Bvh;
 /* end excerpt: bvh-struct */
 
@@ -52,6 +99,7 @@ typedef struct {
 typedef bool (*BvhLeafFn)(const Bvh *bvh, BvhRef leaf, Ray r, double tmin, double *tmax,
                           void *state);
 
+void bvh_node_set(BvhNode *node, int k, Box box, BvhRef ref);
 bool bvh_build(Bvh *bvh, const Scene *scene);
 int bvh_split(BvhBuilder *b, int begin, int end, Box box, Box centroids);
 void bvh_free(Bvh *bvh);
