@@ -12,6 +12,8 @@
 #   make check-starters  build every part's starter, stubbed and solved
 #   make check-renders  every part renders every reference, project and course scene,
 #                    and no pixel is NaN or infinite (a few minutes)
+#   make check-interrupt  renders and loads stopped by signals, failed writes, a deep path
+#                    under a small stack, some under valgrind (CI; a minute or so)
 #   make valgrind    render scenes of every part, and broken inputs, under valgrind's memcheck
 #   make bench       benchmark part 1.4's BVH (against Embree 3 when installed; bench/README.md)
 #   make fuzz        build the libFuzzer harnesses of the scene, OBJ and OpenEXR readers (clang)
@@ -77,10 +79,11 @@ test:
 	@$(SUBMAKE) check-docs check-slides check-figures check-exercises check-layout check-course \
 	            check-demo check-chromium
 	@$(SUBMAKE) check-starter-chapter
-	@$(SUBMAKE) check-robust
+	@$(SUBMAKE) check-fuzz-regressions check-bad-input
 	@echo "make test: every test passed"
 
-# Broken input of every kind and interruptions (docs/robustness.md).
+# Broken input of every kind and interruptions (docs/robustness.md); make test runs the
+# first two, CI the interruptions too (their stops under valgrind take half a minute or more).
 check-robust: check-fuzz-regressions check-bad-input check-interrupt
 
 # Every part renders every reference, project and course scene, with finite pixels: a few
