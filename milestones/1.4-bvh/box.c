@@ -77,13 +77,12 @@ Box box_of_triangle(const Triangle *tri)
 bool box_hit_face(Box b, Ray r, double tmin, double tmax, double *t, Vec3 *normal)
 {
     /* The slab test again, keeping the axis that set each end of the interval. */
-    double lo[3] = {b.lo.x, b.lo.y, b.lo.z}, hi[3] = {b.hi.x, b.hi.y, b.hi.z};
-    double o[3] = {r.origin.x, r.origin.y, r.origin.z}, d[3] = {r.dir.x, r.dir.y, r.dir.z};
     double t0 = -INFINITY, t1 = INFINITY;
     int axis0 = 0, axis1 = 0;
     for (int a = 0; a < 3; a++) {
         double near = t0, far = t1;
-        box_slab(lo[a], hi[a], o[a], 1 / d[a], &near, &far);
+        box_slab(vec3_axis(b.lo, a), vec3_axis(b.hi, a), vec3_axis(r.origin, a),
+                 1 / vec3_axis(r.dir, a), &near, &far);
         if (near > t0) {
             t0 = near;
             axis0 = a;
@@ -99,7 +98,7 @@ bool box_hit_face(Box b, Ray r, double tmin, double tmax, double *t, Vec3 *norma
     if (!(t0 <= t1 && *t > tmin && *t < tmax))
         return false;
     /* +-e_axis, the side facing the ray's origin: a box seen from inside is lit as from outside. */
-    double side = d[axis] > 0 ? -1 : 1;
+    double side = vec3_axis(r.dir, axis) > 0 ? -1 : 1;
     *normal = vec3(axis == 0 ? side : 0, axis == 1 ? side : 0, axis == 2 ? side : 0);
     return true;
 }

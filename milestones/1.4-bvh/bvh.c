@@ -102,10 +102,9 @@ int bvh_split(BvhBuilder *b, int begin, int end, Box box, Box centroids)
 /* Stores child k of node: where it is, and its box. */
 void bvh_node_set(BvhNode *node, int k, Box box, BvhRef ref)
 {
-    double lo[3] = {box.lo.x, box.lo.y, box.lo.z}, hi[3] = {box.hi.x, box.hi.y, box.hi.z};
     for (int a = 0; a < 3; a++) {
-        node->bound[0][a][k] = lo[a];
-        node->bound[1][a][k] = hi[a];
+        node->bound[0][a][k] = vec3_axis(box.lo, a);
+        node->bound[1][a][k] = vec3_axis(box.hi, a);
     }
     node->child[k] = ref;
 }

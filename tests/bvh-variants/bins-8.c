@@ -9,9 +9,8 @@ int bvh_split(BvhBuilder *b, int begin, int end, Box box, Box centroids)
     int n = end - begin, best_axis = -1, best_plane = 0;
     double best_cost = n, lo[3], scale[3];
     for (int a = 0; a < 3; a++) {
-        Vec3 l = centroids.lo, h = centroids.hi;
-        lo[a] = a == 0 ? l.x : a == 1 ? l.y : l.z;
-        double extent = (a == 0 ? h.x : a == 1 ? h.y : h.z) - lo[a];
+        lo[a] = vec3_axis(centroids.lo, a);
+        double extent = vec3_axis(centroids.hi, a) - lo[a];
         scale[a] = extent > 0 ? BINS / extent : 0;
         if (scale[a] == 0)
             continue;
@@ -21,7 +20,7 @@ int bvh_split(BvhBuilder *b, int begin, int end, Box box, Box centroids)
             bins[k] = box_empty();
         for (int k = begin; k < end; k++) {
             Vec3 c = b->centroids[b->prims[k]];
-            int bin = (int)(((a == 0 ? c.x : a == 1 ? c.y : c.z) - lo[a]) * scale[a]);
+            int bin = (int)((vec3_axis(c, a) - lo[a]) * scale[a]);
             bin = bin < 0 ? 0 : bin >= BINS ? BINS - 1 : bin;
             bins[bin] = box_union(bins[bin], b->boxes[b->prims[k]]);
             counts[bin]++;
@@ -51,8 +50,7 @@ int bvh_split(BvhBuilder *b, int begin, int end, Box box, Box centroids)
     int i = begin, j = end - 1;
     while (i <= j) {
         Vec3 c = b->centroids[b->prims[i]];
-        int bin = (int)(((best_axis == 0 ? c.x : best_axis == 1 ? c.y : c.z) - lo[best_axis]) *
-                        scale[best_axis]);
+        int bin = (int)((vec3_axis(c, best_axis) - lo[best_axis]) * scale[best_axis]);
         bin = bin < 0 ? 0 : bin >= BINS ? BINS - 1 : bin;
         if (bin < best_plane) {
             i++;

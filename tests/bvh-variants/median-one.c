@@ -19,14 +19,12 @@ static BvhRef build_node(BvhBuilder *b, int begin, int end, int depth, Box *box_
     int axis = extent.x >= extent.y && extent.x >= extent.z ? 0 : extent.y >= extent.z ? 1 : 2;
     int mid = begin + (end - begin) / 2, lo = begin, hi = end - 1;
     while (lo < hi) {
-        Vec3 pc = b->centroids[b->prims[(lo + hi) / 2]];
-        double pivot = axis == 0 ? pc.x : axis == 1 ? pc.y : pc.z;
+        double pivot = vec3_axis(b->centroids[b->prims[(lo + hi) / 2]], axis);
         int i = lo, j = hi;
         while (i <= j) {
-            Vec3 ci = b->centroids[b->prims[i]], cj = b->centroids[b->prims[j]];
-            if ((axis == 0 ? ci.x : axis == 1 ? ci.y : ci.z) < pivot) {
+            if (vec3_axis(b->centroids[b->prims[i]], axis) < pivot) {
                 i++;
-            } else if ((axis == 0 ? cj.x : axis == 1 ? cj.y : cj.z) > pivot) {
+            } else if (vec3_axis(b->centroids[b->prims[j]], axis) > pivot) {
                 j--;
             } else {
                 int swap = b->prims[i];
