@@ -368,7 +368,7 @@ static void bench_mesh(BenchMesh *m, View v, int res, BaselineQuality quality)
     double bytes = (mesh_bytes + (double)bvh_bytes(&bvh)) / scene->triangle_count;
 
     printf("\n== %s: %d triangles; BVH: %d interior nodes, %d leaves, depth %d\n", m->name,
-           scene->triangle_count, bvh.node_count, bvh.leaf_count, bvh.depth);
+           scene->triangle_count, bvh.node_count, bvh.node_count + 1, bvh.depth);
     if (m->load_mb_per_s > 0)
         printf("   OBJ load          %8.1f MB/s\n", m->load_mb_per_s);
     else

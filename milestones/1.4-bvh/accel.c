@@ -61,20 +61,6 @@ static bool boxed_search(const Accel *accel, Ray r, double tmin, double tmax, Hi
 }
 /* end excerpt: accel-boxed-hit */
 
-/* Mode 0: the closest surface. */
-static bool boxed_hit(const void *data, Ray r, double tmin, double tmax, Hit *hit)
-{
-    return boxed_search(data, r, tmin, tmax, hit, false);
-}
-
-/* Mode 0: whether anything lies on the ray. */
-static bool boxed_blocked(const void *data, Ray r, double tmin, double tmax)
-{
-    Hit hit;
-    return boxed_search(data, r, tmin, tmax, &hit, true);
-}
-
-/* excerpt: accel-box-hit */
 /* Modes 1 and 2: box b drawn in place of surface s, as a surface in its own right: when
  * the ray meets it with tmin < t < *tmax, fills in hit (its t, the face's axis normal
  * from box_hit_face, the surface's material) and lowers *tmax to t. */
@@ -97,7 +83,6 @@ static bool box_drawn(const Scene *scene, Box b, int s, Ray r, double tmin, doub
     *tmax = t;
     return true;
 }
-/* end excerpt: accel-box-hit */
 
 /* Mode 2: a leaf's box (its primitives' boxes together) drawn, in the material of its
  * first primitive, into the Hit that state is. */
@@ -113,9 +98,8 @@ static bool leaf_box(const Bvh *bvh, BvhRef leaf, Ray r, double tmin, double *tm
 /* Modes 1 and 2: the boxes drawn (every surface's, or the BVH's leaves') instead of the
  * spheres and triangles, then the planes, which have no box, as they are; each lowers t
  * from tmax to what it shows, so something was found when t < tmax. */
-static bool boxes_hit(const void *data, Ray r, double tmin, double tmax, Hit *hit)
+static bool boxes_hit(const Accel *accel, Ray r, double tmin, double tmax, Hit *hit)
 {
-    const Accel *accel = data;
     const Scene *scene = accel->scene;
     double t = tmax;
     long tests = 0;
@@ -133,35 +117,34 @@ static bool boxes_hit(const void *data, Ray r, double tmin, double tmax, Hit *hi
     return t < tmax;
 }
 
-/* Modes 1 and 2: whether any box drawn, or any plane, lies on the ray. */
-static bool boxes_blocked(const void *data, Ray r, double tmin, double tmax)
+/* Finds the closest surface on ray r with tmin < t < tmax in accel's mode (data). */
+static bool accel_hit(const void *data, Ray r, double tmin, double tmax, Hit *hit)
 {
+    const Accel *accel = data;
+    if (accel->mode == ACCEL_BOXED)
+        return boxed_search(accel, r, tmin, tmax, hit, false);
+    if (accel->mode == ACCEL_BVH)
+        return bvh_hit(&accel->bvh, r, tmin, tmax, hit);
+    return boxes_hit(accel, r, tmin, tmax, hit);
+}
+
+/* Tells whether anything in accel's mode (data) lies on ray r with tmin < t < tmax: in
+ * modes 0 and 3 it stops at the first surface found, a shadow ray's question. */
+static bool accel_blocked(const void *data, Ray r, double tmin, double tmax)
+{
+    const Accel *accel = data;
     Hit hit;
-    return boxes_hit(data, r, tmin, tmax, &hit);
+    if (accel->mode == ACCEL_BOXED)
+        return boxed_search(accel, r, tmin, tmax, &hit, true);
+    if (accel->mode == ACCEL_BVH)
+        return bvh_blocked(&accel->bvh, r, tmin, tmax);
+    return boxes_hit(accel, r, tmin, tmax, &hit);
 }
-
-/* excerpt: accel-bvh-hit */
-/* Mode 3: the closest surface, from the BVH. */
-static bool bvh_surfaces_hit(const void *data, Ray r, double tmin, double tmax, Hit *hit)
-{
-    return bvh_hit(&((const Accel *)data)->bvh, r, tmin, tmax, hit);
-}
-
-/* Mode 3: a shadow ray stops at the first surface the BVH finds. */
-static bool bvh_surfaces_blocked(const void *data, Ray r, double tmin, double tmax)
-{
-    return bvh_blocked(&((const Accel *)data)->bvh, r, tmin, tmax);
-}
-/* end excerpt: accel-bvh-hit */
 
 /* Returns the Surfaces that answer the tracer's questions in accel's mode. */
 Surfaces accel_surfaces(const Accel *accel)
 {
-    if (accel->mode == ACCEL_BOXED)
-        return (Surfaces){boxed_hit, boxed_blocked, accel};
-    if (accel->mode == ACCEL_BVH)
-        return (Surfaces){bvh_surfaces_hit, bvh_surfaces_blocked, accel};
-    return (Surfaces){boxes_hit, boxes_blocked, accel};
+    return (Surfaces){accel_hit, accel_blocked, accel};
 }
 
 /* Returns how many boxes and primitives ray r is tested against to find its closest hit

@@ -54,7 +54,6 @@ Box box_of_sphere(const Sphere *s)
 /* end excerpt: box-of */
 
 /* starter: todo */
-/* excerpt: box-of-triangle */
 /* Returns the box of triangle tri: the least and greatest coordinates of its three
  * corners on each axis, grown by box_pad (2^-20 of its largest coordinate, on every
  * side), as every surface's box is. tests/test_box.c: boxes_of_surfaces. */
@@ -62,10 +61,8 @@ Box box_of_triangle(const Triangle *tri)
 {
     return box_pad(box_add_point(box_add_point((Box){*tri->a, *tri->a}, *tri->b), *tri->c));
 }
-/* end excerpt: box-of-triangle */
 
 /* starter: todo */
-/* excerpt: box-hit-face */
 /* Finds where ray r meets the surface of the closed box b with tmin < t < tmax (strict,
  * as every surface's test), and the unit normal of the face there: where it enters
  * the box (the slab test's t0, from box_slab, which swaps the planes for a negative
@@ -102,4 +99,3 @@ bool box_hit_face(Box b, Ray r, double tmin, double tmax, double *t, Vec3 *norma
     *normal = vec3(axis == 0 ? side : 0, axis == 1 ? side : 0, axis == 2 ? side : 0);
     return true;
 }
-/* end excerpt: box-hit-face */

@@ -25,16 +25,14 @@ static inline int bin_of(double c, double lo, double scale)
  * meets a box of area A meets a child box of area A' inside it with probability about
  * A'/A, so a split into (A_L, N_L) and (A_R, N_R) costs, per ray reaching the node,
  *     C_traverse + (A_L N_L + A_R N_R) / A * C_intersect,
- * against N C_intersect for testing every primitive in a leaf. The candidates are the
- * 15 planes between BVH_BINS equal bins of the centroids' box, on each axis that box
- * has extent on (a centroid c falls in bin (int)((c - lo) BVH_BINS / extent), the
- * last bin holding c = hi); a candidate that leaves one side empty is no candidate.
- * Reorders prims[begin, end) so that the left child's come first, and returns the
- * first of the right child's; or -1 when no candidate costs less than the leaf's N
- * (C_traverse = C_intersect = 1), and when the box has no area. Of equally cheap
- * candidates this one keeps the first (x, then y, then z; left to right); any is
- * correct. tests/test_bvh.c: splits_by_the_sah. */
-int bvh_split(BvhBuilder *b, int begin, int end, Box box, Box centroids)
+ * against N C_intersect for a leaf (both costs are 1). The candidates are the 15 planes
+ * between the BVH_BINS bins of the centroids' box (bin_of, with scale BVH_BINS / extent)
+ * on each axis it has extent on, save those that leave a side empty. Reorders
+ * prims[begin, end), the left child's first, and returns the first of the right child's;
+ * -1 when the box has no area or no candidate costs less than the leaf. Of equally cheap
+ * candidates it keeps the first (x, then y, then z; left to right); any is correct.
+ * tests/test_bvh.c: splits_by_the_sah. */
+int bvh_split(Bvh *bvh, int begin, int end, Box box, Box centroids)
 {
     double area = box_half_area(box);
     if (!(area > 0))
@@ -51,8 +49,9 @@ int bvh_split(BvhBuilder *b, int begin, int end, Box box, Box centroids)
         for (int k = 0; k < BVH_BINS; k++)
             bin_box[k] = box_empty();
         for (int k = begin; k < end; k++) {
-            int p = b->prims[k], bin = bin_of(vec3_axis(b->centroids[p], a), lo, BVH_BINS / extent);
-            bin_box[bin] = box_union(bin_box[bin], b->boxes[p]);
+            int p = bvh->prims[k];
+            int bin = bin_of(vec3_axis(bvh->centroids[p], a), lo, BVH_BINS / extent);
+            bin_box[bin] = box_union(bin_box[bin], bvh->boxes[p]);
             bin_count[bin]++;
         }
         /* One sweep from the right gathers A_R N_R for each plane, one from the left A_L N_L. */
@@ -87,12 +86,12 @@ int bvh_split(BvhBuilder *b, int begin, int end, Box box, Box centroids)
     double scale = BVH_BINS / (vec3_axis(centroids.hi, best_axis) - lo);
     int i = begin, j = end - 1;
     while (i <= j) {
-        if (bin_of(vec3_axis(b->centroids[b->prims[i]], best_axis), lo, scale) < best_bin) {
+        if (bin_of(vec3_axis(bvh->centroids[bvh->prims[i]], best_axis), lo, scale) < best_bin) {
             i++;
         } else {
-            int swap = b->prims[i];
-            b->prims[i] = b->prims[j];
-            b->prims[j--] = swap;
+            int swap = bvh->prims[i];
+            bvh->prims[i] = bvh->prims[j];
+            bvh->prims[j--] = swap;
         }
     }
     return i;
@@ -111,39 +110,36 @@ void bvh_node_set(BvhNode *node, int k, Box box, BvhRef ref)
 
 /* starter: todo */
 /* excerpt: bvh-build-node */
-/* Builds the subtree over prims[begin, end) at the given depth (the root's is 0) and
- * returns where it is, its box (the union of its primitives' boxes) in *box_out. A
- * leaf when bvh_split finds no split or depth is SAH_MAX_DEPTH, unless it would hold
- * more than BVH_MAX_LEAF: then the primitives are halved as they lie. An interior
- * node takes the next entry of b->nodes before its children are built (so a first
- * child that is a node comes right after it), and stores both children with
- * bvh_node_set. Counts b->node_count, b->leaf_count, and in b->depth the deepest
- * depth reached. tests/test_bvh.c: invariants_of_random_soups and the others. */
-static BvhRef build_node(BvhBuilder *b, int begin, int end, int depth, Box *box_out)
+/* Builds the subtree over prims[begin, end) at depth (the root's is 0): returns where it
+ * is, and its box (the union of its primitives' boxes) in *box_out. A leaf when bvh_split
+ * finds no split or depth is SAH_MAX_DEPTH, unless it would hold more than BVH_MAX_LEAF:
+ * then the primitives are halved as they lie. A node takes the next entry of bvh->nodes
+ * before its children are built (a first child that is a node comes right after it), and
+ * stores both with bvh_node_set. Counts bvh->node_count, and keeps in bvh->depth the
+ * deepest depth. tests/test_bvh.c: invariants_of_random_soups and the others. */
+static BvhRef build_node(Bvh *bvh, int begin, int end, int depth, Box *box_out)
 {
     Box box = box_empty(), centroids = box_empty();
     for (int k = begin; k < end; k++) {
-        box = box_union(box, b->boxes[b->prims[k]]);
-        centroids = box_add_point(centroids, b->centroids[b->prims[k]]);
+        box = box_union(box, bvh->boxes[bvh->prims[k]]);
+        centroids = box_add_point(centroids, bvh->centroids[bvh->prims[k]]);
     }
     *box_out = box;
-    if (depth > b->depth)
-        b->depth = depth;
+    if (depth > bvh->depth)
+        bvh->depth = depth;
     int n = end - begin;
-    int mid = n > 1 && depth < SAH_MAX_DEPTH ? bvh_split(b, begin, end, box, centroids) : -1;
+    int mid = n > 1 && depth < SAH_MAX_DEPTH ? bvh_split(bvh, begin, end, box, centroids) : -1;
     if (mid <= begin || mid >= end) {
-        if (n <= BVH_MAX_LEAF) {
-            b->leaf_count++;
+        if (n <= BVH_MAX_LEAF)
             return (BvhRef){(uint32_t)begin, (uint32_t)n};
-        }
         mid = begin + n / 2;
     }
-    uint32_t self = (uint32_t)b->node_count++;
+    uint32_t self = (uint32_t)bvh->node_count++;
     Box child_box[2];
-    BvhRef left = build_node(b, begin, mid, depth + 1, &child_box[0]); /* node self + 1 */
-    BvhRef right = build_node(b, mid, end, depth + 1, &child_box[1]);
-    bvh_node_set(&b->nodes[self], 0, child_box[0], left);
-    bvh_node_set(&b->nodes[self], 1, child_box[1], right);
+    BvhRef left = build_node(bvh, begin, mid, depth + 1, &child_box[0]); /* node self + 1 */
+    BvhRef right = build_node(bvh, mid, end, depth + 1, &child_box[1]);
+    bvh_node_set(&bvh->nodes[self], 0, child_box[0], left);
+    bvh_node_set(&bvh->nodes[self], 1, child_box[1], right);
     return (BvhRef){self, 0};
 }
 /* end excerpt: bvh-build-node */
@@ -155,30 +151,29 @@ bool bvh_build(Bvh *bvh, const Scene *scene)
     int all = spheres + planes + scene->triangle_count, n = all - planes;
     size_t size = (size_t)(all > 0 ? all : 1);
     /* A binary tree of n leaves or fewer has at most n - 1 interior nodes. */
-    BvhBuilder b = {.boxes = malloc(size * sizeof(Box)),
-                    .centroids = malloc(size * sizeof(Vec3)),
-                    .prims = malloc(size * sizeof(int)),
-                    .nodes = malloc((size_t)(n > 1 ? n - 1 : 1) * sizeof(BvhNode))};
     *bvh = (Bvh){.scene = scene,
-                 .nodes = b.nodes,
-                 .prims = b.prims,
+                 .nodes = malloc((size_t)(n > 1 ? n - 1 : 1) * sizeof(BvhNode)),
+                 .prims = malloc(size * sizeof(int)),
                  .prim_count = n,
-                 .planes = {(uint32_t)n, (uint32_t)planes}};
-    bool ok = b.boxes != NULL && b.centroids != NULL && b.prims != NULL && b.nodes != NULL;
+                 .planes = {(uint32_t)n, (uint32_t)planes},
+                 .boxes = malloc(size * sizeof(Box)),
+                 .centroids = malloc(size * sizeof(Vec3))};
+    bool ok =
+        bvh->nodes != NULL && bvh->prims != NULL && bvh->boxes != NULL && bvh->centroids != NULL;
     for (int s = 0, k = 0; ok && s < all; s++) {
         bool plane = s >= spheres && s < spheres + planes;
-        b.prims[plane ? n + s - spheres : k++] = s; /* the planes after the tree's surfaces */
-        b.boxes[s] = box_of_surface(scene, s);
-        b.centroids[s] = plane ? vec3(0, 0, 0) : box_center(b.boxes[s]);
+        bvh->prims[plane ? n + s - spheres : k++] = s; /* the planes after the tree's surfaces */
+        bvh->boxes[s] = box_of_surface(scene, s);
+        bvh->centroids[s] = plane ? vec3(0, 0, 0) : box_center(bvh->boxes[s]);
     }
     bvh->box = box_empty();
     if (ok && n > 0)
-        bvh->root = build_node(&b, 0, n, 0, &bvh->box);
-    BvhNode *fit = ok ? realloc(b.nodes, (size_t)(b.node_count + 1) * sizeof *fit) : NULL;
-    bvh->nodes = fit != NULL ? fit : b.nodes;
-    bvh->node_count = b.node_count, bvh->leaf_count = b.leaf_count, bvh->depth = b.depth;
-    free(b.boxes);
-    free(b.centroids);
+        bvh->root = build_node(bvh, 0, n, 0, &bvh->box);
+    BvhNode *fit = ok ? realloc(bvh->nodes, (size_t)(bvh->node_count + 1) * sizeof *fit) : NULL;
+    bvh->nodes = fit != NULL ? fit : bvh->nodes;
+    free(bvh->boxes);
+    free(bvh->centroids);
+    bvh->boxes = NULL, bvh->centroids = NULL;
     if (!ok)
         bvh_free(bvh);
     return ok;
@@ -229,14 +224,14 @@ static inline BvhRef nearer_child(const BvhNode *node, int hits, const double en
 
 /* starter: todo */
 /* excerpt: bvh-traverse */
-/* Visits every leaf whose box ray r may meet with tmin <= t <= *tmax, nearer boxes
- * first, calling leaf for each; stops, returning true, when leaf returns true. A leaf
- * may lower *tmax: the boxes are then tested up to the new one. The root's box,
- * bvh->box, is tested by box_hit, a node's two children by bvh_node_hit; a subtree
- * that waited on the stack is visited only if its entry is still no farther than
- * *tmax. Adds to *tests the boxes tested (the root's, two a node) and the primitives
- * of the leaves visited. No recursion: a stack of BVH_MAX_DEPTH. tests/test_bvh.c:
- * traverse_nearer_first_and_stops, and the comparisons with brute force. */
+/* Visits every leaf whose box ray r may meet with tmin <= t <= *tmax, nearer boxes first,
+ * calling leaf for each; stops, returning true, when leaf returns true. A leaf may lower
+ * *tmax: boxes are then tested up to the new one. The root's box, bvh->box, is tested by
+ * box_hit, a node's two children by bvh_node_hit; a subtree that waited on the stack is
+ * visited only if its entry is still no farther than *tmax. Adds to *tests the boxes
+ * tested (the root's, two a node) and the primitives of the leaves visited. No recursion:
+ * a stack of BVH_MAX_DEPTH. tests/test_bvh.c: traverse_nearer_first_and_stops, and the
+ * comparisons with brute force. */
 bool bvh_traverse(const Bvh *bvh, Ray r, double tmin, double *tmax, BvhLeafFn leaf, void *state,
                   long *tests)
 {
@@ -284,13 +279,12 @@ typedef struct {
 
 /* starter: todo */
 /* excerpt: bvh-leaf-closest */
-/* Tests every primitive of a leaf (world_intersect, tmin < t < c->tmax), keeping the
- * closest hit in state (a Closest) and lowering *tmax to its t, so that the traversal
- * skips boxes beyond it; never stops the traversal (returns false). The smaller (t,
- * surface number) wins: of several surfaces at the same t, world_hit keeps the first
- * it tests, and so must we. Each is tested up to the ray's own tmax, c->tmax, not
- * *tmax, so that a hit at exactly the best t is seen. tests/test_bvh.c:
- * leaf_closest_finds_the_closest, and every comparison with brute force. */
+/* Tests every primitive of a leaf (world_intersect) with tmin < t < c->tmax, the ray's own
+ * tmax, not *tmax, so that a hit at exactly the best t is seen; keeps the closest hit in
+ * state (a Closest) and lowers *tmax to its t, so that the traversal skips boxes beyond it.
+ * The smaller (t, surface number) wins: of surfaces at the same t, world_hit keeps the
+ * first it tests, and so must we. Never stops the traversal (returns false).
+ * tests/test_bvh.c: leaf_closest_finds_the_closest, and every comparison with brute force. */
 static bool leaf_closest(const Bvh *bvh, BvhRef leaf, Ray r, double tmin, double *tmax, void *state)
 {
     Closest *c = state;

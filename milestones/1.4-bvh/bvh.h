@@ -75,24 +75,14 @@ typedef struct {
     BvhRef root;    /* a node, or a leaf when there are few primitives */
     BvhNode *nodes; /* the interior nodes; none when the root is a leaf or there is nothing */
     int node_count;
-    int *prims;     /* surface numbers in leaf order: a leaf holds prims[index .. index+count) */
-    int prim_count; /* in the tree; the planes follow them in prims */
-    BvhRef planes;  /* the planes, as one more run of prims: not in the tree */
-    int leaf_count;
-    int depth; /* levels below the root */
+    int *prims;      /* surface numbers in leaf order: a leaf holds prims[index .. index+count) */
+    int prim_count;  /* in the tree; the planes follow them in prims */
+    BvhRef planes;   /* the planes, as one more run of prims: not in the tree */
+    int depth;       /* levels below the root */
+    Box *boxes;      /* while it is built: every surface's box, by surface number */
+    Vec3 *centroids; /* while it is built: their centres */
 } Bvh;
 /* end excerpt: bvh-struct */
-
-/* What the build works on: every surface's box and centroid, by surface number. */
-typedef struct {
-    Box *boxes;
-    Vec3 *centroids;
-    int *prims;
-    BvhNode *nodes;
-    int node_count;
-    int leaf_count;
-    int depth;
-} BvhBuilder;
 
 /* What a leaf does with a ray: tests its primitives, keeping what it needs in state,
  * and may lower *tmax, the farthest t still of interest. Returns true to stop there. */
@@ -101,7 +91,7 @@ typedef bool (*BvhLeafFn)(const Bvh *bvh, BvhRef leaf, Ray r, double tmin, doubl
 
 void bvh_node_set(BvhNode *node, int k, Box box, BvhRef ref);
 bool bvh_build(Bvh *bvh, const Scene *scene);
-int bvh_split(BvhBuilder *b, int begin, int end, Box box, Box centroids);
+int bvh_split(Bvh *bvh, int begin, int end, Box box, Box centroids);
 void bvh_free(Bvh *bvh);
 bool bvh_traverse(const Bvh *bvh, Ray r, double tmin, double *tmax, BvhLeafFn leaf, void *state,
                   long *tests);

@@ -14,7 +14,6 @@ typedef struct {
     Accel accel;
 } Part14;
 
-/* excerpt: setup */
 /* Builds the camera, the boxes or the BVH of the mode (the course's third argument,
  * raytra scene_file output_image [0|1|2|3], or --mode N), and part 1.3's tracer on top. */
 static bool setup(const Scene *scene, const Options *opts, void **ctx)
@@ -31,7 +30,6 @@ static bool setup(const Scene *scene, const Options *opts, void **ctx)
     *ctx = part;
     return true;
 }
-/* end excerpt: setup */
 
 /* Part 1.4's pixel: part 1.3's, with the mode's Surfaces behind the tracer. */
 static Color trace_pixel(const void *ctx, int i, int j, RayStats *stats)
@@ -60,7 +58,7 @@ static void report(const void *ctx, const RenderResult *result)
         fprintf(stderr,
                 "raytra: mode %d: BVH of %d primitives: %d interior nodes, %d leaves, depth %d, "
                 "%.1f bytes per primitive, built in %.1f ms\n",
-                a->mode, b->prim_count, b->node_count, b->leaf_count, b->depth,
+                a->mode, b->prim_count, b->node_count, b->node_count + 1, b->depth,
                 b->prim_count > 0 ? (double)bvh_bytes(b) / b->prim_count : 0.0,
                 a->build_seconds * 1e3);
 }

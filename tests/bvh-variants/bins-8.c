@@ -1,6 +1,6 @@
 /* bins-8.c: a correct BVH unlike raytra's: the SAH over 8 bins, not 16, with leaves of up to
  * 2 primitives (build_node), not 8. */
-int bvh_split(BvhBuilder *b, int begin, int end, Box box, Box centroids)
+int bvh_split(Bvh *bvh, int begin, int end, Box box, Box centroids)
 {
     enum { BINS = 8 };
     double area = box_half_area(box);
@@ -19,10 +19,10 @@ int bvh_split(BvhBuilder *b, int begin, int end, Box box, Box centroids)
         for (int k = 0; k < BINS; k++)
             bins[k] = box_empty();
         for (int k = begin; k < end; k++) {
-            Vec3 c = b->centroids[b->prims[k]];
+            Vec3 c = bvh->centroids[bvh->prims[k]];
             int bin = (int)((vec3_axis(c, a) - lo[a]) * scale[a]);
             bin = bin < 0 ? 0 : bin >= BINS ? BINS - 1 : bin;
-            bins[bin] = box_union(bins[bin], b->boxes[b->prims[k]]);
+            bins[bin] = box_union(bins[bin], bvh->boxes[bvh->prims[k]]);
             counts[bin]++;
         }
         /* Each plane p between bin p - 1 and bin p, its two sides gathered afresh. */
@@ -49,45 +49,43 @@ int bvh_split(BvhBuilder *b, int begin, int end, Box box, Box centroids)
         return -1;
     int i = begin, j = end - 1;
     while (i <= j) {
-        Vec3 c = b->centroids[b->prims[i]];
+        Vec3 c = bvh->centroids[bvh->prims[i]];
         int bin = (int)((vec3_axis(c, best_axis) - lo[best_axis]) * scale[best_axis]);
         bin = bin < 0 ? 0 : bin >= BINS ? BINS - 1 : bin;
         if (bin < best_plane) {
             i++;
         } else {
-            int swap = b->prims[i];
-            b->prims[i] = b->prims[j];
-            b->prims[j--] = swap;
+            int swap = bvh->prims[i];
+            bvh->prims[i] = bvh->prims[j];
+            bvh->prims[j--] = swap;
         }
     }
     return i;
 }
-static BvhRef build_node(BvhBuilder *b, int begin, int end, int depth, Box *box_out)
+static BvhRef build_node(Bvh *bvh, int begin, int end, int depth, Box *box_out)
 {
     Box box = box_empty(), centroids = box_empty();
     for (int k = begin; k < end; k++) {
-        box = box_union(box, b->boxes[b->prims[k]]);
-        centroids = box_add_point(centroids, b->centroids[b->prims[k]]);
+        box = box_union(box, bvh->boxes[bvh->prims[k]]);
+        centroids = box_add_point(centroids, bvh->centroids[bvh->prims[k]]);
     }
     *box_out = box;
-    if (depth > b->depth)
-        b->depth = depth;
+    if (depth > bvh->depth)
+        bvh->depth = depth;
     int n = end - begin;
-    int mid = n > 1 && depth < SAH_MAX_DEPTH ? bvh_split(b, begin, end, box, centroids) : -1;
+    int mid = n > 1 && depth < SAH_MAX_DEPTH ? bvh_split(bvh, begin, end, box, centroids) : -1;
     if (mid <= begin || mid >= end) {
         /* No split pays, or the tree is deep: a leaf, unless it would hold too many
          * primitives; then halving them as they are beats no split at all. */
-        if (n <= 2) {
-            b->leaf_count++;
+        if (n <= 2)
             return (BvhRef){(uint32_t)begin, (uint32_t)n};
-        }
         mid = begin + n / 2;
     }
-    uint32_t self = (uint32_t)b->node_count++;
+    uint32_t self = (uint32_t)bvh->node_count++;
     Box child_box[2];
-    BvhRef left = build_node(b, begin, mid, depth + 1, &child_box[0]); /* node self + 1 */
-    BvhRef right = build_node(b, mid, end, depth + 1, &child_box[1]);
-    bvh_node_set(&b->nodes[self], 0, child_box[0], left);
-    bvh_node_set(&b->nodes[self], 1, child_box[1], right);
+    BvhRef left = build_node(bvh, begin, mid, depth + 1, &child_box[0]); /* node self + 1 */
+    BvhRef right = build_node(bvh, mid, end, depth + 1, &child_box[1]);
+    bvh_node_set(&bvh->nodes[self], 0, child_box[0], left);
+    bvh_node_set(&bvh->nodes[self], 1, child_box[1], right);
     return (BvhRef){self, 0};
 }

@@ -1,6 +1,6 @@
 /* sah-ties.c: a correct BVH unlike raytra's: the SAH keeps the last of equally cheap splits
  * (<= where raytra has <) and takes a split as cheap as a leaf. */
-int bvh_split(BvhBuilder *b, int begin, int end, Box box, Box centroids)
+int bvh_split(Bvh *bvh, int begin, int end, Box box, Box centroids)
 {
     enum { BINS = 16 };
     double area = box_half_area(box);
@@ -19,10 +19,10 @@ int bvh_split(BvhBuilder *b, int begin, int end, Box box, Box centroids)
         for (int k = 0; k < BINS; k++)
             bins[k] = box_empty();
         for (int k = begin; k < end; k++) {
-            Vec3 c = b->centroids[b->prims[k]];
+            Vec3 c = bvh->centroids[bvh->prims[k]];
             int bin = (int)((vec3_axis(c, a) - lo[a]) * scale[a]);
             bin = bin < 0 ? 0 : bin >= BINS ? BINS - 1 : bin;
-            bins[bin] = box_union(bins[bin], b->boxes[b->prims[k]]);
+            bins[bin] = box_union(bins[bin], bvh->boxes[bvh->prims[k]]);
             counts[bin]++;
         }
         /* Each plane p between bin p - 1 and bin p, its two sides gathered afresh. */
@@ -49,15 +49,15 @@ int bvh_split(BvhBuilder *b, int begin, int end, Box box, Box centroids)
         return -1;
     int i = begin, j = end - 1;
     while (i <= j) {
-        Vec3 c = b->centroids[b->prims[i]];
+        Vec3 c = bvh->centroids[bvh->prims[i]];
         int bin = (int)((vec3_axis(c, best_axis) - lo[best_axis]) * scale[best_axis]);
         bin = bin < 0 ? 0 : bin >= BINS ? BINS - 1 : bin;
         if (bin < best_plane) {
             i++;
         } else {
-            int swap = b->prims[i];
-            b->prims[i] = b->prims[j];
-            b->prims[j--] = swap;
+            int swap = bvh->prims[i];
+            bvh->prims[i] = bvh->prims[j];
+            bvh->prims[j--] = swap;
         }
     }
     return i;

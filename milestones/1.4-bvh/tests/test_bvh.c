@@ -221,7 +221,6 @@ static void check_invariants(const Scene *scene)
     ck_assert_int_eq(bvh.prim_count, n);
     if (n == 0) {
         ck_assert_int_eq(bvh.node_count, 0);
-        ck_assert_int_eq(bvh.leaf_count, 0);
         bvh_free(&bvh);
         return;
     }
@@ -241,11 +240,11 @@ static void check_invariants(const Scene *scene)
     ck_assert_msg(ok, "build_node (bvh_split): the BVH of %d spheres and %d triangles: %s", scene->sphere_count,
                   scene->triangle_count, w.wrong);
     /* What the build counted is what is there; a binary tree of L leaves has L - 1 nodes. */
-    ck_assert_msg(w.nodes == bvh.node_count && w.leaves == bvh.leaf_count && w.depth == bvh.depth,
-                  "build_node counted %d nodes, %d leaves and %d levels; the tree has %d, %d and %d",
-                  bvh.node_count, bvh.leaf_count, bvh.depth, w.nodes, w.leaves, w.depth);
-    ck_assert_msg(bvh.node_count == bvh.leaf_count - 1, "build_node: %d leaves, but %d interior nodes, not %d",
-                  bvh.leaf_count, bvh.node_count, bvh.leaf_count - 1);
+    ck_assert_msg(w.nodes == bvh.node_count && w.depth == bvh.depth,
+                  "build_node counted %d nodes and %d levels; the tree has %d and %d",
+                  bvh.node_count, bvh.depth, w.nodes, w.depth);
+    ck_assert_msg(w.nodes == w.leaves - 1, "build_node: %d leaves, but %d interior nodes, not %d",
+                  w.leaves, w.nodes, w.leaves - 1);
     bvh_free(&bvh);
 }
 
@@ -331,7 +330,7 @@ START_TEST(splits_by_the_sah)
         box = box_union(box, boxes[k]);
         centroid_box = box_add_point(centroid_box, centroids[k]);
     }
-    BvhBuilder b = {.boxes = boxes, .centroids = centroids, .prims = prims};
+    Bvh b = {.boxes = boxes, .centroids = centroids, .prims = prims};
     int mid = bvh_split(&b, 0, 8, box, centroid_box);
     ck_assert_msg(mid == 6,
                   "bvh_split of eight unit boxes, six at x = 0, one at x = 4 and one at x = 10, "
@@ -399,9 +398,10 @@ START_TEST(traverse_nearer_first_and_stops)
     two_leaves(&scene);
     Bvh bvh;
     ck_assert(bvh_build(&bvh, &scene));
-    ck_assert_msg(bvh.node_count == 1 && bvh.leaf_count == 2,
-                  "build_node: two triangles 5 apart make %d nodes and %d leaves, not 1 and 2",
-                  bvh.node_count, bvh.leaf_count);
+    ck_assert_msg(bvh.node_count == 1 && bvh.root.count == 0 && bvh.nodes[0].child[0].count == 1 &&
+                      bvh.nodes[0].child[1].count == 1,
+                  "build_node: two triangles 5 apart make %d nodes, not 1 node of two leaves",
+                  bvh.node_count);
     /* From either side, the nearer leaf's hit rules the farther leaf out: the root's box,
      * the node's two and one triangle, 4 tests. Farther first, or not reading *tmax
      * again, makes 5. */
