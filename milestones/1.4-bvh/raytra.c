@@ -58,8 +58,8 @@ static void report(const void *ctx, const RenderResult *result)
         fprintf(stderr,
                 "raytra: mode %d: BVH of %d primitives: %d interior nodes, %d leaves, depth %d, "
                 "%.1f bytes per primitive, built in %.1f ms\n",
-                a->mode, b->prim_count, b->node_count, b->node_count + 1, b->depth,
-                b->prim_count > 0 ? (double)bvh_bytes(b) / b->prim_count : 0.0,
+                a->mode, b->prim_count, b->node_count, b->node_count + (b->prim_count > 0),
+                b->depth, b->prim_count > 0 ? (double)bvh_bytes(b) / b->prim_count : 0.0,
                 a->build_seconds * 1e3);
 }
 
