@@ -218,7 +218,8 @@ static BenchRay *shadow_rays(const Bvh *bvh, const BenchRay *primary, long n, Ve
     long m = 0;
     for (long k = 0; k < n; k++) {
         Hit hit;
-        if (!bvh_hit(bvh, primary[k].ray, 0, INFINITY, &hit))
+        long tests = 0;
+        if (!bvh_hit(bvh, primary[k].ray, 0, INFINITY, &hit, &tests))
             continue;
         world_complete_hit(bvh->scene, primary[k].ray, &hit);
         Vec3 side = hit.back_face ? vec3_neg(hit.normal) : hit.normal;
@@ -262,12 +263,13 @@ static void *trace_worker(void *arg)
         for (long k = begin; k < end; k++) {
             const BenchRay *r = &job->rays[k];
             Hit hit;
+            long tests = 0;
             if (job->by == BY_BRUTE_FORCE)
                 hits += world_hit(job->bvh->scene, r->ray, 0, r->tmax, &hit);
             else if (job->shadow)
                 hits += bvh_blocked(job->bvh, r->ray, 0, r->tmax);
             else
-                hits += bvh_hit(job->bvh, r->ray, 0, r->tmax, &hit);
+                hits += bvh_hit(job->bvh, r->ray, 0, r->tmax, &hit, &tests);
         }
     }
     atomic_fetch_add(&job->hits, hits);

@@ -460,7 +460,7 @@ int app_main(const Program *program, int argc, char **argv)
         if (!opts.quiet) {
             print_summary(output, &img, &opts, &result);
             if (program->report != NULL)
-                program->report(ctx, &result);
+                program->report(ctx);
         }
     }
 done:

@@ -28,7 +28,7 @@ typedef struct {
      * its samples: at least *fewest, at most *most; NULL when a trace is a few lines. */
     void (*trace_lines)(const void *ctx, int sample, double *fewest, double *most);
     /* Prints part-specific figures after the summary line; may be NULL. */
-    void (*report)(const void *ctx, const RenderResult *result);
+    void (*report)(const void *ctx);
     void (*cleanup)(void *ctx);
 } Program;
 

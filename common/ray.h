@@ -4,7 +4,6 @@
 
 #include "vec3.h"
 
-/* excerpt: ray-struct */
 typedef struct {
     Vec3 origin;
     Vec3 dir; /* unit length wherever raytra makes a ray */
@@ -15,7 +14,6 @@ static inline Vec3 ray_at(Ray r, double t)
 {
     return vec3_add_scaled(r.origin, r.dir, t);
 }
-/* end excerpt: ray-struct */
 
 /* Returns the ray from origin along dir. */
 static inline Ray ray(Vec3 origin, Vec3 dir)

@@ -56,7 +56,6 @@ typedef struct {
     int line;
 } Plane;
 
-/* excerpt: scene-triangle */
 /* A triangle whose front side sees a, b, c counterclockwise, as the intersection test
  * and the box of a triangle take it: where its corners are, in the scene's vertices or
  * anywhere else, so that nothing is copied to test it. */
@@ -72,7 +71,6 @@ typedef struct {
     int material;
     int line; /* its t line, or the w line of its mesh */
 } Face;
-/* end excerpt: scene-triangle */
 
 typedef enum { LIGHT_POINT, LIGHT_DIRECTIONAL, LIGHT_AREA } LightKind;
 
@@ -145,14 +143,12 @@ bool scene_triangle_is_degenerate(Vec3 a, Vec3 b, Vec3 c);
 const char *convention_name(Convention c);
 bool convention_from_name(const char *name, Convention *c);
 
-/* excerpt: scene-triangle-corners */
 /* Returns where the corners of triangle k of scene are. */
 static inline Triangle scene_triangle(const Scene *scene, int k)
 {
     const int *v = scene->triangles[k].corner;
     return (Triangle){&scene->vertices[v[0]], &scene->vertices[v[1]], &scene->vertices[v[2]]};
 }
-/* end excerpt: scene-triangle-corners */
 
 /* Tells whether point lights fall off with the square of the distance. */
 static inline bool scene_light_falls_off(const Scene *scene)

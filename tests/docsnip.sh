@@ -135,6 +135,84 @@ An example that is not a region, since it is inside a fence:
 ```
 EOF
 
+# Definitions quoted by name, with no marker: a type, a function whose prototype comes
+# first (and is not quoted), a function pointer type; the comment just above each, not
+# the starter marker above that.
+cat >src/box.c <<'EOF'
+/* box.c: a fixture of definitions. */
+/* A box. */
+typedef struct {
+    double lo, hi;
+} Box;
+
+double box_width(Box b,
+                 int unused);
+
+typedef double (*BoxFn)(Box b);
+
+/* starter: todo */
+/* Returns the width of b,
+ * which is never negative. */
+double box_width(Box b, int unused)
+{
+    return b.hi - b.lo;
+}
+
+/* excerpt: box-width */
+static int box_width2(void)
+{
+    return 2;
+}
+/* end excerpt: box-width */
+int setup(void)
+{
+    return 0;
+}
+EOF
+cat >defs.md <<'EOF'
+<!-- excerpt: src/box.c Box box_width BoxFn -->
+```c
+/* A box. */
+typedef struct {
+    double lo, hi;
+} Box;
+
+/* Returns the width of b,
+ * which is never negative. */
+double box_width(Box b, int unused)
+{
+    return b.hi - b.lo;
+}
+
+typedef double (*BoxFn)(Box b);
+```
+*From src/box.c*
+<!-- end excerpt -->
+<!-- excerpt: src/box.c box-width setup -->
+```c
+static int box_width2(void)
+{
+    return 2;
+}
+
+int setup(void)
+{
+    return 0;
+}
+```
+*From src/box.c*
+<!-- end excerpt -->
+EOF
+expect "definitions are quoted by name, several in one region" 0 "" "$docsnip" --check defs.md
+printf '<!-- excerpt: src/box.c box_height -->\n<!-- end excerpt -->\n' >nodef.md
+expect "a missing definition fails" 1 "nodef.md:1: no excerpt or definition 'box_height' in src/box.c" \
+    "$docsnip" --check nodef.md
+printf '/* excerpt: setup */\nint x;\n/* end excerpt: setup */\n' >>src/box.c
+printf '<!-- excerpt: src/box.c setup -->\n<!-- end excerpt -->\n' >both.md
+expect "a name both an excerpt and a definition fails" 1 \
+    "both.md:1: 'setup' is both an excerpt and a definition in src/box.c" "$docsnip" --check both.md
+rm -f src/box.c defs.md nodef.md both.md
+
 # --- Up to date, stale, update ----------------------------------------------
 
 expect "an up-to-date doc passes (nesting, dedent, # markers, long fence)" 0 "" \
@@ -210,7 +288,7 @@ echo "checking: it still has no final newline"
 # --- Problems in the docs ---------------------------------------------------
 
 printf 'Text\n<!-- excerpt: src/sphere.c nope -->\n<!-- end excerpt -->\n' >noname.md
-expect "a missing anchor fails" 1 "noname.md:2: no excerpt 'nope' in src/sphere.c" \
+expect "a missing anchor fails" 1 "noname.md:2: no excerpt or definition 'nope' in src/sphere.c" \
     "$docsnip" --check noname.md
 
 printf '<!-- excerpt: src/nope.c body -->\n<!-- end excerpt -->\n' >nofile.md
@@ -226,7 +304,7 @@ printf 'a\n<!-- end excerpt -->\n' >close.md
 expect "a region end without a start fails" 1 \
     "close.md:2: end of an excerpt region never opened" "$docsnip" --check close.md
 
-printf '<!-- excerpt: src/sphere.c Body -->\n<!-- end excerpt -->\n' >bad.md
+printf '<!-- excerpt: src/sphere.c Bo.dy -->\n<!-- end excerpt -->\n' >bad.md
 expect "a malformed marker fails" 1 "" "$docsnip" --check bad.md
 grep -q "^bad.md:1: malformed excerpt marker" out.txt || fail "no malformed-marker message"
 

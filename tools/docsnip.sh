@@ -5,12 +5,14 @@
 # A source marks an excerpt with lines holding only  /* excerpt: NAME */ ... /* end excerpt:
 # NAME */  (or # excerpt: NAME); a doc quotes it between  <!-- excerpt: PATH NAME -->  and
 # <!-- end excerpt -->, which docsnip fills with a fenced block and the caption *From PATH*.
+# A C file needs no marker for a whole definition: NAME may be a function's or a typedef's
+# name, which quotes it with the comment just above it; several names quote several, in turn.
 # Exit status: 0 when all is well, 1 when a problem was found, 2 for bad usage.
 usage() { echo "docsnip: $1" >&2; echo "Try 'docsnip --help'." >&2; exit 2; }
 mode="" root=.
 while [ $# -gt 0 ]; do
     case $1 in
-    -h | --help) sed -n '2,8s/^# \{0,1\}//p' "$0"; exit 0 ;;
+    -h | --help) sed -n '2,10s/^# \{0,1\}//p' "$0"; exit 0 ;;
     --check | --update | --list) [ -z "$mode" ] || usage "choose one of --check, --update and --list"; mode=${1#--} ;;
     --root) [ $# -gt 1 ] || usage "--root needs a folder"; root=$2; shift ;;
     --root=*) root=${1#--root=} ;;
@@ -32,13 +34,20 @@ program='
 function problem(where, line, text) { print where (line ? ":" line : "") ": " text >"/dev/stderr"; problems++ }
 function source_problem(path, line, text) { problem(path, line, text); STATE[path] = "bad" }
 # Returns "open", "close", "bad" for the words of a marker comment, "" for another comment;
-# sets MPATH and MNAME. In a doc an open marker takes PATH NAME; in a source, NAME.
-function marker(body, doc,   w, n, k) {
+# sets MPATH and MNAME. In a doc an open marker takes PATH NAME..., each the name of an excerpt
+# or a C identifier, and MNAME holds them all; in a source, it takes one excerpt NAME.
+function marker(body, doc,   w, n, k, i, re) {
     n = split(body, w, " "); k = w[1] == "end" ? 2 : 1
     if (n < k || (w[k] != "excerpt" && substr(w[k], 1, 8) != "excerpt:")) return ""
     if (doc && k == 2) return n == 2 && w[2] == "excerpt" ? "close" : "bad"
-    MPATH = w[k + 1]; MNAME = w[k + 1 + doc]
-    return w[k] == "excerpt:" && n == k + 1 + doc && MNAME ~ /^[a-z0-9-]+$/ && length(MNAME) <= 64 ? (k == 2 ? "close" : "open") : "bad"
+    if (w[k] != "excerpt:" || n < k + 1 + doc || (!doc && n > k + 1)) return "bad"
+    MPATH = w[k + 1]; MNAME = ""
+    re = doc ? "^([a-z0-9-]+|[A-Za-z_][A-Za-z0-9_]*)$" : "^[a-z0-9-]+$"
+    for (i = k + 1 + doc; i <= n; i++) {
+        if (w[i] !~ re || length(w[i]) > 64) return "bad"
+        MNAME = MNAME (MNAME == "" ? "" : " ") w[i]
+    }
+    return k == 2 ? "close" : "open"
 }
 function trim(s) { sub(/^[ \t]+/, "", s); sub(/[ \t]+$/, "", s); return s }
 # Returns the kind of marker the source line t is: a comment holding nothing else.
@@ -54,7 +63,7 @@ function load(path,   file, line, n, st, kind, key) {
     if (path in STATE) return STATE[path]
     file = root "/" path; n = 0; STATE[path] = "ok"
     while ((st = (getline line <file)) > 0) {
-        sub(/\r$/, "", line); SRC[path, ++n] = line
+        sub(/\r$/, "", line); SRC[path, ++n] = line; NL[path] = n
         if ((kind = source_marker(line)) == "") continue
         ISM[path, n] = 1; key = path SUBSEP MNAME
         if (kind == "bad") source_problem(path, n, "malformed excerpt marker: the comment must hold '\''excerpt: NAME'\'' or '\''end excerpt: NAME'\'', NAME made of a-z, 0-9 and '\''-'\''")
@@ -70,17 +79,44 @@ function load(path,   file, line, n, st, kind, key) {
     return STATE[path]
 }
 function common(a, b,   i) { for (i = 1; i <= length(a) && substr(a, i, 1) == substr(b, i, 1); i++); return substr(a, 1, i - 1) }
-# Returns what a region quoting excerpt name of path holds: its lines but markers, less the
-# indentation its non-blank lines share, fenced by more backticks than any run in it.
-function block(path, name,   i, o, c, indent, seen, code, s, longest, fence, lang) {
-    o = OPEN[path, name]; c = CLOSE[path, name]
-    for (i = o + 1; i < c; i++)
-        if (!((path, i) in ISM) && SRC[path, i] !~ /^[ \t]*$/) {
+# Finds the C definition of name in path, a function or a typedef, with the comment just
+# above it: sets DFROM and DTO to its first and last lines, or returns why it cannot.
+function definition(path, name,   i, j, t, typedef, from, to) {
+    for (i = 1; i <= NL[path] && !to; i++) {
+        t = SRC[path, i]
+        if (t ~ /^typedef/) typedef = i
+        if (typedef && t ~ ("^}[ \t]*" name "[ \t]*;")) { from = typedef; to = i }
+        else if (t ~ /^typedef/ && t ~ ("[ *(]" name "([ \t)[;]|$)"))
+            for (from = j = i; j <= NL[path] && !to; j++) to = SRC[path, j] ~ /;[ \t]*$/ ? j : 0
+        else if (t ~ /^[A-Za-z_]/ && t !~ /^typedef/ && t ~ ("(^|[ *])" name "\\(")) {
+            for (j = i; j <= NL[path] && SRC[path, j] != "{" && SRC[path, j] !~ /;[ \t]*$/; j++);
+            if (SRC[path, j] == "{")
+                for (from = i; j <= NL[path] && !to; j++) to = SRC[path, j] == "}" ? j : 0
+        }
+    }
+    if (!to) return "no definition of " name
+    DFROM = from; DTO = to
+    if (from > 1 && SRC[path, from - 1] ~ /\*\/[ \t]*$/ && SRC[path, from - 1] !~ /^\/\* starter:/ && !((path, from - 1) in ISM))
+        for (DFROM = from - 1; DFROM > 1 && SRC[path, DFROM] !~ /^\/\*/; DFROM--);
+    return ""
+}
+# Appends the lines of excerpt or definition name of path to PICK (0 a blank line between two).
+function pick(path, name,   i) {
+    if (NPICK) PICK[++NPICK] = 0
+    if ((path, name) in OPEN) for (i = OPEN[path, name] + 1; i < CLOSE[path, name]; i++) PICK[++NPICK] = i
+    else for (i = DFROM; i <= DTO; i++) PICK[++NPICK] = i
+}
+# Returns what a region quoting the lines of PICK from path holds: those lines but markers,
+# less the indentation their non-blank lines share, fenced by more backticks than any run.
+function block(path,   i, k, t, indent, seen, code, s, longest, fence, lang) {
+    for (k = 1; k <= NPICK; k++)
+        if ((i = PICK[k]) && !((path, i) in ISM) && SRC[path, i] !~ /^[ \t]*$/) {
             match(SRC[path, i], /^[ \t]*/); s = substr(SRC[path, i], 1, RLENGTH)
             indent = seen++ ? common(indent, s) : s
         }
-    for (i = o + 1; i < c; i++)
-        if (!((path, i) in ISM)) code = code substr(SRC[path, i], length(common(SRC[path, i], indent)) + 1) "\n"
+    for (k = 1; k <= NPICK; k++)
+        if (!(i = PICK[k])) code = code "\n"
+        else if (!((path, i) in ISM)) code = code substr(SRC[path, i], length(common(SRC[path, i], indent)) + 1) "\n"
     for (s = code; match(s, /`+/); s = substr(s, RSTART + RLENGTH)) if (RLENGTH > longest) longest = RLENGTH
     for (fence = "``"; length(fence) <= longest || length(fence) < 3; ) fence = fence "`"
     lang = path ~ /\.[ch]$/ ? "c" : path ~ /\.sh$/ ? "sh" : path ~ /(\.mk|(^|\/)(GNU)?[Mm]akefile)$/ ? "make" : ""
@@ -97,16 +133,22 @@ function fenced(t, i,   lead, c, run, rest) {
     FMARK = c; FLEN = run; FLINE = i; return 1
 }
 # Checks the region opened on line o and closed on line e, or brings it up to date.
-function region(o, e, path, name,   i, have, want, st) {
+function region(o, e, path, names,   i, n, w, have, want, st, why) {
     for (i = o + 1; i < e; i++) have = have L[i] "\n"
     if (path !~ /^[A-Za-z0-9._\/-]+$/ || path ~ /^\// || ("/" path "/") ~ /\/\.\.\// || length(path) > 1024)
         return problem(doc, o, "excerpt path '\''" path "'\'' must be relative to the root, without '\''..'\'', made of letters, digits, '\''.'\'', '\''_'\'', '\''-'\'' and '\''/'\''")
     st = load(path)
     if (st != "ok" && st != "bad") return problem(doc, o, "cannot read " path ": " st)
-    if (!((path, name) in OPEN)) return problem(doc, o, "no excerpt '\''" name "'\'' in " path)
-    if (st == "bad") return problem(doc, o, "excerpt '\''" name "'\'' cannot be used: " path " has marker errors (above)")
-    if (have == (want = block(path, name))) return
-    if (mode == "check") return problem(doc, o, "excerpt '\''" name "'\'' from " path " is stale; run '\''make docs'\''")
+    if (st == "bad") return problem(doc, o, "excerpt '\''" names "'\'' cannot be used: " path " has marker errors (above)")
+    n = split(names, w, " "); NPICK = 0
+    for (i = 1; i <= n; i++) {
+        why = w[i] ~ /^[A-Za-z_][A-Za-z0-9_]*$/ ? definition(path, w[i]) : "no excerpt"
+        if ((path, w[i]) in OPEN && why == "") return problem(doc, o, "'\''" w[i] "'\'' is both an excerpt and a definition in " path)
+        if (!((path, w[i]) in OPEN) && why != "") return problem(doc, o, "no excerpt or definition '\''" w[i] "'\'' in " path)
+        pick(path, w[i])
+    }
+    if (have == (want = block(path))) return
+    if (mode == "check") return problem(doc, o, "excerpt '\''" names "'\'' from " path " is stale; run '\''make docs'\''")
     gsub(/\n/, E[o], want); OUT[o] = L[o] E[o] want; changed = 1
     for (i = o + 1; i < e; i++) OUT[i] = ""
 }
@@ -122,7 +164,7 @@ END {
         OUT[i] = L[i] E[i]; t = trim(L[i])
         if (fenced(L[i], i) || substr(t, 1, 4) != "<!--" || substr(t, length(t) - 2) != "-->") continue
         kind = marker(substr(t, 5, length(t) - 7), 1)
-        if (kind == "bad") problem(doc, i, "malformed excerpt marker: write '\''<!-- excerpt: PATH NAME -->'\'' and '\''<!-- end excerpt -->'\'', NAME made of a-z, 0-9 and '\''-'\''")
+        if (kind == "bad") problem(doc, i, "malformed excerpt marker: write '\''<!-- excerpt: PATH NAME... -->'\'' and '\''<!-- end excerpt -->'\'', each NAME an excerpt'\''s (a-z, 0-9 and '\''-'\'') or a C function'\''s or type'\''s")
         else if (kind == "open") { if (open) problem(doc, open, "excerpt region not closed"); open = i; path = MPATH; name = MNAME }
         else if (kind == "close" && !open) problem(doc, i, "end of an excerpt region never opened")
         else if (kind == "close") { region(open, i, path, name); open = 0 }

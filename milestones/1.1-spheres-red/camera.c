@@ -2,7 +2,6 @@
 #include "camera.h"
 
 /* starter: todo */
-/* excerpt: camera-make */
 /* Builds the camera of a scene's c line: its frame and its image plane. */
 Camera camera_make(const CameraSpec *spec)
 {
@@ -33,10 +32,8 @@ Camera camera_make(const CameraSpec *spec)
     cam.bottom = -cam.top;
     return cam;
 }
-/* end excerpt: camera-make */
 
 /* starter: todo */
-/* excerpt: camera-ray */
 /* Returns the unit ray from the eye through image point (x, y), measured in pixels
  * from the bottom-left corner: pixel (i, j) has its centre at (i + 0.5, j + 0.5). */
 Ray camera_ray(const Camera *cam, double x, double y)
@@ -53,4 +50,3 @@ Ray camera_ray(const Camera *cam, double x, double y)
     dir = vec3_add_scaled(dir, cam->v, v);
     return ray(cam->eye, vec3_normalize(dir));
 }
-/* end excerpt: camera-ray */

@@ -7,7 +7,6 @@
 #include "sphere.h"
 #include "view.h"
 
-/* excerpt: red-or-black */
 /* The rule of part 1.1: red where the primary ray hits any sphere at t > 0. */
 static Color red_or_black(const void *ctx, int i, int j, RayStats *stats)
 {
@@ -28,7 +27,6 @@ static Color red_or_black(const void *ctx, int i, int j, RayStats *stats)
     explain_line(explain, 1, "hits no sphere: black");
     return color(0, 0, 0);
 }
-/* end excerpt: red-or-black */
 
 /* Tells --view what the camera ray meets first: the nearest sphere, its normal and material. */
 static void probe_pixel(const void *ctx, int i, int j, Probe *probe)

@@ -9,7 +9,6 @@
 
 typedef enum { SURFACE_SPHERE, SURFACE_PLANE, SURFACE_TRIANGLE } SurfaceKind;
 
-/* excerpt: hit-struct */
 typedef struct {
     double t;         /* the ray parameter of the hit */
     Vec3 point;       /* r(t) */
@@ -20,6 +19,5 @@ typedef struct {
     SurfaceKind kind; /* what was hit */
     int index;        /* which sphere, plane or triangle */
 } Hit;
-/* end excerpt: hit-struct */
 
 #endif

@@ -4,7 +4,6 @@
 #include <math.h>
 
 /* starter: todo */
-/* excerpt: light-incident */
 /* Returns what reaches point from light; falls_off says whether point lights fade as 1/r^2. */
 Incident light_incident(const Light *light, Vec3 point, bool falls_off)
 {
@@ -30,4 +29,3 @@ Incident light_incident(const Light *light, Vec3 point, bool falls_off)
         in.radiance = color_scale(in.radiance, 1 / fmax(in.distance * in.distance, 1e-12));
     return in;
 }
-/* end excerpt: light-incident */

@@ -7,14 +7,12 @@
 #include "color.h"
 #include "scene.h"
 
-/* excerpt: incident-struct */
 /* The light arriving at a point from one light. */
 typedef struct {
     Vec3 dir;        /* unit vector from the point towards the light: l */
     double distance; /* how far away the light is; INFINITY for a directional light */
     Color radiance;  /* I: the light's colour, divided by distance^2 when it falls off */
 } Incident;
-/* end excerpt: incident-struct */
 
 Incident light_incident(const Light *light, Vec3 point, bool falls_off);
 

@@ -2,7 +2,6 @@
 #include "plane.h"
 
 /* starter: todo */
-/* excerpt: plane-intersect */
 /* Finds t with tmin < t < tmax where ray r meets plane pl, from either side. */
 bool plane_intersect(const Plane *pl, Ray r, double tmin, double tmax, double *t)
 {
@@ -17,4 +16,3 @@ bool plane_intersect(const Plane *pl, Ray r, double tmin, double tmax, double *t
     *t = root;
     return true;
 }
-/* end excerpt: plane-intersect */

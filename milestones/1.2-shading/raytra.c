@@ -25,7 +25,6 @@ static bool setup(const Scene *scene, const Options *opts, void **ctx)
     return true;
 }
 
-/* excerpt: shade-pixel */
 /* Part 1.2's pixel: the surface nearest the eye, lit by every light; black where the ray
  * meets nothing. */
 static Color shade_pixel(const void *ctx, int i, int j, RayStats *stats)
@@ -45,7 +44,6 @@ static Color shade_pixel(const void *ctx, int i, int j, RayStats *stats)
     shade_explain_lights(explain, view->scene, &hit, r, part->two_sided);
     return shade_direct_radiance(view->scene, &hit, r, part->two_sided);
 }
-/* end excerpt: shade-pixel */
 
 /* Tells --view what the camera ray meets first, and how many lights face the point. */
 static void probe_pixel(const void *ctx, int i, int j, Probe *probe)

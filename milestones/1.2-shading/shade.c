@@ -4,7 +4,6 @@
 #include <math.h>
 
 /* starter: todo */
-/* excerpt: blinn-phong */
 /* Returns the two terms of the light reflected towards v from what one light sends
  * along in->dir, by Blinn-Phong: I (.) kd max(0, n.l) and I (.) ks max(0, n.h)^p with
  * h = normalize(l + v). n, v and l are unit vectors; v points from the surface to the eye. */
@@ -32,7 +31,6 @@ Color shade_blinn_phong(const Material *m, Vec3 n, Vec3 v, const Incident *in)
     BlinnPhong terms = shade_blinn_phong_terms(m, n, v, in);
     return color_add(terms.diffuse, terms.specular);
 }
-/* end excerpt: blinn-phong */
 
 /* Says, for --trace-pixel, when a back face is shaded in the yellow material. */
 void shade_explain_material(const Explain *e, int depth, const Material *m)
@@ -94,7 +92,6 @@ const Material *shade_material(const Scene *scene, const Hit *hit, bool two_side
 /* end excerpt: shade-material */
 
 /* starter: todo */
-/* excerpt: shade-direct-radiance */
 /* Returns the light that hit's surface reflects back along ray r straight from the
  * scene's point and directional lights, without shadows; part 1.3's direct_radiance
  * replaces it, with shadows and the ambient light. Area lights wait for part 1.6. */
@@ -112,7 +109,6 @@ Color shade_direct_radiance(const Scene *scene, const Hit *hit, Ray r, bool two_
     }
     return sum;
 }
-/* end excerpt: shade-direct-radiance */
 
 /* Prints, for --trace-pixel, how part 1.2 lights hit: its material, and each light's
  * Blinn-Phong terms, as shade_direct_radiance adds them up. */

@@ -3,7 +3,6 @@
 #include "triangle.h"
 
 /* starter: todo */
-/* excerpt: triangle-intersect */
 /* Finds t with tmin < t < tmax where ray r meets triangle tri, from either side, and
  * the barycentric coordinates of the point; edges and corners count as inside. */
 bool triangle_intersect(const Triangle *tri, Ray r, double tmin, double tmax, TriangleHit *hit)
@@ -35,7 +34,6 @@ bool triangle_intersect(const Triangle *tri, Ray r, double tmin, double tmax, Tr
     *hit = (TriangleHit){t, beta, gamma};
     return true;
 }
-/* end excerpt: triangle-intersect */
 
 /* Returns the unit normal (b - a) x (c - a): it points towards whoever sees a, b, c
  * counterclockwise, the front side. */

@@ -6,7 +6,6 @@
 #include "triangle.h"
 
 /* starter: todo */
-/* excerpt: world-intersect */
 /* Finds where ray r meets surface number s of scene with tmin < t < tmax, and sets
  * hit's t, kind and index. The surfaces are numbered spheres first, then planes, then
  * triangles: the order in which world_hit tests them. */
@@ -34,10 +33,8 @@ bool world_intersect(const Scene *scene, int s, Ray r, double tmin, double tmax,
         *hit = (Hit){.t = t, .kind = kind, .index = s};
     return met;
 }
-/* end excerpt: world-intersect */
 
 /* starter: todo */
-/* excerpt: world-hit */
 /* Finds the nearest surface that ray r meets with tmin < t < tmax; fills in hit. */
 bool world_hit(const Scene *scene, Ray r, double tmin, double tmax, Hit *hit)
 {
@@ -54,10 +51,8 @@ bool world_hit(const Scene *scene, Ray r, double tmin, double tmax, Hit *hit)
         world_complete_hit(scene, r, hit);
     return found;
 }
-/* end excerpt: world-hit */
 
 /* starter: todo */
-/* excerpt: world-complete-hit */
 /* Fills in the point, unit normal, side and material of a hit whose t, kind and index are known. */
 void world_complete_hit(const Scene *scene, Ray r, Hit *hit)
 {
@@ -84,7 +79,6 @@ void world_complete_hit(const Scene *scene, Ray r, Hit *hit)
     /* The ray travels along d: it meets the back when d points the way the normal does. */
     hit->back_face = vec3_dot(r.dir, hit->normal) > 0;
 }
-/* end excerpt: world-complete-hit */
 
 /* Returns the scene file's line of the surface hit. */
 static int surface_line(const Scene *scene, const Hit *hit)

@@ -5,7 +5,6 @@
 #include "shade.h"
 
 /* starter: todo */
-/* excerpt: direct-in-shadow */
 /* Returns the shadow ray from hit's point towards the light in, and in *tmax how far
  * it may go: only what lies before the light blocks it, measured from the ray's own
  * origin, a hair off the point. A directional light is infinitely far away. */
@@ -25,7 +24,6 @@ bool direct_in_shadow(const Tracer *tr, const Hit *hit, Ray r, const Incident *i
     Ray shadow = direct_shadow_ray(tr, hit, r, in, &tmax);
     return tracer_blocked(tr, shadow, tmax, depth, path);
 }
-/* end excerpt: direct-in-shadow */
 
 /* Part 1.3's through hook: all of the light, or none of it when in shadow. */
 Color direct_through(const void *ctx, const Tracer *tr, const Hit *hit, Ray r, const Incident *in,
@@ -36,7 +34,6 @@ Color direct_through(const void *ctx, const Tracer *tr, const Hit *hit, Ray r, c
 }
 
 /* starter: todo */
-/* excerpt: direct-incident */
 /* Returns the light that hit's surface reflects back along ray r from the beam in:
  * Blinn-Phong, times the fraction of the beam that reaches the point
  * (tracer_through: none when a shadow ray finds something in the way). */
@@ -53,9 +50,7 @@ Color direct_incident(const Tracer *tr, const Hit *hit, Ray r, const Incident *i
     const Material *m = shade_material(tr->scene, hit, tr->two_sided);
     return color_mul(through, shade_blinn_phong(m, n, vec3_neg(r.dir), in));
 }
-/* end excerpt: direct-incident */
 
-/* excerpt: direct-light */
 /* Part 1.3's light hook: the light of one point or directional light, by direct_incident.
  * An area light waits for part 1.6, which samples its square: until then it adds nothing,
  * and the trace says so. */
@@ -71,9 +66,7 @@ Color direct_light(const void *ctx, const Tracer *tr, const Hit *hit, Ray r, con
     Incident in = light_incident(light, hit->point, scene_light_falls_off(tr->scene));
     return direct_incident(tr, hit, r, &in, depth, path);
 }
-/* end excerpt: direct-light */
 
-/* excerpt: direct-ambient */
 /* Returns k_d (.) ambient, slide 21 ("+ shadows + ambient"): at every hit by the lecture
  * convention, where camera rays hit only by fall2016's (docs/1.3-shadows-mirror.md). */
 Color direct_ambient(const Tracer *tr, const Material *m, int depth)
@@ -86,10 +79,8 @@ Color direct_ambient(const Tracer *tr, const Material *m, int depth)
     explain_color(tr->explain, depth + 1, "ambient, kd (.) ambient light", ambient);
     return ambient;
 }
-/* end excerpt: direct-ambient */
 
 /* starter: todo */
-/* excerpt: direct-radiance */
 /* Returns the light that hit's surface reflects back along ray r straight from the
  * lights: k_d (.) ambient, plus what each light sends (tracer_light: Blinn-Phong, unless
  * in shadow). Replaces part 1.2's shade_direct_radiance; depth counts the reflections
@@ -102,4 +93,3 @@ Color direct_radiance(const Tracer *tr, const Hit *hit, Ray r, int depth, Path *
         sum = color_add(sum, tracer_light(tr, hit, r, k, depth, path));
     return sum;
 }
-/* end excerpt: direct-radiance */

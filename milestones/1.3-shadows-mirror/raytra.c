@@ -1,49 +1,31 @@
 /* raytra.c: part 1.3: shadows, ambient light and mirror reflection, by recursive ray tracing. */
-#include <math.h>
 #include <stdlib.h>
 
 #include "app.h"
-#include "secondary.h"
 #include "trace.h"
-#include "view.h"
 
-/* What every pixel reads: the camera, and the tracer with its scene and settings. */
+/* What every pixel reads (the camera and the tracer, as a TraceView), and the tracer. */
 typedef struct {
-    View view;
+    TraceView view;
     Tracer tracer;
 } Part13;
 
-/* Builds the camera and the tracer of the scene. */
+/* Builds the camera and the tracer of the scene; the context of the pixels is the view. */
 static bool setup(const Scene *scene, const Options *opts, void **ctx)
 {
     Part13 *part = malloc(sizeof *part);
     if (part == NULL)
         return false;
-    part->view = (View){camera_make(&scene->camera), scene, opts};
     part->tracer = tracer_make(scene, surfaces_brute_force(scene), opts);
-    *ctx = part;
+    part->view = (TraceView){camera_make(&scene->camera), &part->tracer, part};
+    *ctx = &part->view;
     return true;
 }
 
-/* Part 1.3's pixel: the radiance along the primary ray through its centre. */
-static Color trace_pixel(const void *ctx, int i, int j, RayStats *stats)
+/* Frees the part's state. */
+static void cleanup(void *ctx)
 {
-    const Part13 *part = ctx;
-    return trace_camera_pixel(&part->tracer, &part->view.camera, i, j, stats);
-}
-
-/* Tells --view what the camera ray meets first. */
-static void probe_pixel(const void *ctx, int i, int j, Probe *probe)
-{
-    const Part13 *part = ctx;
-    trace_probe(&part->tracer, camera_ray(&part->view.camera, i + 0.5, j + 0.5), probe);
-}
-
-/* Estimates the lines --trace-pixel prints: one camera ray a pixel. */
-static void trace_lines(const void *ctx, int sample, double *fewest, double *most)
-{
-    (void)sample;
-    tracer_trace_lines(&((const Part13 *)ctx)->tracer, 1, 0, fewest, most);
+    free(((TraceView *)ctx)->part);
 }
 
 static const Program program = {
@@ -52,11 +34,11 @@ static const Program program = {
             .purpose = "Blinn-Phong shading with shadows, ambient light and mirror reflection"},
     .features = TRACER_FEATURES,
     .setup = setup,
-    .pixel = trace_pixel,
-    .probe = probe_pixel,
+    .pixel = trace_view_pixel,
+    .probe = trace_view_probe,
     .views = 1u << VIEW_LIGHT_COUNT,
-    .trace_lines = trace_lines,
-    .cleanup = free,
+    .trace_lines = trace_view_lines,
+    .cleanup = cleanup,
 };
 
 /* Renders a scene by the rules of part 1.3. */

@@ -3,7 +3,6 @@
 #include "secondary.h"
 
 /* starter: todo */
-/* excerpt: secondary-ray */
 /* Returns the ray along unit dir from hit's point, started off the surface on the side
  * dir leaves by, so that it cannot find the surface it starts from (shadow acne): by
  * offset times the largest coordinate of the point or of the ray's origin, since
@@ -16,14 +15,11 @@ Ray secondary_ray(const Hit *hit, Ray incoming, Vec3 dir, double offset)
         distance = -distance;
     return ray(vec3_add_scaled(hit->point, hit->normal, distance), dir);
 }
-/* end excerpt: secondary-ray */
 
 /* starter: todo */
-/* excerpt: secondary-reflect */
 /* Returns the mirror image of direction d about the normal n (unit): r = d - 2 (d.n) n.
  * The part of d along n changes sign; the part along the surface stays. */
 Vec3 secondary_reflect(Vec3 d, Vec3 n)
 {
     return vec3_add_scaled(d, n, -2 * vec3_dot(d, n));
 }
-/* end excerpt: secondary-reflect */

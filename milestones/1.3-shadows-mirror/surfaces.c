@@ -16,8 +16,19 @@ static bool brute_force_blocked(const void *data, Ray r, double tmin, double tma
     return world_hit(data, r, tmin, tmax, &hit);
 }
 
+/* Returns how many surfaces the search for the closest hit tests: every one. */
+static long brute_force_tests(const void *data, Ray r)
+{
+    const Scene *scene = data;
+    (void)r;
+    return scene->sphere_count + scene->plane_count + scene->triangle_count;
+}
+
 /* Returns the Surfaces that answer by testing every surface of scene. */
 Surfaces surfaces_brute_force(const Scene *scene)
 {
-    return (Surfaces){.hit = brute_force_hit, .blocked = brute_force_blocked, .data = scene};
+    return (Surfaces){.hit = brute_force_hit,
+                      .blocked = brute_force_blocked,
+                      .tests = brute_force_tests,
+                      .data = scene};
 }

@@ -32,7 +32,6 @@ Tracer tracer_make(const Scene *scene, Surfaces surfaces, const Options *opts)
 }
 
 /* starter: todo */
-/* excerpt: trace-radiance */
 /* Returns the radiance arriving along ray r: the light of the first surface it meets,
  * straight from the lights, plus k_m times the radiance along the mirror-reflected ray.
  * depth counts the reflections that led to r; primary rays have depth 0. */
@@ -54,7 +53,6 @@ Color trace_radiance(const Tracer *tr, Ray r, int depth, Path *path)
     }
     return radiance;
 }
-/* end excerpt: trace-radiance */
 
 /* excerpt: tracer-seams */
 /* Finds the closest surface along r (t > 0) with the tracer's Surfaces, and tells it. */
@@ -178,11 +176,13 @@ Color tracer_through(const Tracer *tr, const Hit *hit, Ray r, const Incident *in
 }
 /* end excerpt: tracer-seams */
 
-/* Tells --view what ray r meets first, and how many lights reach the point: in front of
- * the surface and not in shadow (part 1.6's area lights as points at their centres). */
+/* Tells --view what ray r meets first, how many lights reach the point: in front of the
+ * surface and not in shadow (part 1.6's area lights as points at their centres), and how
+ * many boxes and surfaces the search for it tested. */
 void trace_probe(const Tracer *tr, Ray r, Probe *probe)
 {
     Hit hit;
+    probe->tests = tr->surfaces.tests(tr->surfaces.data, r);
     if (!tr->surfaces.hit(tr->surfaces.data, r, 0, INFINITY, &hit))
         return;
     const Scene *scene = tr->scene;
@@ -191,7 +191,8 @@ void trace_probe(const Tracer *tr, Ray r, Probe *probe)
                      .t = hit.t,
                      .normal = n,
                      .surface = world_surface_id(scene, &hit),
-                     .kd = shade_material(scene, &hit, tr->two_sided)->diffuse};
+                     .kd = shade_material(scene, &hit, tr->two_sided)->diffuse,
+                     .tests = probe->tests};
     RayStats stats = {{0}};
     Path path = {.stats = &stats, .weight = 1};
     for (int k = 0; k < scene->light_count; k++) {
@@ -220,7 +221,6 @@ void tracer_trace_lines(const Tracer *tr, double rays, double area_rays, double 
     *most = *fewest + (bounces ? rays * per_hit * tr->max_depth : 0);
 }
 
-/* excerpt: trace-pixel */
 /* Returns the radiance along the camera ray through the centre of pixel (i, j): the
  * pixel of part 1.3, and of every later part that traces with its Tracer. */
 Color trace_camera_pixel(const Tracer *tr, const Camera *cam, int i, int j, RayStats *stats)
@@ -228,4 +228,26 @@ Color trace_camera_pixel(const Tracer *tr, const Camera *cam, int i, int j, RayS
     Path path = {.stats = stats, .weight = 1};
     return tracer_trace(tr, camera_ray(cam, i + 0.5, j + 0.5), RAY_PRIMARY, 0, &path);
 }
-/* end excerpt: trace-pixel */
+
+/* The pixel of part 1.3, and of the later parts that keep it, as a Program's pixel: its
+ * context is a TraceView. */
+Color trace_view_pixel(const void *ctx, int i, int j, RayStats *stats)
+{
+    const TraceView *view = ctx;
+    return trace_camera_pixel(view->tracer, &view->camera, i, j, stats);
+}
+
+/* Tells --view what the camera ray through the centre of pixel (i, j) of the TraceView ctx
+ * meets first (trace_probe). */
+void trace_view_probe(const void *ctx, int i, int j, Probe *probe)
+{
+    const TraceView *view = ctx;
+    trace_probe(view->tracer, camera_ray(&view->camera, i + 0.5, j + 0.5), probe);
+}
+
+/* Estimates the lines --trace-pixel prints for the TraceView ctx: one camera ray a pixel. */
+void trace_view_lines(const void *ctx, int sample, double *fewest, double *most)
+{
+    (void)sample;
+    tracer_trace_lines(((const TraceView *)ctx)->tracer, 1, 0, fewest, most);
+}

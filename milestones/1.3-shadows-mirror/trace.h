@@ -75,6 +75,14 @@ struct Tracer {
 };
 /* end excerpt: tracer-struct */
 
+/* What the pixels of part 1.3 and of the later parts that keep them read: the camera, and
+ * the tracer behind it. part is the part's own state, which its other callbacks read. */
+typedef struct {
+    Camera camera;
+    const Tracer *tracer;
+    void *part;
+} TraceView;
+
 extern const TracerHooks tracer_hooks;
 extern const CliOption trace_options[];
 extern const CliOption *const trace_part_options[];
@@ -93,5 +101,8 @@ void tracer_trace_lines(const Tracer *tr, double rays, double area_rays, double 
                         double *most);
 void trace_probe(const Tracer *tr, Ray r, Probe *probe);
 Color trace_camera_pixel(const Tracer *tr, const Camera *cam, int i, int j, RayStats *stats);
+Color trace_view_pixel(const void *ctx, int i, int j, RayStats *stats);
+void trace_view_probe(const void *ctx, int i, int j, Probe *probe);
+void trace_view_lines(const void *ctx, int sample, double *fewest, double *most);
 
 #endif

@@ -38,7 +38,6 @@ void accel_free(Accel *accel)
     bvh_free(&accel->bvh);
 }
 
-/* excerpt: accel-boxed-hit */
 /* Mode 0: part 1.2's world_hit, but a surface is tested only when the ray meets its box;
  * the box is closed and a little larger, so it never rejects a hit (a plane's box is
  * all of space). With any, stops at the first surface found: a shadow ray's question. */
@@ -59,13 +58,11 @@ static bool boxed_search(const Accel *accel, Ray r, double tmin, double tmax, Hi
         world_complete_hit(scene, r, hit);
     return found;
 }
-/* end excerpt: accel-boxed-hit */
 
 /* Modes 1 and 2: box b drawn in place of surface s, as a surface in its own right: when
  * the ray meets it with tmin < t < *tmax, fills in hit (its t, the face's axis normal
  * from box_hit_face, the surface's material) and lowers *tmax to t. */
-static bool box_drawn(const Scene *scene, Box b, int s, Ray r, double tmin, double *tmax,
-                      Hit *hit)
+static bool box_drawn(const Scene *scene, Box b, int s, Ray r, double tmin, double *tmax, Hit *hit)
 {
     double t;
     Vec3 normal;
@@ -78,8 +75,8 @@ static bool box_drawn(const Scene *scene, Box b, int s, Ray r, double tmin, doub
                  .normal = normal,
                  .kind = sphere ? SURFACE_SPHERE : SURFACE_TRIANGLE,
                  .index = sphere ? s : triangle,
-                 .material = sphere ? scene->spheres[s].material
-                                    : scene->triangles[triangle].material};
+                 .material =
+                     sphere ? scene->spheres[s].material : scene->triangles[triangle].material};
     *tmax = t;
     return true;
 }
@@ -123,8 +120,9 @@ static bool accel_hit(const void *data, Ray r, double tmin, double tmax, Hit *hi
     const Accel *accel = data;
     if (accel->mode == ACCEL_BOXED)
         return boxed_search(accel, r, tmin, tmax, hit, false);
+    long tests = 0; /* counted for --view box-tests only (accel_tests) */
     if (accel->mode == ACCEL_BVH)
-        return bvh_hit(&accel->bvh, r, tmin, tmax, hit);
+        return bvh_hit(&accel->bvh, r, tmin, tmax, hit, &tests);
     return boxes_hit(accel, r, tmin, tmax, hit);
 }
 
@@ -141,19 +139,23 @@ static bool accel_blocked(const void *data, Ray r, double tmin, double tmax)
     return boxes_hit(accel, r, tmin, tmax, &hit);
 }
 
+/* Returns how many boxes and primitives ray r is tested against to find its closest hit
+ * in accel's mode (data), for --view box-tests: every plane, which has no box, and the
+ * BVH's count (modes 2 and 3) or every other surface's box (modes 0 and 1). */
+static long accel_tests(const void *data, Ray r)
+{
+    const Accel *accel = data;
+    const Scene *s = accel->scene;
+    long tests = s->plane_count;
+    Hit hit;
+    if (accel->mode == ACCEL_BOXED || accel->mode == ACCEL_SURFACE_BOXES)
+        return tests + s->sphere_count + s->triangle_count;
+    bvh_hit(&accel->bvh, r, 0, INFINITY, &hit, &tests);
+    return tests;
+}
+
 /* Returns the Surfaces that answer the tracer's questions in accel's mode. */
 Surfaces accel_surfaces(const Accel *accel)
 {
-    return (Surfaces){accel_hit, accel_blocked, accel};
-}
-
-/* Returns how many boxes and primitives ray r is tested against to find its closest hit
- * in accel's mode, for --view box-tests: with the BVH (modes 2 and 3), bvh_count_tests;
- * in modes 0 and 1 every surface's box, and every plane, which has no box. */
-long accel_count_tests(const Accel *accel, Ray r)
-{
-    const Scene *s = accel->scene;
-    if (accel->mode != ACCEL_BVH && accel->mode != ACCEL_LEAF_BOXES)
-        return s->sphere_count + s->triangle_count + s->plane_count;
-    return bvh_count_tests(&accel->bvh, r);
+    return (Surfaces){accel_hit, accel_blocked, accel_tests, accel};
 }

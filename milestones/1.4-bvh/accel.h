@@ -10,7 +10,6 @@
 #include "scene.h"
 #include "surfaces.h"
 
-/* excerpt: accel-mode */
 /* The course's third argument, raytra scene_file output_image [0|1|2|3]. */
 typedef enum {
     ACCEL_BOXED = 0,         /* every surface, each first rejected by its own box */
@@ -18,13 +17,12 @@ typedef enum {
     ACCEL_LEAF_BOXES = 2,    /* the BVH's leaf boxes drawn instead of the surfaces */
     ACCEL_BVH = 3            /* the BVH: the default */
 } AccelMode;
-/* end excerpt: accel-mode */
 
 /* The geometry of a scene made ready for one mode. */
 typedef struct {
     AccelMode mode;
     const Scene *scene;
-    Box *boxes; /* modes 0 and 1: the box of every sphere, then of every triangle */
+    Box *boxes; /* modes 0 and 1: every surface's box, by surface number */
     Bvh bvh;    /* modes 2 and 3 */
     double build_seconds;
 } Accel;
@@ -35,7 +33,6 @@ extern const CliOption *const accel_part_options[];
 bool accel_build(Accel *accel, const Scene *scene, AccelMode mode);
 Surfaces accel_surfaces(const Accel *accel);
 void accel_free(Accel *accel);
-long accel_count_tests(const Accel *accel, Ray r);
 AccelMode accel_mode(const Options *opts);
 
 #endif

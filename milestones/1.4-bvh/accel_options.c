@@ -13,8 +13,7 @@ const CliOption accel_options[] = {
 };
 /* clang-format on */
 
-const CliOption *const accel_part_options[] = {shade_options, trace_options, accel_options,
-                                               NULL};
+const CliOption *const accel_part_options[] = {shade_options, trace_options, accel_options, NULL};
 
 /* Returns the mode the command line asks for (the course's third argument, or --mode). */
 AccelMode accel_mode(const Options *opts)

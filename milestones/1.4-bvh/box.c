@@ -15,7 +15,6 @@ Vec3 box_center(Box b)
     return vec3_scale(vec3_add(b.lo, b.hi), 0.5);
 }
 
-/* excerpt: box-pad */
 /* Returns b grown on every side by 2^-20 of its largest coordinate. The slab test
  * and a surface's own test round differently: a ray through a triangle's corner, which
  * is also its box's corner, might be found by the triangle and missed by the box. The
@@ -26,7 +25,6 @@ Box box_pad(Box b)
     double m = ldexp(fmax(vec3_max_abs(b.lo), vec3_max_abs(b.hi)), -20);
     return (Box){vec3_sub(b.lo, vec3(m, m, m)), vec3_add(b.hi, vec3(m, m, m))};
 }
-/* end excerpt: box-pad */
 
 /* Returns the box of surface s of scene (a number of world_intersect): its sphere's or
  * its triangle's; a plane's is all of space, which every ray meets. */
@@ -42,7 +40,6 @@ Box box_of_surface(const Scene *scene, int s)
 }
 
 /* starter: todo */
-/* excerpt: box-of */
 /* Returns the box of sphere s: its centre plus and minus the radius on each axis, grown
  * by box_pad (2^-20 of its largest coordinate, on every side), as every surface's box
  * is. tests/test_box.c: boxes_of_surfaces. */
@@ -51,7 +48,6 @@ Box box_of_sphere(const Sphere *s)
     Vec3 r = vec3(s->radius, s->radius, s->radius);
     return box_pad((Box){vec3_sub(s->center, r), vec3_add(s->center, r)});
 }
-/* end excerpt: box-of */
 
 /* starter: todo */
 /* Returns the box of triangle tri: the least and greatest coordinates of its three

@@ -7,7 +7,6 @@
 #include "ray.h"
 #include "scene.h"
 
-/* excerpt: box-struct */
 /* The points p with lo <= p <= hi in every coordinate: two corners, as the textbook keeps it. */
 typedef struct {
     Vec3 lo, hi;
@@ -18,7 +17,6 @@ typedef struct {
     Vec3 origin;
     Vec3 inv_dir;
 } BoxRay;
-/* end excerpt: box-struct */
 
 /* Returns the ray r made ready for box_hit. */
 static inline BoxRay box_ray(Ray r)
@@ -26,7 +24,6 @@ static inline BoxRay box_ray(Ray r)
     return (BoxRay){r.origin, vec3(1 / r.dir.x, 1 / r.dir.y, 1 / r.dir.z)};
 }
 
-/* excerpt: box-slab */
 /* Narrows [*t0, *t1] to the t where the ray lies between the planes x_axis = lo and
  * x_axis = hi (the textbook's slab test): it enters at the nearer plane, hi first when
  * it travels towards -x. Parallel to the slab, (lo - o) * inf is +-inf: no constraint,
@@ -56,7 +53,6 @@ static inline bool box_hit(Box b, const BoxRay *r, double tmin, double tmax, dou
     *t_enter = tmin;
     return tmin <= tmax;
 }
-/* end excerpt: box-slab */
 
 /* Returns the smallest box holding a and b. */
 static inline Box box_union(Box a, Box b)

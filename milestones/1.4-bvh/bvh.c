@@ -20,7 +20,6 @@ static inline int bin_of(double c, double lo, double scale)
 }
 
 /* starter: todo */
-/* excerpt: bvh-sah */
 /* Chooses where to split prims[begin, end) by the surface area heuristic: a ray that
  * meets a box of area A meets a child box of area A' inside it with probability about
  * A'/A, so a split into (A_L, N_L) and (A_R, N_R) costs, per ray reaching the node,
@@ -96,7 +95,6 @@ int bvh_split(Bvh *bvh, int begin, int end, Box box, Box centroids)
     }
     return i;
 }
-/* end excerpt: bvh-sah */
 
 /* Stores child k of node: where it is, and its box. */
 void bvh_node_set(BvhNode *node, int k, Box box, BvhRef ref)
@@ -109,7 +107,6 @@ void bvh_node_set(BvhNode *node, int k, Box box, BvhRef ref)
 }
 
 /* starter: todo */
-/* excerpt: bvh-build-node */
 /* Builds the subtree over prims[begin, end) at depth (the root's is 0): returns where it
  * is, and its box (the union of its primitives' boxes) in *box_out. A leaf when bvh_split
  * finds no split or depth is SAH_MAX_DEPTH, unless it would hold more than BVH_MAX_LEAF:
@@ -142,22 +139,20 @@ static BvhRef build_node(Bvh *bvh, int begin, int end, int depth, Box *box_out)
     bvh_node_set(&bvh->nodes[self], 1, child_box[1], right);
     return (BvhRef){self, 0};
 }
-/* end excerpt: bvh-build-node */
 
 /* Builds the hierarchy of scene's spheres and triangles; false when out of memory. */
 bool bvh_build(Bvh *bvh, const Scene *scene)
 {
     int spheres = scene->sphere_count, planes = scene->plane_count;
     int all = spheres + planes + scene->triangle_count, n = all - planes;
-    size_t size = (size_t)(all > 0 ? all : 1);
     /* A binary tree of n leaves or fewer has at most n - 1 interior nodes. */
     *bvh = (Bvh){.scene = scene,
                  .nodes = malloc((size_t)(n > 1 ? n - 1 : 1) * sizeof(BvhNode)),
-                 .prims = malloc(size * sizeof(int)),
+                 .prims = malloc((size_t)(all + 1) * sizeof(int)),
                  .prim_count = n,
                  .planes = {(uint32_t)n, (uint32_t)planes},
-                 .boxes = malloc(size * sizeof(Box)),
-                 .centroids = malloc(size * sizeof(Vec3))};
+                 .boxes = malloc((size_t)(all + 1) * sizeof(Box)),
+                 .centroids = malloc((size_t)(all + 1) * sizeof(Vec3))};
     bool ok =
         bvh->nodes != NULL && bvh->prims != NULL && bvh->boxes != NULL && bvh->centroids != NULL;
     for (int s = 0, k = 0; ok && s < all; s++) {
@@ -169,8 +164,6 @@ bool bvh_build(Bvh *bvh, const Scene *scene)
     bvh->box = box_empty();
     if (ok && n > 0)
         bvh->root = build_node(bvh, 0, n, 0, &bvh->box);
-    BvhNode *fit = ok ? realloc(bvh->nodes, (size_t)(bvh->node_count + 1) * sizeof *fit) : NULL;
-    bvh->nodes = fit != NULL ? fit : bvh->nodes;
     free(bvh->boxes);
     free(bvh->centroids);
     bvh->boxes = NULL, bvh->centroids = NULL;
@@ -201,7 +194,6 @@ typedef struct {
 } Waiting;
 
 /* starter: todo */
-/* excerpt: bvh-nearer-child */
 /* Returns the child of node to visit next, of those the ray meets (bit k of hits set,
  * as bvh_node_hit returns them, for child k; one at least): the only one, or of two
  * the nearer by entry (child 0 when as near), the farther then pushed onto stack at
@@ -220,10 +212,8 @@ static inline BvhRef nearer_child(const BvhNode *node, int hits, const double en
     stack[(*top)++] = (Waiting){node->child[1], entry[1]};
     return node->child[0];
 }
-/* end excerpt: bvh-nearer-child */
 
 /* starter: todo */
-/* excerpt: bvh-traverse */
 /* Visits every leaf whose box ray r may meet with tmin <= t <= *tmax, nearer boxes first,
  * calling leaf for each; stops, returning true, when leaf returns true. A leaf may lower
  * *tmax: boxes are then tested up to the new one. The root's box, bvh->box, is tested by
@@ -267,7 +257,6 @@ bool bvh_traverse(const Bvh *bvh, Ray r, double tmin, double *tmax, BvhLeafFn le
         at = stack[top].ref;
     }
 }
-/* end excerpt: bvh-traverse */
 
 /* The closest hit so far, and its surface number. */
 typedef struct {
@@ -278,7 +267,6 @@ typedef struct {
 } Closest;
 
 /* starter: todo */
-/* excerpt: bvh-leaf-closest */
 /* Tests every primitive of a leaf (world_intersect) with tmin < t < c->tmax, the ray's own
  * tmax, not *tmax, so that a hit at exactly the best t is seen; keeps the closest hit in
  * state (a Closest) and lowers *tmax to its t, so that the traversal skips boxes beyond it.
@@ -299,15 +287,14 @@ static bool leaf_closest(const Bvh *bvh, BvhRef leaf, Ray r, double tmin, double
     }
     return false;
 }
-/* end excerpt: bvh-leaf-closest */
 
 /* Finds the nearest surface that ray r meets with tmin < t < tmax, exactly as part 1.2's
- * world_hit: the tree's spheres and triangles, then the planes; fills in hit. */
-bool bvh_hit(const Bvh *bvh, Ray r, double tmin, double tmax, Hit *hit)
+ * world_hit: the tree's spheres and triangles, then the planes; fills in hit. Adds to
+ * *tests the boxes and primitives of the tree tested (bvh_traverse), for --view box-tests. */
+bool bvh_hit(const Bvh *bvh, Ray r, double tmin, double tmax, Hit *hit, long *tests)
 {
     Closest c = {.tmax = tmax};
-    long tests = 0;
-    bvh_traverse(bvh, r, tmin, &tmax, leaf_closest, &c, &tests);
+    bvh_traverse(bvh, r, tmin, &tmax, leaf_closest, &c, tests);
     leaf_closest(bvh, bvh->planes, r, tmin, &tmax, &c);
     if (!c.found)
         return false;
@@ -317,7 +304,6 @@ bool bvh_hit(const Bvh *bvh, Ray r, double tmin, double tmax, Hit *hit)
 }
 
 /* starter: todo */
-/* excerpt: bvh-leaf-any */
 /* Tests a leaf's primitives for any hit with tmin < t < *tmax (world_intersect): returns
  * true at the first one, which stops the traversal; leaves *tmax as it is.
  * tests/test_bvh.c: leaf_any_within_tmin_and_tmax. */
@@ -330,7 +316,6 @@ static bool leaf_any(const Bvh *bvh, BvhRef leaf, Ray r, double tmin, double *tm
             return true;
     return false;
 }
-/* end excerpt: bvh-leaf-any */
 
 /* Tells whether any surface lies on ray r with tmin < t < tmax. */
 bool bvh_blocked(const Bvh *bvh, Ray r, double tmin, double tmax)
@@ -338,16 +323,4 @@ bool bvh_blocked(const Bvh *bvh, Ray r, double tmin, double tmax)
     long tests = 0;
     return bvh_traverse(bvh, r, tmin, &tmax, leaf_any, NULL, &tests) ||
            leaf_any(bvh, bvh->planes, r, tmin, &tmax, NULL);
-}
-
-/* Returns how many boxes and primitives the search for ray r's closest hit tests, for
- * --view box-tests: the root's box, two a node visited, the leaves' primitives, and
- * every plane. */
-long bvh_count_tests(const Bvh *bvh, Ray r)
-{
-    Closest c = {.tmax = INFINITY};
-    double tmax = INFINITY;
-    long tests = bvh->planes.count;
-    bvh_traverse(bvh, r, 0, &tmax, leaf_closest, &c, &tests);
-    return tests;
 }

@@ -18,7 +18,6 @@
 /* Bins per axis of the binned SAH build. */
 #define BVH_BINS 16
 
-/* excerpt: bvh-node */
 /* Where a subtree is: an interior node, or a leaf's run of primitives. */
 typedef struct {
     uint32_t index; /* interior: the node in nodes; leaf: its first entry of prims */
@@ -32,11 +31,9 @@ typedef struct {
     double bound[2][3][2]; /* child k's box spans bound[0][a][k] to bound[1][a][k] on axis a */
     BvhRef child[2];
 } BvhNode;
-/* end excerpt: bvh-node */
 
-/* Narrows each child k's [t0[k], t1[k]] to where the ray (origin o, 1/d inv on axis a)
- * is in its slab on axis a, as box_slab does: it enters at bound 1 (hi) when it travels
- * towards -a. */
+/* Narrows each child k's [t0[k], t1[k]] to where the ray (origin o, 1/d inv) is in its
+ * slab on axis a, as box_slab does: it enters at bound 1 (hi) when it travels towards -a. */
 static inline void node_slab(const BvhNode *node, int a, double o, double inv, double t0[2],
                              double t1[2])
 {
@@ -49,7 +46,6 @@ static inline void node_slab(const BvhNode *node, int a, double o, double inv, d
     }
 }
 
-/* excerpt: bvh-node-hit */
 /* Tests both children's boxes of node against ray r, from tmin to tmax, as box_hit
  * does: returns bit k set when the ray meets child k's box, and sets entry[k] to where
  * it enters it. */
@@ -63,9 +59,7 @@ static inline int bvh_node_hit(const BvhNode *node, const BoxRay *r, double tmin
     node_slab(node, 2, r->origin.z, r->inv_dir.z, entry, t1);
     return (entry[0] <= t1[0]) | (entry[1] <= t1[1]) << 1;
 }
-/* end excerpt: bvh-node-hit */
 
-/* excerpt: bvh-struct */
 /* The hierarchy. A primitive is a surface number of part 1.2's world_intersect:
  * spheres, then planes, then triangles. Planes have no box: they stay out of the
  * tree and are tested after it. */
@@ -82,7 +76,6 @@ typedef struct {
     Box *boxes;      /* while it is built: every surface's box, by surface number */
     Vec3 *centroids; /* while it is built: their centres */
 } Bvh;
-/* end excerpt: bvh-struct */
 
 /* What a leaf does with a ray: tests its primitives, keeping what it needs in state,
  * and may lower *tmax, the farthest t still of interest. Returns true to stop there. */
@@ -95,9 +88,8 @@ int bvh_split(Bvh *bvh, int begin, int end, Box box, Box centroids);
 void bvh_free(Bvh *bvh);
 bool bvh_traverse(const Bvh *bvh, Ray r, double tmin, double *tmax, BvhLeafFn leaf, void *state,
                   long *tests);
-bool bvh_hit(const Bvh *bvh, Ray r, double tmin, double tmax, Hit *hit);
+bool bvh_hit(const Bvh *bvh, Ray r, double tmin, double tmax, Hit *hit, long *tests);
 bool bvh_blocked(const Bvh *bvh, Ray r, double tmin, double tmax);
 size_t bvh_bytes(const Bvh *bvh);
-long bvh_count_tests(const Bvh *bvh, Ray r);
 
 #endif

@@ -5,11 +5,10 @@
 #include "accel.h"
 #include "app.h"
 #include "trace.h"
-#include "view.h"
 
-/* What every pixel reads: the camera, the tracer, and the geometry behind its Surfaces. */
+/* What every pixel reads (part 1.3's TraceView), the tracer, and the geometry behind it. */
 typedef struct {
-    View view;
+    TraceView view;
     Tracer tracer;
     Accel accel;
 } Part14;
@@ -25,34 +24,16 @@ static bool setup(const Scene *scene, const Options *opts, void **ctx)
         free(part);
         return false;
     }
-    part->view = (View){camera_make(&scene->camera), scene, opts};
     part->tracer = tracer_make(scene, accel_surfaces(&part->accel), opts);
-    *ctx = part;
+    part->view = (TraceView){camera_make(&scene->camera), &part->tracer, part};
+    *ctx = &part->view;
     return true;
 }
 
-/* Part 1.4's pixel: part 1.3's, with the mode's Surfaces behind the tracer. */
-static Color trace_pixel(const void *ctx, int i, int j, RayStats *stats)
-{
-    const Part14 *part = ctx;
-    return trace_camera_pixel(&part->tracer, &part->view.camera, i, j, stats);
-}
-
-/* Tells --view what the camera ray meets first, and for box-tests how many boxes and
- * primitives it was tested against (accel_count_tests). */
-static void probe_pixel(const void *ctx, int i, int j, Probe *probe)
-{
-    const Part14 *part = ctx;
-    Ray r = camera_ray(&part->view.camera, i + 0.5, j + 0.5);
-    trace_probe(&part->tracer, r, probe);
-    probe->tests = accel_count_tests(&part->accel, r);
-}
-
 /* Prints the size and build time of the BVH (modes 2 and 3) after the summary line. */
-static void report(const void *ctx, const RenderResult *result)
+static void report(const void *ctx)
 {
-    (void)result;
-    const Accel *a = &((const Part14 *)ctx)->accel;
+    const Accel *a = &((const Part14 *)((const TraceView *)ctx)->part)->accel;
     const Bvh *b = &a->bvh;
     if (a->mode == ACCEL_LEAF_BOXES || a->mode == ACCEL_BVH)
         fprintf(stderr,
@@ -66,16 +47,9 @@ static void report(const void *ctx, const RenderResult *result)
 /* Frees the part's state. */
 static void cleanup(void *ctx)
 {
-    Part14 *part = ctx;
+    Part14 *part = ((TraceView *)ctx)->part;
     accel_free(&part->accel);
     free(part);
-}
-
-/* Estimates the lines --trace-pixel prints: one camera ray a pixel. */
-static void trace_lines(const void *ctx, int sample, double *fewest, double *most)
-{
-    (void)sample;
-    tracer_trace_lines(&((const Part14 *)ctx)->tracer, 1, 0, fewest, most);
 }
 
 static const Program program = {
@@ -84,11 +58,11 @@ static const Program program = {
             .purpose = "part 1.3's ray tracer, accelerated by bounding boxes and a BVH"},
     .features = TRACER_FEATURES,
     .setup = setup,
-    .pixel = trace_pixel,
-    .probe = probe_pixel,
+    .pixel = trace_view_pixel,
+    .probe = trace_view_probe,
     .views = 1u << VIEW_LIGHT_COUNT | 1u << VIEW_BOX_TESTS,
     .report = report,
-    .trace_lines = trace_lines,
+    .trace_lines = trace_view_lines,
     .cleanup = cleanup,
 };
 

@@ -17,7 +17,6 @@ bool dielectric_fresnel_from_name(const char *name, FresnelModel *model)
 }
 
 /* starter: todo */
-/* excerpt: dielectric-refract */
 /* Finds the direction t in which the unit direction d goes on through a surface of unit
  * normal n (facing d: d.n < 0), where eta = n_i / n_t is the ratio of the index of the
  * side d comes from to the index of the side it enters. False, with t untouched, when
@@ -36,10 +35,8 @@ bool dielectric_refract(Vec3 d, Vec3 n, double eta, Vec3 *t)
     *t = vec3_add_scaled(vec3_scale(d, eta), n, eta * cos_i - cos_t);
     return true;
 }
-/* end excerpt: dielectric-refract */
 
 /* starter: todo */
-/* excerpt: dielectric-schlick */
 /* Returns Schlick's approximation of the reflected fraction at a surface between air and
  * a material of index ior, R = R0 + (1 - R0)(1 - cos)^5 with R0 = ((ior - 1)/(ior + 1))^2,
  * the reflectance head-on; cos_air is the cosine of the angle on the air side. */
@@ -50,10 +47,8 @@ double dielectric_schlick(double ior, double cos_air)
     double m = 1 - cos_air;
     return r0 + (1 - r0) * m * m * m * m * m;
 }
-/* end excerpt: dielectric-schlick */
 
 /* starter: todo */
-/* excerpt: dielectric-fresnel-exact */
 /* Returns the reflected fraction of unpolarised light at a surface from index n_i to n_t,
  * met at cos_i and left at cos_t (Snell's angles): the mean of the reflectances of the
  * two polarisations, perpendicular (s) and parallel (p) to the plane of incidence,
@@ -67,7 +62,6 @@ double dielectric_fresnel_exact(double n_i, double n_t, double cos_i, double cos
     double rp = (n_t * cos_i - n_i * cos_t) / (n_t * cos_i + n_i * cos_t);
     return (rs * rs + rp * rp) / 2;
 }
-/* end excerpt: dielectric-fresnel-exact */
 
 /* Returns the transmitted fraction of unpolarised light at the same surface, from the
  * Fresnel equations' amplitudes t_s = 2 n_i cos_i / (n_i cos_i + n_t cos_t) and
@@ -81,7 +75,6 @@ double dielectric_transmittance_exact(double n_i, double n_t, double cos_i, doub
     return n_t * cos_t / (n_i * cos_i) * (ts * ts + tp * tp) / 2;
 }
 
-/* excerpt: dielectric-reflectance */
 /* Returns the reflected fraction R at a surface between air and a material of index ior,
  * by model, from the cosine of the angle on the air side. R is the same whichever way the
  * light crosses, so the air-side angle says it all; inside, Snell gives the other. */
@@ -96,10 +89,8 @@ double dielectric_reflectance(FresnelModel model, double ior, double cos_air)
         return 1;
     return dielectric_fresnel_exact(1, ior, cos_air, sqrt(1 - sin2_inside));
 }
-/* end excerpt: dielectric-reflectance */
 
 /* starter: todo */
-/* excerpt: dielectric-beer */
 /* Returns the fraction of light left after a distance s inside a material of attenuation a,
  * per channel: Beer's law, I(s) = I(0) e^(ln(a) s) = I(0) a^s. Each unit of distance keeps
  * the fraction a; as a <= 1, ln(a) <= 0 and the light can only fade. */
@@ -107,4 +98,3 @@ Color dielectric_beer(Color a, double s)
 {
     return color(pow(a.r, s), pow(a.g, s), pow(a.b, s));
 }
-/* end excerpt: dielectric-beer */

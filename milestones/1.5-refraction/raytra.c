@@ -6,11 +6,11 @@
 #include "app.h"
 #include "refract.h"
 #include "solid.h"
-#include "view.h"
 
-/* What every pixel reads: the camera, the tracer, and the geometry behind its Surfaces. */
+/* What every pixel reads (part 1.3's TraceView, of the Refractor's tracer), the tracer
+ * with this part's hooks, and the geometry behind it. */
 typedef struct {
-    View view;
+    TraceView view;
     Refractor refractor;
     Accel accel;
 } Part15;
@@ -18,12 +18,13 @@ typedef struct {
 /* Frees the part's state. */
 static void cleanup(void *ctx)
 {
-    Part15 *part = ctx;
+    Part15 *part = ((TraceView *)ctx)->part;
     accel_free(&part->accel);
     free(part);
 }
 
-/* Builds the camera, part 1.4's BVH (or the boxes of MODE) and the tracer of the scene,
+/* Builds part 1.4's BVH (or the boxes of MODE), the tracer of the scene with this part's
+ * hooks (refract_init), and the camera through which part 1.3's pixel traces with it;
  * then checks the glass meshes. */
 static bool setup(const Scene *scene, const Options *opts, void **ctx)
 {
@@ -34,41 +35,14 @@ static bool setup(const Scene *scene, const Options *opts, void **ctx)
         free(part);
         return false;
     }
+    part->view = (TraceView){camera_make(&scene->camera), &part->refractor.tracer, part};
     if (!refract_init(&part->refractor, scene, accel_surfaces(&part->accel), opts)) {
-        cleanup(part);
+        cleanup(&part->view);
         return false;
     }
     solid_warn(scene, stderr);
-    part->view = (View){camera_make(&scene->camera), scene, opts};
-    *ctx = part;
+    *ctx = &part->view;
     return true;
-}
-
-/* excerpt: refract-pixel */
-/* Part 1.5's pixel: part 1.3's, the radiance along the primary ray through its centre,
- * with the Refractor's hooks in the tracer. */
-static Color refract_pixel(const void *ctx, int i, int j, RayStats *stats)
-{
-    const Part15 *part = ctx;
-    return trace_camera_pixel(&part->refractor.tracer, &part->view.camera, i, j, stats);
-}
-/* end excerpt: refract-pixel */
-
-/* Tells --view what the camera ray meets first, as part 1.3 does, and for box-tests how
- * many boxes and primitives it was tested against, as part 1.4 does. */
-static void probe_pixel(const void *ctx, int i, int j, Probe *probe)
-{
-    const Part15 *part = ctx;
-    Ray r = camera_ray(&part->view.camera, i + 0.5, j + 0.5);
-    trace_probe(&part->refractor.tracer, r, probe);
-    probe->tests = accel_count_tests(&part->accel, r);
-}
-
-/* Estimates the lines --trace-pixel prints: one camera ray a pixel. */
-static void trace_lines(const void *ctx, int sample, double *fewest, double *most)
-{
-    (void)sample;
-    tracer_trace_lines(&((const Part15 *)ctx)->refractor.tracer, 1, 0, fewest, most);
 }
 
 static const Program program = {
@@ -78,10 +52,10 @@ static const Program program = {
                        "absorption"},
     .features = TRACER_FEATURES | FEATURE_REFRACTION,
     .setup = setup,
-    .pixel = refract_pixel,
-    .probe = probe_pixel,
+    .pixel = trace_view_pixel,
+    .probe = trace_view_probe,
     .views = 1u << VIEW_LIGHT_COUNT | 1u << VIEW_BOX_TESTS,
-    .trace_lines = trace_lines,
+    .trace_lines = trace_view_lines,
     .cleanup = cleanup,
 };
 

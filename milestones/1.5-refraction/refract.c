@@ -43,7 +43,6 @@ bool refract_init(Refractor *rf, const Scene *scene, Surfaces surfaces, const Op
     return true;
 }
 
-/* excerpt: refract-glass-hit */
 /* Returns hit as the shading sees it. The back of a glass triangle or plane is the inside
  * of a solid, not a wrongly wound face: it keeps its own material, not part 1.2's yellow,
  * and, like the inside of a sphere, is shaded with the normal turned to face the ray. */
@@ -56,7 +55,6 @@ Hit refract_glass_hit(const Scene *scene, const Hit *hit)
     }
     return seen;
 }
-/* end excerpt: refract-glass-hit */
 
 /* Returns the largest of c's channels. */
 static double color_max(Color c)
@@ -64,7 +62,6 @@ static double color_max(Color c)
     return fmax(c.r, fmax(c.g, c.b));
 }
 
-/* excerpt: refract-follow */
 /* Returns the radiance along the ray that leaves hit in direction dir, counted as kind,
  * or black when its share of the pixel, weight, is too small to see (--min-weight):
  * Hall and Greenberg's adaptive depth control. */
@@ -82,9 +79,7 @@ static Color follow(const Refractor *rf, const Hit *hit, Ray r, Vec3 dir, RayKin
     branch.weight = weight;
     return tracer_trace(&rf->tracer, next, kind, depth + 1, &branch);
 }
-/* end excerpt: refract-follow */
 
-/* excerpt: refract-glass */
 /* Returns the light that the glass surface at hit (of material m) sends back along r
  * through Fresnel reflection and refraction: R times the radiance along the reflected
  * ray plus (1 - R) times the radiance along the refracted ray. */
@@ -118,9 +113,7 @@ static Color glass_radiance(const Refractor *rf, const Hit *hit, const Material 
     }
     return sum;
 }
-/* end excerpt: refract-glass */
 
-/* excerpt: refract-radiance */
 /* Returns the radiance arriving along ray r: the light of the first surface it meets,
  * straight from the lights, plus k_m times the radiance along the mirror-reflected ray,
  * plus, for glass, the Fresnel-weighted radiance along the reflected and refracted rays
@@ -168,4 +161,3 @@ Color refract_radiance(const void *ctx, const Tracer *tr, Ray r, int depth, Path
         explain_color(tr->explain, depth + 1, "times a^t, absorbed inside", absorbed);
     return color_mul(radiance, absorbed);
 }
-/* end excerpt: refract-radiance */

@@ -10,7 +10,6 @@
 #include "hit.h"
 #include "trace.h"
 
-/* excerpt: refractor-struct */
 /* Part 1.5's tracer: part 1.3's Tracer, whose radiance and through hooks it takes over
  * (with this Refractor as their context), and how glass reflects. */
 typedef struct {
@@ -19,7 +18,6 @@ typedef struct {
     double min_weight;    /* --min-weight: rays that count less in their pixel are not traced */
     bool has_glass;       /* some material has an index of refraction */
 } Refractor;
-/* end excerpt: refractor-struct */
 
 /* Tells whether material m is glass: it has an index of refraction. */
 static inline bool refract_is_glass(const Material *m)

@@ -36,7 +36,6 @@ SolidEdge solid_edge(int material, Vec3 p, Vec3 q)
 }
 
 /* starter: todo */
-/* excerpt: solid-check */
 /* Counts the edges of the scene's glass triangles that show they do not bound a closed,
  * consistently wound solid. In a closed mesh every edge is shared by exactly two
  * triangles of the same material, and when both are counterclockwise seen from outside
@@ -79,7 +78,6 @@ SolidCheck solid_check(const Scene *scene)
     free(edges);
     return check;
 }
-/* end excerpt: solid-check */
 
 /* Warns on f, once each, when the scene's glass triangles visibly do not bound closed solids. */
 void solid_warn(const Scene *scene, FILE *f)

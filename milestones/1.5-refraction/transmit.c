@@ -5,7 +5,6 @@
 #include "secondary.h"
 
 /* starter: todo */
-/* excerpt: transmit-light */
 /* Returns the fraction of the light in that reaches hit's point, per channel: 1 when
  * nothing lies between them, 0 when something opaque does, and when only glass does,
  * the product over the glass surfaces crossed of (1 - R), R taken at the shadow ray's
@@ -44,4 +43,3 @@ Color transmit_light(const void *ctx, const Tracer *tr, const Hit *hit, Ray r, c
     }
     return color(0, 0, 0);
 }
-/* end excerpt: transmit-light */

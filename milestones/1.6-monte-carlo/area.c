@@ -2,7 +2,6 @@
 #include "area.h"
 
 /* starter: todo */
-/* excerpt: area-point */
 /* Returns the point (ru, rv) in [0,1)^2 of the square light: its centre plus (ru - 1/2)
  * sides along u and (rv - 1/2) sides along v = u x n, the assignment's
  * "XYZ + (ru - .5)*U*len + (rv - .5)*V*len". */
@@ -11,10 +10,8 @@ Vec3 area_point(const Light *light, double ru, double rv)
     Vec3 p = vec3_add_scaled(light->position, light->u, (ru - 0.5) * light->size);
     return vec3_add_scaled(p, light->v, (rv - 0.5) * light->size);
 }
-/* end excerpt: area-point */
 
 /* starter: todo */
-/* excerpt: area-incident */
 /* Returns what reaches point from the spot at of the light when count shadow rays share
  * it: a point light at that spot with 1/count of the light's colour ("each shadow ray
  * represents 1/N times the light's radiant exitance"), falling off as 1/r^2 when
@@ -29,4 +26,3 @@ Incident area_incident(const Light *light, Vec3 at, Vec3 point, int count, bool 
         in.radiance = color(0, 0, 0);
     return in;
 }
-/* end excerpt: area-incident */

@@ -57,7 +57,6 @@ void montecarlo_light_point(const MonteCarlo *mc, const Sample *sample, int q, d
 }
 /* end excerpt: light-point */
 
-/* excerpt: area-radiance */
 /* Returns the light that hit's surface reflects along r from the square light: S x S
  * shadow rays to points spread over it (montecarlo_light_point, area_point), each a
  * point light of 1/S^2 of its colour (area_incident), lit as part 1.3 lights a point
@@ -87,9 +86,7 @@ Color montecarlo_area_radiance(const MonteCarlo *mc, const Light *light, const H
     }
     return sum;
 }
-/* end excerpt: area-radiance */
 
-/* excerpt: montecarlo-light */
 /* Part 1.6's light hook: an area light sampled by S x S shadow rays; a point or
  * directional light as part 1.3 lights it. ctx is the MonteCarlo. */
 Color montecarlo_light(const void *ctx, const Tracer *tr, const Hit *hit, Ray r, const Light *light,
@@ -99,10 +96,8 @@ Color montecarlo_light(const void *ctx, const Tracer *tr, const Hit *hit, Ray r,
         return montecarlo_area_radiance(ctx, light, hit, r, depth, path);
     return direct_light(NULL, tr, hit, r, light, depth, path);
 }
-/* end excerpt: montecarlo-light */
 
 /* starter: todo */
-/* excerpt: montecarlo-point */
 /* Returns in (*x, *y) the image point of ray k of the P x P rays through pixel (i, j):
  * a random point of sub-square k (jittered; k counts the sub-squares row by row from
  * the pixel's bottom left), drawn from rng, or the pixel's centre when P = 1.
@@ -121,7 +116,6 @@ void montecarlo_point(const MonteCarlo *mc, Rng *rng, int i, int j, int k, doubl
         *y = j + dv;
     }
 }
-/* end excerpt: montecarlo-point */
 
 /* Prints, for --trace-pixel, which of the pixel's samples k is and where it goes. */
 static void explain_sample(const Explain *e, const MonteCarlo *mc, int k, double x, double y)
@@ -136,7 +130,6 @@ static void explain_sample(const Explain *e, const MonteCarlo *mc, int k, double
         explain_line(e, 0, "sample %d of 0 to %d: at image point (%.6f, %.6f)", k, count - 1, x, y);
 }
 
-/* excerpt: montecarlo-pixel */
 /* Returns the summed radiance of samples first to last - 1 of the P x P rays through
  * pixel (i, j), each through its own point (montecarlo_point). Each ray has its own
  * random numbers, from (seed, pixel, k) alone, so that no pixel depends on which thread
@@ -168,10 +161,8 @@ static Color sum_samples(const MonteCarlo *mc, int i, int j, int first, int last
     }
     return sum;
 }
-/* end excerpt: montecarlo-pixel */
 
 /* starter: todo */
-/* excerpt: montecarlo-mean */
 /* Returns the colour of pixel (i, j): the mean radiance of its P x P rays. The box
  * filter: every ray through the pixel counts 1/P^2. */
 Color montecarlo_pixel(const MonteCarlo *mc, int i, int j, RayStats *stats)
@@ -179,7 +170,6 @@ Color montecarlo_pixel(const MonteCarlo *mc, int i, int j, RayStats *stats)
     int count = mc->pixel_side * mc->pixel_side;
     return color_scale(sum_samples(mc, i, j, 0, count, stats), 1.0 / count);
 }
-/* end excerpt: montecarlo-mean */
 
 /* Returns the radiance of ray k alone of pixel (i, j), the very ray and random numbers
  * it has in montecarlo_pixel: --trace-pixel X,Y@k. */

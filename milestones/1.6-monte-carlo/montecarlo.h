@@ -14,7 +14,6 @@
 /* The largest P and S: the command line's limit (--samples, --light-samples). */
 #define MONTECARLO_MAX_SIDE 64
 
-/* excerpt: sample-struct */
 /* What a pixel sample carries down its path in Path.sample: its own random numbers,
  * drawn in order at every hit, and, in correlated sampling with S = 1, the stratum of
  * the light its shadow rays use. */
@@ -23,9 +22,7 @@ typedef struct {
     int stratum;     /* which of strata_side^2 light strata */
     int strata_side; /* P when the light strata follow the pixel's; 0 otherwise */
 } Sample;
-/* end excerpt: sample-struct */
 
-/* excerpt: montecarlo-struct */
 /* Everything the pixels read: part 1.5's tracer, whose light hook this part takes over
  * to sample area lights (with this MonteCarlo as its context), and the sampling. */
 typedef struct {
@@ -36,7 +33,6 @@ typedef struct {
     int light_side; /* S */
     uint64_t seed;
 } MonteCarlo;
-/* end excerpt: montecarlo-struct */
 
 extern const CliOption montecarlo_options[];
 extern const CliOption *const montecarlo_part_options[];

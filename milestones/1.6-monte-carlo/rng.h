@@ -4,14 +4,12 @@
 
 #include <stdint.h>
 
-/* excerpt: rng-struct */
 /* One stream of O'Neill's PCG32 (pcg-random.org): a 64-bit linear congruential state,
  * of which each step outputs a permuted 32 bits. Streams of different inc never meet. */
 typedef struct {
     uint64_t state;
     uint64_t inc; /* odd: which of 2^63 streams */
 } Rng;
-/* end excerpt: rng-struct */
 
 uint64_t rng_hash(uint64_t x);
 Rng rng_make(uint64_t seed, uint64_t stream);

@@ -20,7 +20,6 @@ bool strata_sampling_from_name(const char *name, Sampling *sampling)
 }
 
 /* starter: todo */
-/* excerpt: strata-point */
 /* Sets (u, v) to sample k of n x n in the unit square [0,1)^2. Jittered: the square is cut
  * into n x n sub-squares, k counting them row by row, and the point is uniform within
  * sub-square k, so that the n^2 points cover the square evenly. Random: uniform over the
@@ -36,7 +35,6 @@ void strata_point(Sampling sampling, Rng *rng, int k, int n, double *u, double *
     *u = (k % n + ru) / n;
     *v = (k / n + rv) / n;
 }
-/* end excerpt: strata-point */
 
 /* starter: todo */
 /* Fills perm with 0 .. count-1 in a uniformly random order (Fisher-Yates). */
