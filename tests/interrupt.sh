@@ -270,12 +270,16 @@ EOF
         # Given up mid-pixel (every pixel of steep.scn takes seconds, so that the pixels
         # under way are given up however fast the machine), the workers still hold the
         # scene and the image when the process ends: no memory error may come of it (what
-        # they hold is not freed, on purpose, so leaks are not counted here).
-        wrapper="valgrind -q --error-exitcode=99 --leak-check=no"
+        # they hold is not freed, on purpose, so leaks are not counted here). valgrind runs
+        # one thread at a time, and its default lock lets a busy worker take it back at
+        # once: --fair-sched=yes queues the waiting thread, so that the one that polls for
+        # the signal runs at all (without it, it can wait for minutes on two cores).
+        wrapper="valgrind -q --fair-sched=yes --error-exitcode=99 --leak-check=no"
         interrupt_render steep.scn INT 2 600 "SIGINT in a pixel of seconds, under memcheck" yes 5
         # Workers that finish their pixel within the grace leave nothing behind at all.
         program='' options=''
-        wrapper="valgrind -q --error-exitcode=99 --leak-check=full --show-leak-kinds=all"
+        wrapper="valgrind -q --fair-sched=yes --error-exitcode=99 --leak-check=full"
+        wrapper="$wrapper --show-leak-kinds=all"
         wrapper="$wrapper --errors-for-leak-kinds=all"
         interrupt_render long.scn INT 2 100 "SIGINT in a long render, under memcheck" no 3
         wrapper=
