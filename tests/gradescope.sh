@@ -13,8 +13,9 @@
 # seven submissions: part 1.3's starter with the solutions written back (correct), the
 # same with a sign flipped in secondary_reflect (buggy: the three scenes with mirrors
 # fail), an empty folder, a folder whose make fails, none at all, a program that prints
-# bytes JSON cannot hold as they are and crashes (hostile), and the correct one with a
-# time budget of 5 s (cut short). Each results.json is
+# bytes JSON cannot hold as they are and crashes (hostile), and the correct one built 6 s
+# late, under a time budget of 5 s (cut short: late by its own sleep, whatever the speed
+# of the machine). Each results.json is
 # parsed with jq and checked as UTF-8 with iconv, then field by field. Run as root, the
 # submissions run as a student's uid and the grader as a grader's, two numbers no user
 # has (no user is made here), which is checked; otherwise as the current user, which the
@@ -217,8 +218,12 @@ fi
 fi
 
 if want cut-short; then
-echo "== cut short: the correct one, with a time budget of 5 s"
-autograde "$correct" AUTOGRADER_TIME_BUDGET=5
+echo "== cut short: the correct one, built 6 s late, with a time budget of 5 s"
+cp -R "$correct" "$tmp/late"
+# make reads GNUmakefile before Makefile: this one sleeps, then builds as the course does.
+# shellcheck disable=SC2016 # $(MAKE) is for make to expand
+printf 'all:\n\tsleep 6\n\t$(MAKE) -f Makefile\n' >"$tmp/late/GNUmakefile"
+autograde "$tmp/late" AUTOGRADER_TIME_BUDGET=5
 check "cut short: the score is not 0" test "$(field .score)" = 0
 check "cut short: the output does not say why" \
     test "$(field '.output | test("did not finish within 5 s")')" = true
