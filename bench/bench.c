@@ -420,8 +420,9 @@ static void bench_mesh(BenchMesh *m, View v, int res, BaselineQuality quality)
     bvh_free(&bvh);
 }
 
-/* Compares the BVH with brute force on a small mesh: the same rays, single thread. */
-static void bench_brute_force(void)
+/* Compares the BVH with brute force on a small mesh: the same rays, single thread. Returns
+ * false when the two hit different numbers of rays. */
+static bool bench_brute_force(void)
 {
     BenchMesh m;
     mesh_sphere(&m, "sphere-5120", 4);
@@ -437,11 +438,13 @@ static void bench_brute_force(void)
     long hits[2];
     trace_rates(jobs, threads, 2, rate, hits);
     printf("\n== brute force: geodesic sphere of %d triangles, %ld primary rays, 1 thread\n"
-           "   BVH %.2f Mrays/s, brute force %.4f Mrays/s: %.0f times faster (hits %ld = %ld)\n",
-           m.scene.triangle_count, n, rate[0], rate[1], rate[0] / rate[1], hits[0], hits[1]);
+           "   BVH %.2f Mrays/s, brute force %.4f Mrays/s: %.0f times faster (hits %ld %s %ld)\n",
+           m.scene.triangle_count, n, rate[0], rate[1], rate[0] / rate[1], hits[0],
+           hits[0] == hits[1] ? "=" : "!=", hits[1]);
     free(rays);
     bvh_free(&bvh);
     scene_free(&m.scene);
+    return hits[0] == hits[1];
 }
 
 /* Runs the benchmark: meshes from MESH_DIR (argv[1]) when there, and a generated one, with
@@ -490,6 +493,9 @@ int main(int argc, char **argv)
     View v = {vec3(0, 0, 3), vec3(0, 0, -1), vec3(2, 3, 4), 0.8};
     bench_mesh(&m, v, res, quality);
     scene_free(&m.scene);
-    bench_brute_force();
+    if (!bench_brute_force()) {
+        fprintf(stderr, "bench: the BVH and brute force hit different numbers of rays\n");
+        return 1;
+    }
     return 0;
 }
