@@ -207,11 +207,26 @@ expect "definitions are quoted by name, several in one region" 0 "" "$docsnip" -
 printf '<!-- excerpt: src/box.c box_height -->\n<!-- end excerpt -->\n' >nodef.md
 expect "a missing definition fails" 1 "nodef.md:1: no excerpt or definition 'box_height' in src/box.c" \
     "$docsnip" --check nodef.md
+# --definitions prints them as they stand, for tools/doctables.sh to count: NAME: is a
+# function's contract alone (its comment and signature).
+expect "--definitions prints a contract and a type" 0 "" "$docsnip" --definitions src/box.c box_width: Box
+cat >want.txt <<'EOF'
+/* Returns the width of b,
+ * which is never negative. */
+double box_width(Box b, int unused)
+/* A box. */
+typedef struct {
+    double lo, hi;
+} Box;
+EOF
+same "--definitions prints them as they stand" want.txt out.txt
+expect "--definitions of a missing name fails" 1 "src/box.c: no definition of box_height" \
+    "$docsnip" --definitions src/box.c box_height
 printf '/* excerpt: setup */\nint x;\n/* end excerpt: setup */\n' >>src/box.c
 printf '<!-- excerpt: src/box.c setup -->\n<!-- end excerpt -->\n' >both.md
 expect "a name both an excerpt and a definition fails" 1 \
     "both.md:1: 'setup' is both an excerpt and a definition in src/box.c" "$docsnip" --check both.md
-rm -f src/box.c defs.md nodef.md both.md
+rm -f src/box.c defs.md nodef.md both.md want.txt
 
 # --- Up to date, stale, update ----------------------------------------------
 

@@ -228,6 +228,10 @@ check "cut short: the score is not 0" test "$(field .score)" = 0
 check "cut short: the output does not say why" \
     test "$(field '.output | test("did not finish within 5 s")')" = true
 check "cut short: tests were given" test "$(field '.tests')" = '[]'
+if [ "$(id -u)" -eq 0 ]; then
+    check "cut short: a process of uid $student_uid (the build's sleep) outlived the grading" \
+        sh -c '! grep -qs "^Uid:[[:space:]]*$1[[:space:]]" /proc/[0-9]*/status' sh "$student_uid"
+fi
 fi
 
 # The instructor's controls: a zip with a grading.conf (points, visibilities, the part's

@@ -5,15 +5,18 @@
 # A source marks an excerpt with lines holding only  /* excerpt: NAME */ ... /* end excerpt:
 # NAME */  (or # excerpt: NAME); a doc quotes it between  <!-- excerpt: PATH NAME -->  and
 # <!-- end excerpt -->, which docsnip fills with a fenced block and the caption *From PATH*.
-# A C file needs no marker for a whole definition: NAME may be a function's or a typedef's
-# name, which quotes it with the comment just above it; several names quote several, in turn.
+# A C file needs no marker for a whole definition: NAME may name a function, a typedef or a
+# macro, which quotes it with the comment just above it; several names quote several, in turn.
+# --definitions FILE NAME... prints those definitions of FILE as they stand, NAME: for a
+# function's contract alone (its comment and signature); tools/doctables.sh counts them.
 # Exit status: 0 when all is well, 1 when a problem was found, 2 for bad usage.
 usage() { echo "docsnip: $1" >&2; echo "Try 'docsnip --help'." >&2; exit 2; }
 mode="" root=.
 while [ $# -gt 0 ]; do
     case $1 in
-    -h | --help) sed -n '2,10s/^# \{0,1\}//p' "$0"; exit 0 ;;
-    --check | --update | --list) [ -z "$mode" ] || usage "choose one of --check, --update and --list"; mode=${1#--} ;;
+    -h | --help) sed -n '2,12s/^# \{0,1\}//p' "$0"; exit 0 ;;
+    --check | --update | --list | --definitions)
+        [ -z "$mode" ] || usage "choose one of --check, --update, --list and --definitions"; mode=${1#--} ;;
     --root) [ $# -gt 1 ] || usage "--root needs a folder"; root=$2; shift ;;
     --root=*) root=${1#--root=} ;;
     --) shift; break ;;
@@ -22,7 +25,7 @@ while [ $# -gt 0 ]; do
     esac
     shift
 done
-[ -n "$mode" ] || usage "say what to do: --check, --update or --list"
+[ -n "$mode" ] || usage "say what to do: --check, --update, --list or --definitions"
 [ $# -gt 0 ] || usage "no files given"
 new=$(mktemp) || exit 1
 trap 'rm -f "$new"' EXIT
@@ -79,23 +82,27 @@ function load(path,   file, line, n, st, kind, key) {
     return STATE[path]
 }
 function common(a, b,   i) { for (i = 1; i <= length(a) && substr(a, i, 1) == substr(b, i, 1); i++); return substr(a, 1, i - 1) }
-# Finds the C definition of name in path, a function or a typedef, with the comment just
-# above it: sets DFROM and DTO to its first and last lines, or returns why it cannot.
-function definition(path, name,   i, j, t, typedef, from, to) {
+# Finds the C definition of name in path, a function, a typedef or a macro, with the
+# comment just above it: sets DFROM and DTO to its first and last lines and DBODY to the
+# line of the "{" of a function (past DTO otherwise), or returns why it cannot.
+function definition(path, name,   i, j, t, typedef, from, to, body) {
     for (i = 1; i <= NL[path] && !to; i++) {
         t = SRC[path, i]
         if (t ~ /^typedef/) typedef = i
         if (typedef && t ~ ("^}[ \t]*" name "[ \t]*;")) { from = typedef; to = i }
         else if (t ~ /^typedef/ && t ~ ("[ *(]" name "([ \t)[;]|$)"))
             for (from = j = i; j <= NL[path] && !to; j++) to = SRC[path, j] ~ /;[ \t]*$/ ? j : 0
+        else if (t ~ ("^#define[ \t]+" name "([ \t(]|$)")) from = to = i
         else if (t ~ /^[A-Za-z_]/ && t !~ /^typedef/ && t ~ ("(^|[ *])" name "\\(")) {
             for (j = i; j <= NL[path] && SRC[path, j] != "{" && SRC[path, j] !~ /;[ \t]*$/; j++);
-            if (SRC[path, j] == "{")
-                for (from = i; j <= NL[path] && !to; j++) to = SRC[path, j] == "}" ? j : 0
+            if (SRC[path, j] == "{") {
+                from = i; body = j
+                for (; j <= NL[path] && !to; j++) to = SRC[path, j] == "}" ? j : 0
+            }
         }
     }
     if (!to) return "no definition of " name
-    DFROM = from; DTO = to
+    DFROM = from; DTO = to; DBODY = body ? body : to + 1
     if (from > 1 && SRC[path, from - 1] ~ /\*\/[ \t]*$/ && SRC[path, from - 1] !~ /^\/\* starter:/ && !((path, from - 1) in ISM))
         for (DFROM = from - 1; DFROM > 1 && SRC[path, DFROM] !~ /^\/\*/; DFROM--);
     return ""
@@ -154,6 +161,16 @@ function region(o, e, path, names,   i, n, w, have, want, st, why) {
 }
 { E[NR] = sub(/\r$/, "") ? "\r\n" : "\n"; L[NR] = $0 }
 END {
+    if (defs != "") {
+        if ((st = load(defs)) != "ok" && st != "bad") problem("docsnip", 0, "cannot read " defs ": " st)
+        n = split(names, w, " ")
+        for (k = 1; k <= n && st != "" && !problems; k++) {
+            contract = sub(/:$/, "", w[k])
+            if ((why = definition(defs, w[k])) != "") problem(defs, 0, why)
+            else for (i = DFROM; i <= (contract ? DBODY - 1 : DTO); i++) if (!((defs, i) in ISM)) print SRC[defs, i]
+        }
+        exit problems > 0
+    }
     if (list != "") {
         if ((st = load(list)) != "ok" && st != "bad") problem("docsnip", 0, "cannot read " list ": " st)
         for (i = 1; i <= COUNT[list]; i++) print list ":" OPEN[list, NAMES[list, i]] ": " NAMES[list, i]
@@ -175,6 +192,11 @@ END {
     exit problems ? 1 : changed ? 3 : 0
 }'
 
+if [ "$mode" = definitions ]; then
+    file=$1; shift
+    awk -v root=. -v defs="$file" -v names="$*" "$program" </dev/null
+    exit
+fi
 status=0
 for file; do
     if [ "$mode" = list ]; then

@@ -58,36 +58,6 @@ count_lines() {
         END { print total + 0, codes + 0, comments + 0 }'
 }
 
-# Prints the lines of the definitions a C file holds by the names given: NAME for the
-# whole definition, NAME: for its contract (the comment above it and the signature),
-# each with the comment just above it, marker lines left out. Fails naming a name the
-# file does not define.
-definitions() {
-    file=$1; shift
-    awk -v names="$*" '
-        function comment_line(l) { return l ~ /^\/\*/ || l ~ /^ \*/ }
-        function marker(l) { return l ~ /^\/\* (end )?excerpt:/ || l ~ /^\/\* starter:/ }
-        function emit(from, to,   k) { for (k = from; k <= to; k++) if (!marker(line[k])) print line[k] }
-        function start_of(i,   k) { k = i; while (k > 1 && comment_line(line[k - 1])) k--; return k }
-        BEGIN { n = split(names, w, " ")
-                for (k = 1; k <= n; k++) { nm = w[k]; c = sub(/:$/, "", nm); want[nm] = c ? "contract" : "whole" } }
-        { line[NR] = $0 }
-        /^typedef / { typedef_at = NR }
-        /^typedef [^{]*\(\*[A-Za-z_0-9]+\)/ { nm = $0; sub(/^[^(]*\(\*/, "", nm); sub(/\).*/, "", nm)
-                                               if (nm in want) { fn_type = nm; begin = start_of(NR) } }
-        fn_type != "" && /;[ \t]*$/ { emit(begin, NR); found[fn_type] = 1; fn_type = "" }
-        /^} [A-Za-z_0-9]+;/ { nm = $2; sub(/;.*/, "", nm)
-                              if (nm in want) { emit(start_of(typedef_at), NR); found[nm] = 1 } }
-        /^#define [A-Za-z_0-9]+/ { if ($2 in want) { emit(start_of(NR), NR); found[$2] = 1 } }
-        /^[A-Za-z].*[ *][A-Za-z_0-9]+\(/ && !/;[ \t]*$/ && !/^typedef/ {
-            sig = $0; sub(/\(.*/, "", sig); m = split(sig, p, /[ *]+/); nm = p[m]
-            if (nm in want) { pending = nm; begin = start_of(NR) } }
-        pending != "" && $0 == "{" && want[pending] == "contract" { emit(begin, NR - 1); found[pending] = 1; pending = "" }
-        pending != "" && $0 == "}" { emit(begin, NR); found[pending] = 1; pending = "" }
-        END { for (nm in want) if (!(nm in found)) { print FILENAME ": no definition of " nm >"/dev/stderr"; bad = 1 }
-              exit bad }' "$file"
-}
-
 # Prints the number of lines on the student's path of chapter doc, or - when it has none:
 # the rows of its table | `FILE` | `WHOLE` ... | `CONTRACT` ... |.
 student_path() {
@@ -98,8 +68,9 @@ student_path() {
             names=$(echo "$whole" | tr -d '`')
             contracts=$(echo "$contract" | tr -d '`' | awk '{ for (k = 1; k <= NF; k++) printf " %s:", $k }')
             [ -f "$file" ] || { echo "$1: the student's path names $file, which does not exist" >&2; exit 1; }
+            # The definitions and contracts as they stand, by docsnip (its --definitions).
             # shellcheck disable=SC2086 # one word a name
-            definitions "$file" $names $contracts || exit 1
+            sh tools/docsnip.sh --definitions "$file" $names $contracts || exit 1
         done >"$tmp/path" || exit 1
     wc -l <"$tmp/path" | tr -d ' '
 }
