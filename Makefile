@@ -34,9 +34,11 @@
 #                    GRADING_CONF=FILE, HIDDEN=DIR: points, visibility, hidden scenes
 #   make check-gradescope  that autograder, unpacked and run on a correct, a buggy and an
 #                    empty submission of part 1.3 (a few minutes)
-#   make check-contain  hostile submissions (chains of 1,500 processes, daemons, a fork
-#                    loop, planted links and FIFOs) graded by tools/grade and run_autograder:
-#                    none outlives its run (as root for all of it; about 5 minutes)
+#   make check-contain  hostile submissions (processes left behind, a terminal's input,
+#                    classmates' folders, a full disk, shared memory, copied references...)
+#                    graded by tools/grade and run_autograder in both sandboxes, namespaces
+#                    and the fallback: none reaches past its folder (as root for all of it;
+#                    about 5 minutes)
 #   make check-debian11  build, unit tests and that autograder in a Debian 11 root, whose
 #                    OpenEXR 2.5 is Ubuntu 22.04's (as root; debootstrap; a few minutes)
 #
@@ -283,12 +285,14 @@ check-gradescope:
 	@tools/deps.sh gradescope-test
 	@tests/gradescope.sh
 
-# Hostile submissions that leave processes behind or plant links: each contained, by
-# tools/grade (its subreaper, and --run-as) and by run_autograder (tests/contain.sh).
+# Hostile submissions, each of a way out of its folder: contained by tools/grade (as a user,
+# and as root with --run-as) and by run_autograder, in bubblewrap's namespaces and in the
+# fallback (tests/contain.sh).
 check-contain:
 	$(DEPS_STEP)
 	@tools/deps.sh gradescope-test
 	@$(SUBMAKE) -C tools grade SANITIZE=0
+	@$(SUBMAKE) -C milestones/1.1-spheres-red SANITIZE=0
 	@tests/contain.sh tools/build/grade
 
 # OpenEXR 2 (Ubuntu 22.04, Gradescope's newest image) as well as 3: in a Debian 11 root.

@@ -47,7 +47,9 @@ cp "$refs/spheres-three.png" class/dee/demo.png
 sed 's/^s 25 -5 -90   10$/s 25.5 -5 -90   10/' "$top/scenes/spheres-three.scn" >moved.scn
 "$raytra" -q moved.scn "class/cy o'neil/spheres-three.png" 2>/dev/null || exit 2
 mkdir class/eli class/fay
-printf 'raytra:\n\tln -s %s raytra\n' "$raytra" >class/eli/Makefile
+# eli carries the model answer (the sandbox shows a build nothing outside its folder).
+cp "$raytra" class/eli/model || exit 2
+printf 'raytra:\n\tcp model raytra\n' >class/eli/Makefile
 printf 'raytra:\n\t@echo no compiler in $(CURDIR) >&2; exit 1\n' >class/fay/Makefile
 # Build outputs eli carries from elsewhere, removed before make: a stale raytra among them.
 mkdir class/eli/build
@@ -136,6 +138,22 @@ check_refused "another class: other submissions" "mini 1" grown "mini 3"
 rm "shard 2/shard.txt"
 check_refused "did not finish" "shard 1" "shard 2" "shard 3"
 check_refused "no shard folder nowhere" "shard 1" nowhere "shard 3"
+# A shard.txt that is a FIFO, or a link: refused at once, never waited on nor followed; a
+# lock that is a FIFO: not waited on either.
+mkfifo "shard 2/shard.txt"
+timeout 10 "$grade" merge -q --out refused "shard 1" "shard 2" "shard 3" 2>stderr.txt
+check "a shard.txt that is a FIFO: exit 2 at once" test $? -eq 2
+check "a shard.txt that is a FIFO: says so" \
+    grep -qxF "grade: shard 2/shard.txt is not a regular file (a FIFO): not the results of grade --shard" stderr.txt
+rm "shard 2/shard.txt"
+ln -s "../shard 1/shard.txt" "shard 2/shard.txt"
+check_refused "shard 2/shard.txt is not a regular file (a symbolic link)" "shard 1" "shard 2" "shard 3"
+rm "shard 2/shard.txt"
+cp -R "mini 3" "mini 3 fifo"
+rm -f "mini 3 fifo/.grade-lock"
+mkfifo "mini 3 fifo/.grade-lock"
+check "a lock that is a FIFO: not waited on" \
+    timeout 10 "$grade" merge -q --out fifo-merged "mini 1" mini-2 "mini 3 fifo"
 if command -v flock >/dev/null 2>&1; then
     # -o: the lock is flock's own, and goes with it when it is killed.
     flock -o "mini 3/.grade-lock" sleep 5 &

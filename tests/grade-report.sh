@@ -34,17 +34,24 @@ done
 sed 's/^s 25 -5 -90   10$/s 25.5 -5 -90   10/' "$top/scenes/spheres-three.scn" >moved.scn
 "$raytra" -q moved.scn class/edsger.dijkstra/spheres-three.png 2>/dev/null
 rm class/john.backus/spheres-grid-wide.png
-# Makes submission $1 a program from the shell script on stdin.
+# Makes submission $1 a program from the shell script on stdin, which runs the model answer
+# and the moved scene it carries (the sandbox shows it nothing outside its folder) as $m
+# and $moved.
 program() {
-    mkdir -p "class/$1" && cat >"class/$1/raytra.sh"
+    mkdir -p "class/$1" && cat >"class/$1/raytra.sh" && cp "$raytra" "class/$1/model" &&
+        cp moved.scn "class/$1/" || exit 2
     printf 'raytra: raytra.sh\n\tcp raytra.sh raytra\n\tchmod +x raytra\n' >"class/$1/Makefile"
 }
-printf '#!/bin/sh\nexec "%s" "$@"\n' "$raytra" | program margaret.hamilton
-printf '#!/bin/sh\ncase $1 in *spheres-three*) exec "%s" "%s" "$2" ;; esac\nexec "%s" "$@"\n' \
-    "$raytra" "$tmp/moved.scn" "$raytra" | program ada.lovelace
-printf '#!/bin/sh\nkill -SEGV $$\n' | program barbara.liskov
-printf '#!/bin/sh\ncase $1 in *demo*) exec sleep 30 ;; esac\nexec "%s" "$@"\n' "$raytra" |
-    program dennis.ritchie
+# shellcheck disable=SC2016 # the students' scripts
+{
+    m='"$(dirname "$0")/model"' moved='"$(dirname "$0")/moved.scn"'
+    printf '#!/bin/sh\nexec %s "$@"\n' "$m" | program margaret.hamilton
+    printf '#!/bin/sh\ncase $1 in *spheres-three*) exec %s %s "$2" ;; esac\nexec %s "$@"\n' \
+        "$m" "$moved" "$m" | program ada.lovelace
+    printf '#!/bin/sh\nkill -SEGV $$\n' | program barbara.liskov
+    printf '#!/bin/sh\ncase $1 in *demo*) exec sleep 30 ;; esac\nexec %s "$@"\n' "$m" |
+        program dennis.ritchie
+}
 mkdir -p class/grace.hopper && printf 'raytra:\n\tcc -o raytra missing.c\n' >class/grace.hopper/Makefile
 "$grade" -q --time-limit 2 --out out 1.1 class 2>grade.txt || { cat grade.txt; exit 1; }
 

@@ -42,11 +42,17 @@ copy_references() {
 }
 
 # Makes submission $1 a program: make copies the shell script read from stdin to raytra.
+# The submission carries the program $2 (default: part 1.1's raytra) and moved.scn, which
+# the script runs as $model and reads as $moved: a student's program sees nothing outside
+# its folder but the toolchain and its scene (the sandbox, docs/grading.md, Containment).
 script_submission() {
     mkdir -p "class/$1"
     cat >"class/$1/raytra.sh"
+    cp "${2:-$raytra}" "class/$1/model" && cp "$tmp/moved.scn" "class/$1/" || exit 2
     printf 'raytra: raytra.sh\n\tcp raytra.sh raytra\n\tchmod +x raytra\n' >"class/$1/Makefile"
 }
+# shellcheck disable=SC2016 # the students' scripts run and read what they carry
+model='"$(dirname "$0")/model"' moved='"$(dirname "$0")/moved.scn"'
 
 # Makes submission $1 a program: make compiles the C program read from stdin to raytra.
 c_submission() {
@@ -109,7 +115,7 @@ copy_references bomb
 # more memory than the limit, one that writes nothing, and one that does not build.
 script_submission correct-program <<EOF
 #!/bin/sh
-exec "$raytra" "\$@"
+exec $model "\$@"
 EOF
 script_submission hanging <<EOF
 #!/bin/sh
@@ -117,22 +123,22 @@ case \$1 in
 *demo*) echo "hanging on purpose"; sleep $nap1 & exec sleep $nap1 ;;
 *spheres-three*) setsid sleep $nap2 >/dev/null 2>&1 & ;;
 esac
-exec "$raytra" "\$@"
+exec $model "\$@"
 EOF
 script_submission fifo-program <<EOF
 #!/bin/sh
 case \$1 in *demo*) exec mkfifo "\$2" ;; esac
-exec "$raytra" "\$@"
+exec $model "\$@"
 EOF
 script_submission link-program <<EOF
 #!/bin/sh
 case \$1 in *demo*) exec ln -s "$refs/demo.png" "\$2" ;; esac
-exec "$raytra" "\$@"
+exec $model "\$@"
 EOF
 script_submission planter <<EOF
 #!/bin/sh
 case \$1 in *spheres-three*) ln -s "$tmp/precious.txt" "\$(dirname "\$2")/../spheres-behind-camera.log" ;; esac
-exec "$raytra" "\$@"
+exec $model "\$@"
 EOF
 echo "precious" >precious.txt
 c_submission crashing <<'EOF'
@@ -153,7 +159,7 @@ case \$1 in *demo*) exec yes "chatty for ever" ;; esac
 echo "FIRST LINE"
 yes "chatty" | head -c 3000000
 printf '\nLAST LINE\n'
-exec "$raytra" "\$@"
+exec $model "\$@"
 EOF
 # The copier copies the references it carries, as a starter carries them, beside its
 # program; correct-program carries them too, and writes the same bytes by rendering.
@@ -281,8 +287,10 @@ has 'correct,demo,PASS,0,0,0,0,0,inf,0,0,,identical to the reference,'
 # A byte-for-byte copy of a reference file is flagged, handed in or written; an image equal
 # in its pixels but written otherwise (a PFM) is not.
 has 'correct,demo,PASS,0,0,0,0,0,inf,0,0,,identical to the reference,,copy,1'
+# The copier copies the canaries the grader put in the place of the references it carries:
+# one channel of a pixel in 32 a code off, within the tolerance, and flagged.
 check "a program's copy of a reference flagged" \
-    test "$(grep -c '^copier,[a-z-]*,PASS,.*,identical to the reference,[0-9.]*,copy,1$' "$csv")" -eq 5
+    test "$(grep -c '^copier,[a-z-]*,PASS,.*,no pixel differs by more than 2/255,[0-9.]*,copy,1$' "$csv")" -eq 5
 check "an equal image written otherwise flagged" test -z "$(grep '^pfm,.*,copy,[0-9.]*$' "$csv")"
 check "a program that renders the references' bytes flagged" \
     test -z "$(grep '^correct-program,.*,copy,[0-9.]*$' "$csv")"
@@ -386,22 +394,33 @@ check "interrupted: a report" test ! -e interrupted/report.html
 check_no_leftovers "interrupted"
 
 # A program that makes a classmate's work folder before grade does, or plants a link there:
-# the classmate is graded all the same, in a folder made fresh, the planted one moved aside.
+# in namespaces it cannot; in the fallback, the classmate is graded all the same, in a
+# folder made fresh, the planted one moved aside.
 mkdir -p trespass elsewhere
 script_submission a-trespasser <<EOF
 #!/bin/sh
 [ -e ../../02-b-victim ] || { mkdir -p ../../02-b-victim/run && ln -s "$tmp/elsewhere" ../../02-b-victim/images; }
 [ -L ../../03-c-victim ] || ln -s "$tmp/elsewhere" ../../03-c-victim
-exec "$raytra" "\$@"
+exec $model "\$@"
 EOF
 script_submission b-victim <<EOF
 #!/bin/sh
-exec "$raytra" "\$@"
+exec $model "\$@"
 EOF
 cp -R class/b-victim class/c-victim
 mv class/a-trespasser class/b-victim class/c-victim trespass/
+# In namespaces, the trespasser reaches nothing outside its sandbox: nothing to move aside.
 checks=$((checks + 1))
-"$grade" --out trespassed 1.1 trespass >stdout.txt 2>stderr.txt || fail "grade of a trespassed class failed"
+"$grade" --sandbox namespaces --out trespassed 1.1 trespass >stdout.txt 2>stderr.txt ||
+    fail "grade of a trespassed class failed (namespaces)"
+check "namespaces: the trespasser's classmates graded" \
+    test "$(grep -c '^[bc]-victim,[a-z-]*,PASS,' trespassed/grades.csv)" -eq 10
+check "namespaces: the trespasser reached no classmate's work folder" \
+    test -z "$(ls -A trespassed/work | grep moved)$(ls elsewhere)"
+# The fallback's walls: a folder or a link made before the grader's is moved aside.
+checks=$((checks + 1))
+"$grade" --sandbox fallback --out trespassed 1.1 trespass >stdout.txt 2>stderr.txt ||
+    fail "grade of a trespassed class failed (fallback)"
 check "a classmate whose work folder was made before graded" \
     test "$(grep -c '^[bc]-victim,[a-z-]*,PASS,' trespassed/grades.csv)" -eq 10
 check "a work folder made before moved aside, said" \
@@ -445,15 +464,15 @@ echo 'spheres-three.png scenes/spheres-three.scn --convention lecture 7 -j 2 --m
     >1.4-test/references/renders.txt
 script_submission arguments <<EOF
 #!/bin/sh
-echo "\$#" "\$3" "\$4" "\$5" >"$tmp/arguments.txt"
-exec "$raytra" "\$1" "\$2"
+echo "\$#" "\$3" "\$4" "\$5" >arguments.txt
+exec $model "\$1" "\$2"
 EOF
 mkdir words
 mv class/arguments words/
 checks=$((checks + 1))
 "$grade" --out "out dir" ./1.4-test words >stdout.txt 2>stderr.txt || fail "grade ./1.4-test failed"
 check "a part given by its folder" grep -q '^arguments,spheres-three,PASS,' "$csv"
-check "the arguments a program gets" test "$(cat arguments.txt)" = "5 7 1 last"
+check "the arguments a program gets" test "$(cat "out dir/work/01-arguments/run/arguments.txt")" = "5 7 1 last"
 check "the note on raytra's options" grep -qF \
     "grade: note: spheres-three.png: raytra's option --convention lecture is not given to students' programs" stderr.txt
 check "the note on an option with a value" grep -qF "raytra's option --max-depth 3 is not given" stderr.txt
@@ -464,10 +483,9 @@ mkdir -p 1.6-test/references
 cp "$refs/spheres-three.png" 1.6-test/references/
 echo 'spheres-three.png scenes/spheres-three.scn --light-samples 2 --seed 4 --samples 3' \
     >1.6-test/references/renders.txt
-rm -f arguments.txt
 checks=$((checks + 1))
 "$grade" --out "out dir" ./1.6-test words >stdout.txt 2>stderr.txt || fail "grade ./1.6-test failed"
-check "P and S in the course's order" test "$(cat arguments.txt)" = "4 3 2 "
+check "P and S in the course's order" test "$(cat "out dir/work/01-arguments/run/arguments.txt")" = "4 3 2 "
 
 # Part 1.6's shipped files handed in: a byte copy of raytra's image of each Monte Carlo
 # render (a correct render, which passes) and of a statistical reference (whose mean has
@@ -502,9 +520,9 @@ for dir in "$top"/milestones/*/; do
         continue
     fi
     rm -rf own && mkdir own
-    script_submission "$part" <<EOF
+    script_submission "$part" "$dir/raytra" <<EOF
 #!/bin/sh
-exec "$dir/raytra" "\$@"
+exec $model "\$@"
 EOF
     mv "class/$part" own/
     graded=$(grep -c '^[^#![:space:]]' "$dir/references/renders.txt")
@@ -524,7 +542,7 @@ done
 # the heat map of each scene that fails, and exits 1 unless every scene passes.
 script_submission self-check <<EOF
 #!/bin/sh
-exec "$raytra" "\$@"
+exec $model "\$@"
 EOF
 checks=$((checks + 1))
 "$grade" --self -q --out self-out 1.1 class/self-check >stdout.txt 2>stderr.txt ||
@@ -533,8 +551,8 @@ check "--self: a line a scene" test "$(grep -c '^PASS  *[a-z-]*: identical to th
 check "--self: the summary" grep -q '^5 of 5 scenes pass; the report: self-out/report.html$' stdout.txt
 script_submission self-wrong <<EOF
 #!/bin/sh
-case \$1 in *spheres-three*) exec "$raytra" "$tmp/moved.scn" "\$2" ;; esac
-exec "$raytra" "\$@"
+case \$1 in *spheres-three*) exec $model $moved "\$2" ;; esac
+exec $model "\$@"
 EOF
 checks=$((checks + 1))
 "$grade" --self -q --out self-out 1.1 class/self-wrong >stdout.txt 2>stderr.txt
@@ -546,6 +564,18 @@ self=$tmp/self-out/work/1-self
 check "--self: a crash's command line" grep -qxF \
     "             command: cd $self/run && ../build/raytra $top/scenes/demo.scn ../images/demo.png" stdout.txt
 
+# --self of a folder whose image is a link to a name with a terminal's escape sequences in
+# it (setting the window's title, and CSI in C1): told with them written \xNN, none sent.
+copy_references self-link
+ln -sf "$(printf 'x\033]0;pwned\007\302\233y')" class/self-link/demo.png
+"$grade" --self -q --out self-out 1.1 class/self-link >stdout.txt 2>stderr.txt
+check "--self: a link's target told escaped" grep -qxF \
+    'LINK         demo: demo.png is a symbolic link to x\x1b]0;pwned\x07\xc2\x9by: not an image handed in' \
+    stdout.txt
+# Tells whether the files hold none of the bytes ESC, BEL and 0x9B (CSI in C1).
+no_controls() { ! LC_ALL=C grep -q "$(printf '[\033\007\233]')" "$@"; }
+check "--self: no ESC, BEL nor CSI (C1) printed" no_controls stdout.txt stderr.txt
+
 # --self of the folder the student is in: named by the folder's own name, not ".".
 (cd class/self-check && "$grade" --self -q --out ../../dot-out --junit ../../dot.xml 1.1 . \
     >../../stdout.txt 2>../../stderr.txt)
@@ -556,7 +586,7 @@ check "--self .: the JUnit file names the folder '.'" grep -q '<testsuite name="
 # built from its sources; the report says what was removed.
 script_submission stale <<EOF
 #!/bin/sh
-exec "$raytra" "\$@"
+exec $model "\$@"
 EOF
 mkdir class-stale && mv class/stale class-stale/ &&
     mkdir -p class-stale/stale/build-sanitize/common class-stale/stale/common || exit 2

@@ -23,7 +23,11 @@
 # grading.conf (a part's total, points and visibilities) and two hidden scenes of the
 # test's own (GRADING_CONF=, its `hidden` line): the correct submission scores them all,
 # each test with its points and visibility, and a program that copies the references its
-# folder carries fails the hidden scenes.
+# folder carries fails the hidden scenes; the summary speaks of the visible scenes alone,
+# the total is hidden as Gradescope's specification says, no hidden scene's test names a
+# scene file, and no test has an execution_time. Last, a Makefile that prints a fake
+# submission_metadata.json (a marker in it) and the hidden scenes, then fails: as root, the
+# marker must be nowhere in results.json.
 set -u
 top=$(cd "$(dirname "$0")/.." && pwd) || exit 2
 for tool in zip unzip jq iconv; do
@@ -161,8 +165,11 @@ seconds=$(($(date +%s) - start))
 check_results 8 "" ""
 check "the summary does not say 8 of 8" test "$(field '.output |
     startswith("Part 1.3-shadows-mirror: 8 of 8 scenes pass: 8 of 8 points.")')" = true
-check "no execution_time, or a test without one" test "$(field '[.execution_time,
-    .tests[].execution_time] | map(numbers | select(. >= 0)) | length')" = 9
+check "no execution_time at the top" test "$(field '.execution_time | numbers | . >= 0')" = true
+check "a test has an execution_time, which Gradescope's specification does not have" \
+    test "$(field '[.tests[] | has("execution_time")] | any')" = false
+check "a test's output does not say how long the scene ran" test "$(field '[.tests[].output |
+    test("\nRan in [0-9]+\\.[0-9]+ s\\.\n")] | all')" = true
 check "a correct scene is not identical" test "$(field '[.tests[].output |
     startswith("PASS: identical to the reference.")] | all')" = true
 budget=$(sed -n 's/^BUDGET=//p' "$root/source/gradescope.conf")
@@ -266,15 +273,44 @@ done
 rm -rf "$root/source" && mkdir -p "$root/source" && unzip -q "$tmp/controls.zip" -d "$root/source" ||
     exit 2
 sh "$root/source/setup.sh" --build-only >"$tmp/setup.log" 2>&1 || { tail "$tmp/setup.log"; exit 1; }
+# What students see before the tests not visible are: the summary (visible) speaks of the
+# visible tests alone, neither counting nor naming the others; the total is hidden as
+# Gradescope's specification says (a test not shown yet hides it; a "hidden" scene that
+# counts brings a note shown once the grades are published, which does); no advice names
+# a scene file the student does not have.
+summary7="Part 1.3-shadows-mirror: 7 of 7 scenes shown here pass: 26.92 of 26.92 points. \
+Gradescope shows your total score later."
+check_unshown() {
+    check "controls: the summary does not speak of the 7 visible scenes alone: $(field .output)" \
+        test "$(field ".output | startswith(\"$summary7\n\")")" = true
+    check "controls: the summary names a test that is not visible, or its scene file" \
+        test "$(field '. as $r | [$r.tests[] | select(.visibility != "visible" and has("score")) |
+            .name | capture("^(?<n>[^ ]+) \\((?<f>.*)\\)$") | [.n, .f][] as $word |
+            $r.output | contains($word)] | any')" = false
+    check "controls: the summary counts the tests not visible, or all" \
+        test "$(field '.output | test("\\b(3|10) (of|scenes)|of (3|10)\\b|\\b50\\b")')" = false
+    check "controls: a test that counts is not visible, yet none hides the total as the spec says" \
+        test "$(field '([.tests[] | select(.visibility != "visible" and .max_score > 0)] |
+            length == 0) or ([.tests[].visibility | select(. == "after_due_date" or
+            . == "after_published")] | length > 0)')" = true
+    check "controls: a hidden scene counts, yet no note shown after publishing hides the total" \
+        test "$(field '[.tests[] | select(.visibility == "after_published" and
+            (has("score") | not) and (.output | test("total score")))] | length')" = 1
+    check "controls: a test has an execution_time" \
+        test "$(field '[.tests[] | has("execution_time")] | any')" = false
+    check "controls: a hidden scene's output names a scene file or a command" \
+        test "$(field '[.tests[] | select(.name | startswith("own-")) | .output |
+            test("\\.scn|Command|\\./raytra|heat\\.png")] | any')" = false
+}
 autograde "$correct"
 check "controls: the score is not 50" test "$(field .score)" = 50
-check "controls: not 10 tests" test "$(field '.tests | length')" = 10
+check "controls: not 10 tests and a note" test "$(field '.tests | length')" = 11
 check "controls: the points are not 1 a scene, demo 2, own-shadow 1, own-demo 3, scaled to 50" \
-    test "$(field '[.tests[] | .max_score * 13 / 50 | round]')" = '[1,1,1,1,1,1,1,2,1,3]'
+    test "$(field '[.tests[] | select(has("max_score")) | .max_score * 13 / 50 | round]')" = \
+    '[1,1,1,1,1,1,1,2,1,3]'
 check "controls: the visibilities" test "$(field '[.tests[].visibility]')" = \
-    '["visible","visible","visible","visible","visible","visible","visible","after_published","after_due_date","hidden"]'
-check "controls: the summary gives no points" \
-    test "$(field '.output | startswith("Part 1.3-shadows-mirror: 10 of 10 scenes pass: 50 of 50 points.")')" = true
+    '["visible","visible","visible","visible","visible","visible","visible","after_published","after_due_date","hidden","after_published"]'
+check_unshown
 if [ "$(id -u)" -eq 0 ]; then
     check "controls: the student's uid can read a hidden reference" sh -c '! setpriv \
         --reuid="$AUTOGRADER_USER" --regid="$AUTOGRADER_USER" --clear-groups \
@@ -298,6 +334,46 @@ check "controls: the copier passes a hidden scene" test "$(field '[.tests[] |
     select(.status == "failed") | .name | sub(" .*"; "")]')" = '["own-shadow","own-demo"]'
 check "controls: the copier's score is not 9 of 13, scaled to 50" \
     test "$(field '.score * 13 / 50 | round')" = 9
+check "controls: the copier's hidden scenes do not fail as ERROR" test "$(field '[.tests[] |
+    select(.name | startswith("own-")) | .output | startswith("ERROR: ")] | all')" = true
+check_unshown
+
+# A curious build: it prints Gradescope's submission_metadata.json (earlier results,
+# hidden tests included) and the hidden scenes into make's output, which the summary shows.
+echo "== curious: make prints submission_metadata.json and the hidden scenes, and fails"
+marker="raytra-metadata-marker-$$"
+printf '{"id": 1, "previous_submissions": [{"score": 7, "results": {"output": "%s"}}]}\n' \
+    "$marker" >"$root/submission_metadata.json" && chmod 644 "$root/submission_metadata.json" ||
+    exit 2
+mkdir "$tmp/curious"
+# The metadata last, so that it would be in the end of make's output the summary shows.
+printf 'raytra:\n\t%s\n\t-cat /autograder/submission_metadata.json %s/submission_metadata.json\n\texit 1\n' \
+    '-cat ../../hidden-scenes/*.scn ../../../hidden/*.scn' "$root" >"$tmp/curious/Makefile"
+autograde "$tmp/curious"
+check "curious: the build did not fail" test "$(field '.output |
+    test("The build failed: make failed ")')" = true
+check "curious: make's output, up to the cat of the metadata, is not in the summary" \
+    test "$(field '.output | test("\nThe end of make.s output:\n(.*\n)*cat: [^\n]*" +
+        "submission_metadata.json[^\n]*\n(.*\n)*make: \\*\\*\\* .*Error 1")')" = true
+if [ "$(id -u)" -eq 0 ]; then
+    check "curious: submission_metadata.json reached results.json" \
+        sh -c '! grep -q "$1" "$2"' sh "$marker" "$root/results/results.json"
+    # Denied by its mode, or out of sight in the grader's sandbox.
+    check "curious: the build could read submission_metadata.json" test "$(field '.output |
+        test("cat: [^\n]*/submission_metadata.json: (Permission denied|No such file)")')" = true
+    check "curious: submission_metadata.json is not root's alone (600)" \
+        test "$(stat -c '%u %a' "$root/submission_metadata.json")" = "0 600"
+else
+    echo "gradescope.sh: not root: submission_metadata.json stays readable by the submission" \
+        "(it runs as the user running the test): not tried"
+fi
+rm -f "$root/submission_metadata.json"
+# The hidden scenes: the grader copies them where the program reads them, and without the
+# grader's sandbox (docs/grading.md, section 3) make can read them too.
+if grep -q '^s 3 22 -10   9$' "$tmp/hidden/own-shadow.scn" &&
+    jq -r .output "$root/results/results.json" | grep -q '^s 3 22 -10   9$'; then
+    echo "gradescope.sh: note: the build read a hidden scene, which results.json shows (no sandbox)"
+fi
 
 if [ $failures -eq 0 ]; then
     echo "gradescope.sh: all $checks checks passed"

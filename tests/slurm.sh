@@ -56,14 +56,18 @@ mkdir -p "the class/john.backus"
 for scene in spheres-three demo; do
     "$raytra" -q "$top/scenes/$scene.scn" "the class/john.backus/$scene.pfm" 2>/dev/null || exit 2
 done
-# Makes submission $1 a program from the shell script on stdin.
+# Makes submission $1 a program from the shell script on stdin, which runs the model answer
+# it carries (the sandbox shows it nothing outside its folder) as $m.
 program() {
-    mkdir -p "the class/$1" && cat >"the class/$1/raytra.sh"
+    mkdir -p "the class/$1" && cat >"the class/$1/raytra.sh" &&
+        cp "$raytra" "the class/$1/model" || exit 2
     printf 'raytra: raytra.sh\n\tcp raytra.sh raytra\n\tchmod +x raytra\n' >"the class/$1/Makefile"
 }
-printf '#!/bin/sh\nexec "%s" "$@"\n' "$raytra" | program margaret.hamilton
+# shellcheck disable=SC2016 # the students' scripts
+m='"$(dirname "$0")/model"'
+printf '#!/bin/sh\nexec %s "$@"\n' "$m" | program margaret.hamilton
 # shellcheck disable=SC2016 # the student's script
-printf '#!/bin/sh\ncase $1 in *demo*) kill -SEGV $$ ;; esac\nexec "%s" "$@"\n' "$raytra" |
+printf '#!/bin/sh\ncase $1 in *demo*) kill -SEGV $$ ;; esac\nexec %s "$@"\n' "$m" |
     program ken.thompson
 class="$tmp/the class"
 

@@ -41,6 +41,14 @@ static const GradeOption options[] = {
      offsetof(Grading, build_time_limit)},
     {{"memory-limit", 0, "M", "address space a student's make or program may use:\n"
       "bytes, or with K, M or G; 0: no limit", "2G"}, OPT_BYTES, offsetof(Grading, memory_limit)},
+    {{"disk-limit", 0, "M", "bytes a submission's build or run may leave in its\n"
+      "folders: with K, M or G; 0: no limit (the disk's\nlast 256 MiB are never theirs)", "1G"},
+     OPT_BYTES, offsetof(Grading, disk_limit)},
+    {{"sandbox", 0, "MODE", "where students' builds and programs run: namespaces\n"
+      "(bubblewrap: each sees its folder, the toolchain and\nits scene, nothing else), "
+      "fallback (a session,\nlimits, with --run-as users of their own), or auto:\n"
+      "namespaces when bubblewrap works (docs/grading.md)", "auto"}, OPT_TEXT,
+     offsetof(Grading, sandbox)},
     {{"threshold", 0, "T", "imgdiff's: a pixel differs when one of its channels\n"
       "differs by more than T", IMGDIFF_THRESHOLD_TEXT}, OPT_TEXT, offsetof(Grading, threshold)},
     {{"allow", 0, "F", "imgdiff's: an image passes when at most the fraction\n"
@@ -335,8 +343,13 @@ bool grade_prepare_out(Grading *g)
                     "\"$1/references\" \"$1/canaries\" && chmod 700 -- \"$1/references\" && echo \"grade's work folder: each run of grade with this "
                     "--out removes it and makes it anew.\" >\"$1/.made-by-grade\"",
                     "sh", g->work, NULL};
-    return run_program(anew, NULL, NULL, 600, 0).ok ||
-           grade_fail("cannot make the work folder %s anew", g->work);
+    if (!run_program(anew, NULL, NULL, 600, 0).ok)
+        return grade_fail("cannot make the work folder %s anew", g->work);
+    /* With --run-as, the students' users cross both to their folders, whatever the umask. */
+    return !contain_active() ||
+           ((stat(real, &st) == 0 && chmod(real, (st.st_mode & 07777) | 0111) == 0 &&
+             chmod(g->work, 0711) == 0) ||
+            grade_fail("cannot let the students' users cross %s: %s", real, strerror(errno)));
 }
 
 /* Has imgdiff compare each reference with itself before any work, which checks both the
@@ -407,7 +420,8 @@ int main(int argc, char **argv)
     time_t now = time(NULL);
     strftime(g.started, sizeof g.started, "%Y-%m-%d %H:%M", localtime(&now));
     run_init();
-    bool ok = contain_start(g.run_as, g.grader_user, g.jobs) && find_top(&g) && part_find(&g, argv[optind]) && shard_parse(&g) &&
+    bool ok = contain_start(g.run_as, g.grader_user, g.jobs) && sandbox_choose(&g) &&
+              find_top(&g) && part_find(&g, argv[optind]) && shard_parse(&g) &&
               (grade_kind(g.submissions) == S_IFDIR ||
                grade_fail("no folder %s", g.submissions)) &&
               part_read_renders(&g) && part_read_conf(&g) && grade_prepare_out(&g) &&

@@ -128,8 +128,11 @@ typedef struct {
     double time_limit;       /* seconds for each run of a student's program */
     double build_time_limit; /* seconds for make */
     long long memory_limit;  /* bytes of address space; 0: none */
+    long long disk_limit;    /* bytes a submission's folders may hold; 0: no limit */
     const char *run_as;      /* --run-as: students' users, one a job (as root); or NULL */
     const char *grader_user; /* --grader-user: the user the grader becomes with --run-as */
+    const char *sandbox;     /* --sandbox as given (auto, namespaces, fallback); once grading
+                              * has begun, the containment in force in words (sandbox_name) */
     bool quiet, self, help;  /* self: submissions is one student's folder */
     int jobs;                /* submissions graded at a time (--jobs) */
     const char *shard;       /* --shard K/N as given, or NULL */
@@ -152,7 +155,10 @@ typedef struct {
  * errno (RUN_NOT_RUN: fork or pipe failed); ok when it exited with status 0; output what it
  * printed, its head and tail when it printed more than the grader keeps (never NULL; it lasts
  * until the next run_program). */
-typedef enum { RUN_EXITED, RUN_KILLED, RUN_TIMED_OUT, RUN_NOT_RUN, RUN_INTERRUPTED } RunEnd;
+typedef enum {
+    RUN_EXITED, RUN_KILLED, RUN_TIMED_OUT, RUN_NOT_RUN, RUN_INTERRUPTED,
+    RUN_OVER_DISK /* a student's run stopped: it wrote past its disk limit, or filled the disk */
+} RunEnd;
 
 typedef struct {
     RunEnd end;
@@ -161,6 +167,15 @@ typedef struct {
     bool ok;
     char *output;
 } RunResult;
+
+/* What a student's build or run may reach in the sandbox (namespaces): the folders it may
+ * write, the files and folders it may read, beside the toolchain; and the bytes its folders
+ * may hold (0: any), past which it is stopped, with either containment. */
+typedef struct {
+    const char *write[4]; /* NULL-ended */
+    char **read;          /* NULL-ended, or NULL */
+    long long disk_limit;
+} View;
 
 /* The exit status of a child that could not exec its program (as the shell's). */
 #define RUN_EXEC_FAILED 127
@@ -201,8 +216,9 @@ void run_init(void);
 RunResult run_program(char *const argv[], const char *dir, const char *log, double time_limit,
                       long long memory_limit);
 RunResult run_student(char *const argv[], const char *dir, const char *log, double time_limit,
-                      long long memory_limit);
-void run_child_setup(const char *dir, int out, long long memory_limit);
+                      long long memory_limit, const View *view);
+void run_child_setup(const char *dir, int out, long long memory_limit, double time_limit,
+                     bool student);
 char *run_describe(const RunResult *r);
 char *run_command_line(char *const argv[], const char *dir);
 char *run_quote(const char *word);
@@ -212,7 +228,8 @@ char *run_tail(const char *output);
 bool contain_start(const char *run_as, const char *grader_user, int jobs);
 bool contain_active(void);
 void contain_use_slot(int k);
-int contain_run(char *const argv[], const char *dir, int out, long long memory_limit);
+int contain_run(char *const argv[], const char *dir, int out, long long memory_limit,
+                double time_limit);
 void contain_kill(void);
 bool contain_answered(void);
 RunEnd contain_wait(int *status);
@@ -220,6 +237,14 @@ void contain_end_strays(const pid_t *keep, int keep_count);
 void contain_limit_processes(void);
 void contain_release(const char *folder);
 bool contain_share(const char *path);
+
+/* grade_sandbox.c */
+bool sandbox_choose(Grading *g);
+bool sandbox_namespaces(void);
+char **sandbox_wrap(char *const argv[], const char *dir, const View *view);
+char **sandbox_scene_files(const char *scene, const char *run_dir, char *also);
+void sandbox_environment(const char *dir);
+bool sandbox_over_disk(const View *view);
 
 /* grade_jobs.c */
 bool jobs_grade_all(Grading *g);

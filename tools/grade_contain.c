@@ -1,9 +1,10 @@
-/* grade_contain.c: ending every process a submission starts, by its user of its own or as their subreaper. */
+/* grade_contain.c: students' runs as users of their own (--run-as), and ending every process a run leaves. */
 #define _GNU_SOURCE /* setgroups, ppoll */
 #include "grade.h"
 
 #include <dirent.h>
 #include <errno.h>
+#include <fcntl.h>
 #include <grp.h>
 #include <poll.h>
 #include <pwd.h>
@@ -13,6 +14,7 @@
 #include <sys/prctl.h>
 #include <sys/resource.h>
 #include <sys/socket.h>
+#include <sys/syscall.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -29,10 +31,11 @@
 #define SWEEP_GIVE_UP 30
 
 /* A request to the keeper, and its answer. */
-enum { ASK_RUN = 1, ASK_KILL = 2 };
+enum { ASK_RUN = 1, ASK_KILL = 2, ASK_SHARE = 3 };
 typedef struct {
     int ask, argc;
     long long memory_limit;
+    double time_limit;
     long asker, serial; /* the asking process and its count of runs, which the answer names */
 } Request;
 typedef struct {
@@ -68,6 +71,7 @@ typedef struct {
  * process uses (a worker its job's); count 0 when programs run as the grader's own user. */
 static int slot_count, slot_used, sockets[MAX_SLOTS];
 static pid_t forward_to;
+static User grader; /* the grader's user, whose folders the keeper gives to students' users */
 
 /* Reads a user as "NAME", "UID" or "UID:GID"; false (reported) when there is none. */
 static bool user_find(const char *text, User *u)
@@ -97,8 +101,11 @@ static bool become(User u)
            prctl(PR_SET_NO_NEW_PRIVS, 1, 0, 0, 0) == 0;
 }
 
-/* Counts the live processes whose real user is uid (zombies, which have ended, are not). */
-static int processes_of(uid_t uid)
+/* Counts the live processes whose real user is uid (zombies, which have ended, are not);
+ * with `end`, stops each (it makes no child once stopped) and kills it, through a pidfd
+ * opened before its user is read, so that a pid freed and taken by another process in
+ * between is never hit. */
+static int processes_of(uid_t uid, bool end)
 {
     int count = 0;
     char path[64], line[256];
@@ -107,19 +114,21 @@ static int processes_of(uid_t uid)
         if (e->d_name[0] < '0' || e->d_name[0] > '9')
             continue;
         snprintf(path, sizeof path, "/proc/%.20s/status", e->d_name);
+        int pidfd = end ? (int)syscall(SYS_pidfd_open, atoi(e->d_name), 0) : -1;
         FILE *f = fopen(path, "r");
-        bool zombie = false;
+        char state = 'X';
         long real = -1;
-        while (f != NULL && fgets(line, sizeof line, f) != NULL) {
-            char state;
-            if (sscanf(line, "State: %c", &state) == 1)
-                zombie = state == 'Z' || state == 'X';
-            else if (sscanf(line, "Uid: %ld", &real) == 1)
+        while (f != NULL && fgets(line, sizeof line, f) != NULL)
+            if (sscanf(line, "State: %c", &state) != 1 && sscanf(line, "Uid: %ld", &real) == 1)
                 break;
-        }
         if (f != NULL)
             fclose(f);
-        count += real == (long)uid && !zombie;
+        bool live = real == (long)uid && state != 'Z' && state != 'X';
+        count += live;
+        for (int k = 0; k < 2 && pidfd >= 0 && live; k++)
+            syscall(SYS_pidfd_send_signal, pidfd, k == 0 ? SIGSTOP : SIGKILL, NULL, 0);
+        if (pidfd >= 0)
+            close(pidfd);
     }
     if (d != NULL)
         closedir(d);
@@ -132,7 +141,7 @@ void contain_limit_processes(void)
 {
     if (getuid() == 0)
         return;
-    rlim_t n = (rlim_t)processes_of(getuid()) + STUDENT_PROCESSES;
+    rlim_t n = (rlim_t)processes_of(getuid(), false) + STUDENT_PROCESSES;
     setrlimit(RLIMIT_NPROC, &(struct rlimit){n, n});
 }
 
@@ -248,10 +257,9 @@ static void wake(int sig)
     (void)sig;
 }
 
-/* In the keeper: starts a process that, as the slot's user, kills every process of that
- * user until none lives, exiting 0, or 1 after SWEEP_GIVE_UP seconds. Killed with
- * kill(-1), which reaches every process the user may signal; whether any is left is
- * counted in /proc, since kill(-1, 0) succeeds while any process at all exists. */
+/* In the keeper: starts a process that ends every process of the slot's user until none
+ * lives, as root, which no student's process may signal or stop, then has the user's IPC
+ * objects removed; it exits 0, or 1 after SWEEP_GIVE_UP seconds. */
 static void sweep_start(Slot *s)
 {
     s->sweeper = fork();
@@ -260,14 +268,34 @@ static void sweep_start(Slot *s)
     signal(SIGINT, SIG_DFL);
     signal(SIGTERM, SIG_DFL);
     signal(SIGHUP, SIG_DFL);
-    if (!become(s->user))
-        _exit(2);
+    /* First at once, as the user, whose kill(-1) reaches all its processes in one call;
+     * then by name, as root, should a process of theirs have stopped that one. */
+    pid_t at_once = fork();
+    if (at_once == 0) {
+        if (become(s->user))
+            kill(-1, SIGKILL);
+        _exit(0);
+    }
     double give_up = clock_now() + SWEEP_GIVE_UP;
-    for (int k = 0; kill(-1, SIGKILL), processes_of(s->user.uid) > 1; k++) {
+    for (int k = 0; processes_of(s->user.uid, true) > 0; k++) {
         if (clock_now() > give_up)
             _exit(1);
         usleep(k < 100 ? 100 : 1000);
     }
+    /* It has ended (a process of the user, it was ended too): its kill(-1) is not late. */
+    if (at_once > 0)
+        waitpid(at_once, NULL, 0);
+    /* The user's System V IPC objects outlive its processes: with none left, it removes them
+     * (in namespaces, the IPC namespace's end does it). */
+    pid_t ipcrm = fork();
+    if (ipcrm == 0) {
+        int null = open("/dev/null", O_WRONLY);
+        if (become(s->user) && null >= 0 && dup2(null, 1) >= 0 && dup2(null, 2) >= 0)
+            execlp("ipcrm", "ipcrm", "--all", (char *)NULL);
+        _exit(RUN_EXEC_FAILED);
+    }
+    if (ipcrm > 0)
+        waitpid(ipcrm, NULL, 0);
     _exit(0);
 }
 
@@ -286,7 +314,7 @@ static void keeper_spawn(Slot *s, const Request *q, char *text, size_t len, int 
         signal(SIGHUP, SIG_DFL);
         if (!become(s->user))
             _exit(RUN_EXEC_FAILED);
-        run_child_setup(dir[0] != '\0' ? dir : NULL, out, q->memory_limit);
+        run_child_setup(dir[0] != '\0' ? dir : NULL, out, q->memory_limit, q->time_limit, true);
         execvp(argv[0], argv);
         grade_fail("cannot run '%s': %s", argv[0], strerror(errno));
         _exit(RUN_EXEC_FAILED);
@@ -301,6 +329,22 @@ static void keeper_spawn(Slot *s, const Request *q, char *text, size_t len, int 
         return;
     }
     s->answer_due = true;
+}
+
+/* In the keeper: gives the folder at path, one of the grader's, to the slot's user and the
+ * grader's group, mode 2770: the student writes in it, the grader reads it, no classmate
+ * enters it (grade_submission.c closes it to all once graded); returns 0 or an errno. */
+static int keeper_share(const Slot *s, const char *path)
+{
+    int fd = open(path, O_RDONLY | O_DIRECTORY | O_NOFOLLOW | O_CLOEXEC);
+    struct stat st;
+    int err = fd < 0 || fstat(fd, &st) != 0 ? errno
+              : st.st_uid != grader.uid    ? EPERM
+              : fchown(fd, s->user.uid, grader.gid) != 0 || fchmod(fd, 02770) != 0 ? errno
+                                                                                      : 0;
+    if (fd >= 0)
+        close(fd);
+    return err;
 }
 
 /* In the keeper: reads the request waiting on slot s's socket and does it; a socket closed
@@ -345,8 +389,13 @@ static void keeper_read(Slot *s)
             if (s->child > 0 && s->sweeper == 0)
                 sweep_start(s);
         }
-    } else if (q.ask == ASK_KILL && s->child > 0 && s->sweeper == 0)
+    } else if (q.ask == ASK_KILL && s->child > 0 && s->sweeper == 0) {
         sweep_start(s);
+    } else if (q.ask == ASK_SHARE && (size_t)n > sizeof q) {
+        text[n - sizeof q] = '\0';
+        Answer a = {RUN_EXITED, keeper_share(s, text), q.asker, q.serial};
+        send(s->socket, &a, sizeof a, MSG_NOSIGNAL);
+    }
     if (out >= 0)
         close(out);
 }
@@ -448,7 +497,6 @@ static void keeper_main(Slot *slots)
 bool contain_start(const char *run_as, const char *grader_user, int jobs)
 {
     static Slot slots[MAX_SLOTS];
-    User grader;
     if (run_as == NULL)
         return grader_user == NULL || grade_fail("--grader-user goes with --run-as");
     if (geteuid() != 0)
@@ -471,7 +519,7 @@ bool contain_start(const char *run_as, const char *grader_user, int jobs)
         for (int k = 0; k + 1 < slot_count; k++)
             if (slots[k].user.uid == u.uid)
                 return grade_fail("--run-as names the user %s twice", name);
-        if (processes_of(u.uid) > 0)
+        if (processes_of(u.uid, false) > 0)
             return grade_fail("the user %s has processes running: --run-as needs users that "
                               "run nothing else, since every process of theirs is ended",
                               name);
@@ -520,11 +568,12 @@ bool contain_active(void)
 /* Asks the keeper to run argv in dir (NULL: the grader's folder) as this job's student's
  * user, with its output to the descriptor out and memory_limit; returns the socket on which
  * the answer comes (contain_wait), or -1 (errno set). */
-int contain_run(char *const argv[], const char *dir, int out, long long memory_limit)
+int contain_run(char *const argv[], const char *dir, int out, long long memory_limit,
+                double time_limit)
 {
     static char text[1 << 16];
     static long serial;
-    Request q = {ASK_RUN, 0, memory_limit, (long)getpid(), ++serial};
+    Request q = {ASK_RUN, 0, memory_limit, time_limit, (long)getpid(), ++serial};
     size_t len = 0;
     for (const char *word = dir != NULL ? dir : ""; word != NULL; word = argv[q.argc++]) {
         size_t n = strlen(word) + 1;
@@ -551,7 +600,7 @@ int contain_run(char *const argv[], const char *dir, int out, long long memory_l
 /* Asks the keeper to end the run going on, and every process of its user. */
 void contain_kill(void)
 {
-    Request q = {ASK_KILL, 0, 0, (long)getpid(), 0};
+    Request q = {ASK_KILL, 0, 0, 0, (long)getpid(), 0};
     send(sockets[slot_used], &q, sizeof q, MSG_NOSIGNAL);
 }
 
@@ -591,20 +640,35 @@ RunEnd contain_wait(int *status)
 }
 
 /* Has each student's user make what it left in folder (a work folder of an earlier run)
- * writable by all, for the grader to remove it; nothing without --run-as. */
+ * writable by all, for the grader to remove it, the submissions' folders, closed once
+ * graded, opened to them first; nothing without --run-as. */
 void contain_release(const char *folder)
 {
+    int count = 0;
+    char **names = slot_count > 0 ? grade_list_folders(folder, &count) : NULL;
+    for (int k = 0; k < count; k++)
+        chmod(grade_format("%s/%s", folder, names[k]), 0711);
     char *chmod[] = {"chmod", "-R", "a+rwX", "--", (char *)folder, NULL};
     for (int k = 0; k < slot_count; k++) {
         contain_use_slot(k);
-        run_student(chmod, NULL, NULL, 600, 0);
+        run_student(chmod, NULL, NULL, 600, 0, &(View){{folder, NULL}, NULL, 0});
     }
     contain_use_slot(0);
 }
 
-/* Makes the folder at path, the grader's, one that students' users may write in: with
- * --run-as, open to all (a build's, a program's images and scratch folders). */
+/* Makes the folder at path, the grader's, one that this job's student's user may write in
+ * (a build's, a program's images and scratch folders): with --run-as, the keeper gives it
+ * to that user and the grader's group (keeper_share); false (errno set) when it could not. */
 bool contain_share(const char *path)
 {
-    return !contain_active() || chmod(path, 0777) == 0;
+    if (!contain_active())
+        return true;
+    Request q = {ASK_SHARE, 0, 0, 0, (long)getpid(), 0};
+    struct iovec io[2] = {{&q, sizeof q}, {(char *)path, strlen(path) + 1}};
+    struct msghdr m = {.msg_iov = io, .msg_iovlen = 2};
+    int status = errno = EIO;
+    if (sendmsg(sockets[slot_used], &m, MSG_NOSIGNAL) < 0 || contain_wait(&status) != RUN_EXITED)
+        return false;
+    errno = status;
+    return status == 0;
 }

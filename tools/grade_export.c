@@ -121,12 +121,18 @@ static char *student_command(const Render *r)
 }
 
 /* Returns what a student does about a scene's verdict: a sentence or two, concrete, naming
- * the file or the command to look at; "" for a pass. */
+ * the file or the command to look at; "" for a pass. A hidden scene (r->hidden), which the
+ * student does not have, gets advice that names no scene file and no command to run it. */
 static char *advice(const Grading *g, const Render *r, const SceneResult *res)
 {
     switch (res->verdict) {
     case VERDICT_PASS: return "";
     case VERDICT_FAIL:
+        if (r->hidden)
+            return "This scene is not in your starter, so you cannot render it yourself: run "
+                   "`make check` on the starter's scenes, and look for what your program gets "
+                   "right there only because of how they are arranged (the camera, the lights, "
+                   "where the objects lie). Look at the box above first.";
         return grade_format("Render the scene with the command below and compare it with the "
                             "reference: `make check` in your starter writes its heat map to "
                             "out/check/%s.heat.png, black where the images agree and bright "
@@ -144,15 +150,25 @@ static char *advice(const Grading *g, const Render *r, const SceneResult *res)
         return "Write the image at the path raytra gets as its second argument, and hand in "
                "your folder with its Makefile at the top, as the starter has it.";
     case VERDICT_ERROR:
+        if (r->hidden)
+            return "Read what the program printed, below: it ended with a failure on this "
+                   "scene, which is not in your starter, and wrote no image. Make sure it "
+                   "reads every scene the format allows, not only the starter's.";
         return "Run the command below from the top of your folder, after make, and read what "
                "it prints: it ended with a failure and wrote no image.";
     case VERDICT_CRASHED:
+        if (r->hidden)
+            return "Build with `make SANITIZE=1` and run `make check`: the sanitizer names the "
+                   "line that crashes. This scene is not in your starter: look for what it "
+                   "may hold that the starter's scenes do not (an object, a light or a camera "
+                   "placed otherwise).";
         return "Run the command below from the top of your folder after `make SANITIZE=1`: "
                "the sanitizer names the line that crashes (or run it under gdb --args).";
     case VERDICT_TIMEOUT:
-        return grade_format("Run the command below and time it: it may take %g s here. Look "
-                            "for a loop that never ends, such as rays reflected with no depth "
-                            "limit.",
+        return grade_format("%s: it may take %g s here. Look for a loop that never ends, such "
+                            "as rays reflected with no depth limit.",
+                            r->hidden ? "Time your program on the starter's scenes (`make check`)"
+                                      : "Run the command below and time it",
                             g->time_limit);
     case VERDICT_OUT_OF_MEMORY:
         return grade_format("Look for memory taken for every ray or pixel and never given "
@@ -168,7 +184,8 @@ static char *advice(const Grading *g, const Render *r, const SceneResult *res)
 /* Returns the words about scene k of submission s that both formats give: the verdict and
  * its reason, the figures, the time, what to do, the command and the program's last
  * output; with `build`, make's last output too when the build failed (JUnit, whose test
- * cases stand alone). */
+ * cases stand alone). A hidden scene's words name no command that runs it: the student
+ * does not have its scene file. */
 static char *scene_text(const Grading *g, const Submission *s, int k, bool build)
 {
     const Render *r = &g->renders[k];
@@ -177,11 +194,12 @@ static char *scene_text(const Grading *g, const Submission *s, int k, bool build
     bool ran = res->command != NULL;
     bool show_log = ran && verdict_info[res->verdict].tally >= TALLY_MISSING;
     /* The command that renders the scene, for a scene run or an image to make again. */
-    bool command = ran || (res->verdict != VERDICT_PASS && res->verdict != VERDICT_BUILD_FAILED);
+    bool command = !r->hidden &&
+                   (ran || (res->verdict != VERDICT_PASS && res->verdict != VERDICT_BUILD_FAILED));
     build = build && s->build_message != NULL && s->build_log_tail != NULL;
     return grade_format(
         "%s: %s.\n%s%s%s%s%s%s%s%s%s%s", verdict_info[res->verdict].name, res->message,
-        figures_text(res), res->seconds > 0 ? grade_format("It ran %.2f s.\n", res->seconds) : "",
+        figures_text(res), res->seconds > 0 ? grade_format("Ran in %.2f s.\n", res->seconds) : "",
         todo[0] != '\0' ? grade_format("What to do: %s\n", todo) : "",
         command ? grade_format("Command (from the top of the folder): %s\n", student_command(r))
                 : "",
@@ -259,48 +277,106 @@ static void write_junit(FILE *f, const Grading *g)
     fputs("</testsuites>\n", f);
 }
 
-/* Returns the summary of the one submission of --self that Gradescope shows above the
- * tests: the score, and what went wrong before any scene (the build, with make's last
- * output; a folder with no Makefile and no image), or how the scenes were run. */
-static char *summary(const Grading *g, const Submission *s)
+/* Tells whether Gradescope shows render r's test to students whenever it shows the results:
+ * its visibility is "visible" (grading.conf's default). */
+static bool shown(const Render *r)
 {
-    double max, got = part_points(g, s, &max);
-    char *head = grade_format("Part %s: %d of %d scene%s pass: %g of %g points.\n\n%s", g->part,
-                              s->tally[TALLY_PASS], g->render_count, plural(g->render_count),
-                              got, max,
+    return strcmp(r->visibility, "visible") == 0;
+}
+
+/* Tells whether results.json carries the note that keeps the total hidden: a scene that
+ * counts (points above 0) is "hidden", which, Gradescope's specification once said, does
+ * not hide the total as a test shown later (after_due_date, after_published) does. */
+static bool needs_total_note(const Grading *g)
+{
+    for (int k = 0; k < g->render_count; k++)
+        if (strcmp(g->renders[k].visibility, "hidden") == 0 && g->renders[k].points > 0)
+            return true;
+    return false;
+}
+
+/* Returns points as the summary gives them: at most two decimals, no trailing zeros. */
+static char *points_text(double points)
+{
+    char *text = grade_format("%.2f", points);
+    char *end = text + strlen(text);
+    while (end[-1] == '0')
+        *--end = '\0';
+    if (end[-1] == '.')
+        end[-1] = '\0';
+    return text;
+}
+
+/* Returns the summary of the one submission of --self that Gradescope shows above the
+ * tests, to students whenever it shows the results: the score of the scenes whose tests
+ * are shown (visible) alone, the others neither counted nor named, and whether the total
+ * is to come; what went wrong before any scene (the build, with make's last output;
+ * a folder with no Makefile and no image), or how the scenes were run; and for the
+ * instructor the containment the grader ran the program in (Grading.sandbox). */
+static char *summary(const Grading *g, const Submission *s, double scale)
+{
+    int scenes = 0, passed = 0;
+    double got = 0, max = 0;
+    bool all_shown = true, total_later = needs_total_note(g);
+    for (int k = 0; k < g->render_count; k++) {
+        const Render *r = &g->renders[k];
+        bool pass = s->results[k].verdict == VERDICT_PASS;
+        if (!shown(r)) {
+            all_shown = false;
+            total_later |= strcmp(r->visibility, "hidden") != 0;
+            continue;
+        }
+        scenes++;
+        passed += pass;
+        max += r->points * scale;
+        got += pass ? r->points * scale : 0;
+    }
+    char *score = scenes == 0 && !all_shown
+                      ? "no scene's test is shown here yet."
+                      : grade_format("%d of %d scene%s%s pass: %s of %s points.", passed, scenes,
+                                     plural(scenes), all_shown ? "" : " shown here",
+                                     points_text(got), points_text(max));
+    if (total_later)
+        score = grade_format("%s Gradescope shows your total score later.", score);
+    char *head = grade_format("Part %s: %s\n\n%s", g->part, score,
                               s->removed == NULL
                                   ? ""
                                   : grade_format("The submission carried build outputs, "
                                                  "removed before make so that raytra is built "
                                                  "from its sources:\n%s\n\n",
                                                  s->removed));
+    const char *sandbox = g->sandbox != NULL ? grade_format("\nSandbox: %s\n", g->sandbox) : "";
     if (s->build_message != NULL)
         return grade_format("%sThe build failed: %s. No scene could be run.\nRun make in a "
                             "fresh copy of what you handed in and mend the first error it "
-                            "prints.\n\nThe end of make's output:\n%s\n",
+                            "prints.\n\nThe end of make's output:\n%s\n%s",
                             head, s->build_message,
-                            s->build_log_tail != NULL ? s->build_log_tail : "(nothing)");
+                            s->build_log_tail != NULL ? s->build_log_tail : "(nothing)", sandbox);
     if (!s->program && s->tally[TALLY_MISSING] == g->render_count)
         return grade_format("%sThe submission has no Makefile at its top, so it was graded as "
                             "a folder of images, and it holds none. Hand in your starter's "
                             "folder as it is, with its Makefile at the top: make must build "
-                            "raytra there.\n",
-                            head);
+                            "raytra there.\n%s",
+                            head, sandbox);
     return grade_format(
         "%s%sEach test is a scene: %s compared with the reference. A pixel differs when one of "
         "its channels differs by more than %s; an image passes when at most the fraction %s "
-        "of its pixels differ. Limits: %g s a scene, %g s to build, %s of address space.\n",
+        "of its pixels differ. Limits: %g s a scene, %g s to build, %s of address space.\n%s",
         head, s->program ? "Your folder was copied and built with make. " : "",
         s->program ? "raytra rendered it as the test's command shows (with the scene's "
                      "absolute path here), and its image was"
                    : "the image of its name in your folder was",
         g->threshold, g->allow, g->time_limit, g->build_time_limit,
-        grade_size_text(g->memory_limit));
+        grade_size_text(g->memory_limit), sandbox);
 }
 
-/* Writes results.json for the one submission of --self: the score, each scene that passes
- * worth its points (grading.conf, scaled to the part's); the summary; the time it took; a
- * test a scene with its points, visibility, time, verdict, figures and what to do. */
+/* Writes results.json for the one submission of --self, as Gradescope's autograder
+ * specification has it (docs/grading.md, section 7): the score, each scene that passes
+ * worth its points (grading.conf, scaled to the part's); the summary; the time the whole
+ * grading took; a test a scene with its points, status, visibility and output (the
+ * verdict, figures, time and what to do). Gradescope hides the total score while a test is
+ * hidden; when a scene that counts is "hidden", a note shown once the grades are published
+ * (after_published) makes sure of it. */
 static void write_results(FILE *f, const Grading *g)
 {
     const Submission *s = &g->subs[0];
@@ -310,7 +386,7 @@ static void write_results(FILE *f, const Grading *g)
     double scale = max > 0 && all > 0 ? max / all : 1;
     fprintf(f, "{\n  \"score\": %.6g,\n  \"execution_time\": %.3f,\n  \"output\": ", got,
             clock_now() - g->began);
-    put_json(f, summary(g, s));
+    put_json(f, summary(g, s, scale));
     fputs(",\n  \"output_format\": \"text\",\n  \"visibility\": \"visible\",\n"
           "  \"stdout_visibility\": \"hidden\",\n  \"tests\": [",
           f);
@@ -321,14 +397,22 @@ static void write_results(FILE *f, const Grading *g)
         put_json(f, grade_format("%s (%s)", r->name, r->scene));
         fprintf(f,
                 ",\n      \"score\": %.6g,\n      \"max_score\": %.6g,\n      \"status\": "
-                "\"%s\",\n      \"execution_time\": %.3f,\n      \"output\": ",
-                pass ? r->points * scale : 0, r->points * scale, pass ? "passed" : "failed",
-                s->results[k].seconds);
+                "\"%s\",\n      \"output\": ",
+                pass ? r->points * scale : 0, r->points * scale, pass ? "passed" : "failed");
         put_json(f, scene_text(g, s, k, false));
         fputs(",\n      \"output_format\": \"text\",\n      \"visibility\": ", f);
         put_json(f, r->visibility);
         fputs("\n    }", f);
     }
+    if (needs_total_note(g))
+        fprintf(f,
+                "%s\n    {\n      \"name\": \"Scenes not shown\",\n      \"status\": "
+                "\"passed\",\n      \"output\": \"Your total score counts scenes of your "
+                "instructor's that are not shown to you. This note was hidden until the "
+                "grades were published, which kept your total score hidden until then.\\n\",\n"
+                "      \"output_format\": \"text\",\n      \"visibility\": "
+                "\"after_published\"\n    }",
+                g->render_count > 0 ? "," : "");
     fputs("\n  ]\n}\n", f);
 }
 

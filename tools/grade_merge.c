@@ -127,11 +127,12 @@ static bool gather(Grading *g, Grading *sh, int count, char **folders)
 }
 
 /* Takes a shared lock on a shard's folder, so that a shard still being graded (which holds
- * its lock) is refused, and no grading of it starts while it is read; false (reported). */
+ * its lock) is refused, and no grading of it starts while it is read (a FIFO planted as the
+ * lock is opened without waiting for a writer); false (reported). */
 static bool lock_shard(const char *folder)
 {
     char *path = grade_format("%s/.grade-lock", folder);
-    int fd = open(path, O_RDONLY | O_NOFOLLOW | O_CLOEXEC);
+    int fd = open(path, O_RDONLY | O_NONBLOCK | O_NOFOLLOW | O_CLOEXEC);
     if (fd >= 0 && flock(fd, LOCK_SH | LOCK_NB) != 0)
         return grade_fail("%s is still being graded (a grade holds %s): wait for it to end", folder,
                           path);

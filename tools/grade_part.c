@@ -384,7 +384,7 @@ double part_points(const Grading *g, const Submission *s, double *max)
 /* Makes the references of the hidden scenes (--hidden): each one's DIR/references/IMAGE
  * when it is there (make gradescope renders them into its zip), or else rendered now by
  * the part's model answer (built first) into OUT/work/references/hidden; and copies the scenes
- * to OUT/work/hidden-scenes, readable by all, where a student's program reads them (DIR
+ * to OUT/work/hidden-scenes, readable by the grader alone but while one is rendered (DIR
  * itself may be readable by the grader's user alone, and its files' modes come along with
  * cp). False (reported) on trouble. */
 bool part_render_hidden(Grading *g)
@@ -398,7 +398,8 @@ bool part_render_hidden(Grading *g)
         return true;
     char *copy[] = {"sh", "-c", "mkdir -- \"$2\" && cp -R -P -- \"$1/.\" \"$2\" && "
                                 "rm -rf -- \"$2/references\" \"$2/renders.txt\" && "
-                                "chmod -R a+rX -- \"$2\"",
+                                "chmod -R go-rwx -- \"$2\" && "
+                                "find \"$2\" -type d -exec chmod 711 {} +",
                     "sh", (char *)g->hidden, scenes, NULL};
     if (!run_program(copy, NULL, NULL, 600, 0).ok)
         return grade_fail("cannot copy the hidden scenes of %s to %s", g->hidden, scenes);
@@ -436,63 +437,40 @@ bool part_render_hidden(Grading *g)
     return true;
 }
 
-/* Adds a byte to a CRC-32 (PNG's, ISO 3309), bit by bit. */
-static unsigned long crc_add(unsigned long crc, unsigned char byte)
-{
-    crc ^= byte;
-    for (int k = 0; k < 8; k++)
-        crc = crc & 1 ? 0xEDB88320UL ^ (crc >> 1) : crc >> 1;
-    return crc;
-}
-
-/* Writes n as 4 bytes, most significant first, as PNG writes its numbers. */
-static void put_be32(FILE *f, unsigned long n)
-{
-    for (int k = 3; k >= 0; k--)
-        fputc((int)((n >> (8 * k)) & 0xFF), f);
-}
-
-/* Makes each PNG reference's canary (Render.canary): its bytes with a tEXt chunk put
- * before IEND that marks it as the grader's, with a number of this run. The pixels stay
- * the same; a program that copies the reference it finds in its folder (where the grader
- * puts the canary) writes the canary's bytes, while one that renders writes the
- * reference's. A reference that is not a PNG gets none. The canaries are the shipped
- * references' pixels, no secret: they live in the work folder's canaries/, which a student's
- * user may read, so that with --run-as the student's own cp puts them in place. */
+/* Makes each PNG reference's canary (Render.canary), the file the grader puts in the place
+ * of every copy of the shipped reference a submission carries: the reference's values with
+ * one channel of one pixel in 32 (chosen by a number of this run) one code (1/255) off,
+ * within the tolerance of a pass (imgdiff's threshold is at least 1/255). A program that
+ * copies the reference it carries writes the canary's values, which no render writes,
+ * however it re-encodes them; one that renders writes the reference's. The canaries are
+ * written with gamma 1.0, the values as the file holds them, which is what imgdiff
+ * compares; their folder is open to students' users for their build to put them in place
+ * (plant_canaries), never seen by a program in namespaces. A reference that is not a PNG
+ * gets none. */
 void part_make_canaries(Grading *g)
 {
-    static const unsigned char iend[12] = {0, 0, 0, 0, 'I', 'E', 'N', 'D', 0xAE, 0x42, 0x60, 0x82};
-    char text[80];
-    int len = snprintf(text, sizeof text, "tEXtraytra-grade%ccanary %lx-%lx", 0,
-                       (unsigned long)time(NULL), (unsigned long)getpid());
+    unsigned long key = (unsigned long)time(NULL) ^ ((unsigned long)getpid() << 16);
+    chmod(grade_format("%s/canaries", g->work), 0755);
     for (int k = 0; k < g->render_count; k++) {
         Render *r = &g->renders[k];
-        FILE *in = r->shipped != NULL ? fopen(r->shipped, "rb") : NULL;
-        unsigned char *bytes = NULL;
-        long size = in != NULL && fseek(in, 0, SEEK_END) == 0 ? ftell(in) : -1;
-        if (size > 20 && size < (1L << 28) && fseek(in, 0, SEEK_SET) == 0)
-            bytes = malloc((size_t)size);
-        bool png = bytes != NULL && fread(bytes, 1, (size_t)size, in) == (size_t)size &&
-                   memcmp(bytes, "\211PNG\r\n\032\n", 8) == 0 &&
-                   memcmp(bytes + size - 12, iend, 12) == 0;
-        if (in != NULL)
-            fclose(in);
-        char *path = grade_format("%s/canaries/%s.canary.png", g->work, r->name);
-        FILE *out = png ? fopen(path, "wb") : NULL;
-        if (out == NULL) {
-            free(bytes);
+        Image img;
+        Error err;
+        if (r->shipped == NULL || image_format_for_path(r->shipped) != IMAGE_FORMAT_PNG ||
+            !image_read_png(&img, r->shipped, &err))
             continue;
+        for (long p = 0; p < (long)img.width * img.height; p++) {
+            unsigned long h = ((unsigned long)p * 2654435761UL) ^ key;
+            h = (h ^ (h >> 15)) * 0x2C1B3C6DUL;
+            h ^= h >> 12;
+            if (h % 32 != 0)
+                continue;
+            float *v = img.pixels + 3 * p + (h >> 5) % 3;
+            int code = (int)(*v * 255 + 0.5f);
+            *v = (float)(code < 255 ? code + 1 : code - 1) / 255;
         }
-        unsigned long crc = 0xFFFFFFFFUL;
-        for (int i = 0; i < len; i++)
-            crc = crc_add(crc, (unsigned char)text[i]);
-        fwrite(bytes, 1, (size_t)size - 12, out);
-        put_be32(out, (unsigned long)len - 4);
-        fwrite(text, 1, (size_t)len, out);
-        put_be32(out, crc ^ 0xFFFFFFFFUL);
-        fwrite(iend, 1, sizeof iend, out);
-        free(bytes);
-        if (fclose(out) == 0)
+        char *path = grade_format("%s/canaries/%s.canary.png", g->work, r->name);
+        if (image_write(&img, path, PNG_ENCODING_LINEAR, &err) && chmod(path, 0644) == 0)
             r->canary = path;
+        image_free(&img);
     }
 }

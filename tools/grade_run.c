@@ -67,12 +67,15 @@ static void wait_for_signal(double seconds)
     sigtimedwait(&sigchld, NULL, &t);
 }
 
-/* Prepares a new child: its own process group, the signals as they were (those caught go
- * back to their defaults at exec), stdin from /dev/null, stdout and stderr to the pipe `out`,
- * the limits, the folder (NULL: the grader's); exits with RUN_EXEC_FAILED when it cannot. */
-void run_child_setup(const char *dir, int out, long long memory_limit)
+/* Prepares a new child: a session of its own (no controlling terminal to push input into),
+ * the signals as they were (those caught go back to their defaults at exec), stdin from
+ * /dev/null, stdout and stderr to the pipe `out`, the limits, the folder (NULL: the
+ * grader's); a student's build or run also gets the sandbox's clean environment and a limit
+ * on CPU time, the time limit on every core; exits with RUN_EXEC_FAILED when it cannot. */
+void run_child_setup(const char *dir, int out, long long memory_limit, double time_limit,
+                     bool student)
 {
-    setpgid(0, 0);
+    setsid();
 #ifdef __linux__
     /* Should the grader itself be killed, the child dies with it rather than run on. */
     prctl(PR_SET_PDEATHSIG, SIGKILL, 0, 0, 0);
@@ -100,6 +103,16 @@ void run_child_setup(const char *dir, int out, long long memory_limit)
     contain_limit_processes();
     if (memory_limit > 0)
         setrlimit(RLIMIT_AS, &(struct rlimit){(rlim_t)memory_limit, (rlim_t)memory_limit});
+    rlim_t cpu = (rlim_t)(time_limit * (double)sysconf(_SC_NPROCESSORS_ONLN)) + 5;
+    if (student && time_limit > 0)
+        setrlimit(RLIMIT_CPU, &(struct rlimit){cpu, cpu + 5});
+    /* What a student's program writes, its group (the grader's, with --run-as) reads; it
+     * runs at a lower priority than the grader, whose sweeps outrun a loop of forks. */
+    if (student) {
+        sandbox_environment(dir);
+        umask(027);
+        setpriority(PRIO_PROCESS, 0, 10);
+    }
     /* make hands its flags and jobserver to sub-makes through these: a student's make is
      * not a sub-make of the one that may be running the grader. */
     static const char *const make_vars[] = {"MAKEFLAGS", "MFLAGS",    "GNUMAKEFLAGS",
@@ -208,13 +221,18 @@ static bool run_ended(pid_t pid)
 
 /* Runs argv (a program found on PATH) in a child as run_child_setup prepares it, with at
  * most time_limit seconds and memory_limit bytes (0: no limit), killing it at the limit or
- * on a stop request; then reaps it and ends everything it left behind: as the student's
- * user through the keeper when as_student and --run-as say so (grade_contain.c), else as
- * this process's child, its group killed and its strays swept. Its output comes through a
+ * on a stop request; a student's (view not NULL) in the sandbox (sandbox_wrap), also
+ * killed past its disk limit; then reaps it and ends everything it left behind: as the
+ * student's user through the keeper when --run-as says so (grade_contain.c), else as this
+ * process's child, its session killed and its strays swept. Its output comes through a
  * pipe, kept in part (Capture) and written to the log at path `log` (NULL: none). */
 static RunResult run_child(char *const argv[], const char *dir, const char *log,
-                           double time_limit, long long memory_limit, bool as_student)
+                           double time_limit, long long memory_limit, const View *view)
 {
+    bool as_student = view != NULL;
+    char **run = as_student ? sandbox_wrap(argv, dir, view) : (char **)argv;
+    /* In namespaces, bubblewrap enters dir itself, inside. */
+    const char *enter = run != argv ? NULL : dir;
     static Capture capture;
     Capture *c = &capture;
     c->head_len = 0;
@@ -226,12 +244,12 @@ static RunResult run_child(char *const argv[], const char *dir, const char *log,
     fcntl(fds[0], F_SETFL, O_NONBLOCK);
     double start = clock_now();
     bool kept = as_student && contain_active();
-    int keeper = kept ? contain_run(argv, dir, fds[1], memory_limit) : -1;
+    int keeper = kept ? contain_run(run, enter, fds[1], memory_limit, time_limit) : -1;
     pid_t pid = kept ? 0 : fork();
     if (pid == 0 && !kept) {
-        run_child_setup(dir, fds[1], memory_limit);
-        execvp(argv[0], argv);
-        grade_fail("cannot run '%s': %s", argv[0], strerror(errno));
+        run_child_setup(enter, fds[1], memory_limit, time_limit, as_student);
+        execvp(run[0], run);
+        grade_fail("cannot run '%s': %s", run[0], strerror(errno));
         _exit(RUN_EXEC_FAILED);
     }
     int err = errno, fd = fds[0];
@@ -240,14 +258,17 @@ static RunResult run_child(char *const argv[], const char *dir, const char *log,
         close(fd);
         return (RunResult){.end = RUN_NOT_RUN, .status = err, .output = ""};
     }
-    /* Also here, so that the group exists before any kill, whichever runs first. */
-    if (!kept)
-        setpgid(pid, pid);
     RunResult r = {.end = RUN_EXITED};
+    double disk_looked = start;
     while (!run_ended(pid)) {
-        double left = time_limit - (clock_now() - start);
-        if (stop_requested() || (time_limit > 0 && left <= 0)) {
-            r.end = stop_requested() ? RUN_INTERRUPTED : RUN_TIMED_OUT;
+        double now = clock_now(), left = time_limit - (now - start);
+        /* The disk is looked at twice a second: a folder's bytes are counted file by file. */
+        bool over_disk = now - disk_looked > 0.5 && sandbox_over_disk(view);
+        disk_looked = now - disk_looked > 0.5 ? now : disk_looked;
+        if (stop_requested() || (time_limit > 0 && left <= 0) || over_disk) {
+            r.end = stop_requested() ? RUN_INTERRUPTED
+                    : over_disk      ? RUN_OVER_DISK
+                                     : RUN_TIMED_OUT;
             break;
         }
         double wait = time_limit > 0 && left < 0.1 ? left : 0.1;
@@ -270,15 +291,25 @@ static RunResult run_child(char *const argv[], const char *dir, const char *log,
             r.status = status;
         }
     } else {
-        /* Whatever else of the group still runs (a forked child of the program) ends now. */
+        /* Whatever else of the session's group still runs (a forked child of the program)
+         * ends now; the child itself too, should it have been killed before its setsid. */
         kill(-pid, SIGKILL);
+        kill(pid, SIGKILL);
         while (waitpid(pid, &status, 0) < 0 && errno == EINTR)
             continue;
         contain_end_strays(NULL, 0);
     }
+    if (r.end == RUN_EXITED && sandbox_over_disk(view))
+        r.end = RUN_OVER_DISK;
     if (r.end == RUN_EXITED) {
         r.end = WIFSIGNALED(status) ? RUN_KILLED : RUN_EXITED;
         r.status = WIFSIGNALED(status) ? WTERMSIG(status) : WEXITSTATUS(status);
+    }
+    /* bubblewrap tells a program killed by signal N by exiting with 128 + N, as a shell does
+     * (and as a program that exits so): taken as the signal. */
+    if (r.end == RUN_EXITED && run != argv && r.status > 128 && r.status <= 128 + 64) {
+        r.end = RUN_KILLED;
+        r.status -= 128;
     }
     r.ok = r.end == RUN_EXITED && r.status == 0;
     /* Everything that could write to the pipe has ended: what it holds is the last. */
@@ -294,14 +325,24 @@ static RunResult run_child(char *const argv[], const char *dir, const char *log,
 RunResult run_program(char *const argv[], const char *dir, const char *log, double time_limit,
                       long long memory_limit)
 {
-    return run_child(argv, dir, log, time_limit, memory_limit, false);
+    return run_child(argv, dir, log, time_limit, memory_limit, NULL);
 }
 
-/* Runs a student's build or program as run_child does: with --run-as, as the student's user. */
+/* Runs a student's build or program as run_child does, in the sandbox with what view lets it
+ * reach: with --run-as, as the student's user. */
 RunResult run_student(char *const argv[], const char *dir, const char *log, double time_limit,
-                      long long memory_limit)
+                      long long memory_limit, const View *view)
 {
-    return run_child(argv, dir, log, time_limit, memory_limit, true);
+    RunResult r = run_child(argv, dir, log, time_limit, memory_limit, view);
+    if (r.end != RUN_OVER_DISK)
+        return r;
+    /* What it wrote is removed, so that the disk is there for the rest of the class. */
+    r.output = grade_format("%s", r.output);
+    for (int k = 0; view->write[k] != NULL; k++) {
+        char *empty[] = {"find", (char *)view->write[k], "-mindepth", "1", "-delete", NULL};
+        run_child(empty, NULL, NULL, 600, 0, &(View){{view->write[k], NULL}, NULL, 0});
+    }
+    return r;
 }
 
 /* Returns how a run ended: "exit status 2", "killed by signal 11 (Segmentation fault)". */
@@ -313,6 +354,8 @@ char *run_describe(const RunResult *r)
         return grade_format("killed by signal %d (%s)", r->status, strsignal(r->status));
     case RUN_TIMED_OUT: return grade_format("still running after %.0f s", r->seconds);
     case RUN_NOT_RUN: return grade_format("not started: %s", strerror(r->status));
+    case RUN_OVER_DISK:
+        return "stopped: it wrote more than its disk limit (--disk-limit), or filled the disk";
     default: return "interrupted";
     }
 }

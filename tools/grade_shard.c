@@ -2,17 +2,19 @@
 #include "grade.h"
 
 #include <errno.h>
+#include <fcntl.h>
 #include <limits.h>
 #include <stdint.h>
 #include <stdlib.h>
 #include <string.h>
 #include <unistd.h>
 
+#include "imgfile.h"
 #include "outfile.h"
 #include "toolopt.h"
 
 /* The first line of a results file, with the version of its format. */
-#define RESULTS_MAGIC "grade-results 3"
+#define RESULTS_MAGIC "grade-results 4"
 
 /* Reads --shard K/N into g and checks what goes with it; false (reported) when it cannot. */
 bool shard_parse(Grading *g)
@@ -229,11 +231,37 @@ static bool get_submission(Reader *r, const Grading *g, Submission *s, const cha
     return !r->bad || grade_fail("%s:%d: a word is not as grade writes it", r->path, r->line);
 }
 
+/* Opens the file at path to read when it is a regular file, never blocking on a FIFO nor
+ * following a symbolic link; NULL when it cannot, with *kind the file's kind in words when
+ * it is there but not a regular file, else NULL (errno says why). */
+static FILE *open_regular(const char *path, const char **kind)
+{
+    struct stat st;
+    *kind = NULL;
+    if (lstat(path, &st) == 0 && !S_ISREG(st.st_mode)) {
+        *kind = imgfile_kind_text(st.st_mode);
+        return NULL;
+    }
+    int fd = open(path, O_RDONLY | O_NONBLOCK | O_NOFOLLOW | O_CLOEXEC), flags;
+    bool opened = fd >= 0 && fstat(fd, &st) == 0;
+    FILE *f = NULL;
+    /* Checked again on the descriptor: the path may have changed since lstat. */
+    if (opened && !S_ISREG(st.st_mode))
+        *kind = imgfile_kind_text(st.st_mode);
+    else if (opened && (flags = fcntl(fd, F_GETFL)) >= 0 &&
+             fcntl(fd, F_SETFL, flags & ~O_NONBLOCK) == 0)
+        f = fdopen(fd, "r");
+    if (fd >= 0 && f == NULL)
+        close(fd);
+    return f;
+}
+
 /* Reads the results file at path, written by a worker of --jobs, into submission s; returns
  * the progress it told, or NULL (reported) when the file is not whole. */
 char *shard_read_submission(const Grading *g, Submission *s, const char *path)
 {
-    Reader r = {.file = fopen(path, "r"), .path = path};
+    const char *kind;
+    Reader r = {.file = open_regular(path, &kind), .path = path};
     char *told = NULL;
     if (r.file == NULL)
         return NULL;
@@ -301,6 +329,7 @@ static void put_heading(FILE *f, const Grading *g)
     }
     fprintf(f, "shard %d %d\nstarted", g->shard_k, g->shard_n);
     shard_put_text(f, g->started);
+    shard_put_text(f, g->sandbox);
     fprintf(f, "\nsubmissions %d\n", g->sub_count);
 }
 
@@ -378,10 +407,14 @@ static bool get_heading(Reader *r, Grading *g, const char *work)
 bool shard_read(Grading *g, const char *folder)
 {
     char real[PATH_MAX];
+    const char *kind;
     Reader r = {.path = grade_format("%s/shard.txt", folder)};
     if (realpath(folder, real) == NULL || grade_kind(real) != S_IFDIR)
         return grade_fail("no shard folder %s", folder);
-    if ((r.file = fopen(r.path, "r")) == NULL)
+    if ((r.file = open_regular(r.path, &kind)) == NULL && kind != NULL)
+        return grade_fail("%s is not a regular file (%s): not the results of grade --shard",
+                          r.path, kind);
+    if (r.file == NULL)
         return grade_fail("no %s: %s is not a folder of grade --shard, or its grading did not "
                           "finish (its log says why)",
                           r.path, folder);
@@ -394,8 +427,9 @@ bool shard_read(Grading *g, const char *folder)
     g->shard_k = ok ? (int)get_number(&r, 1) : 0;
     g->shard_n = ok ? (int)get_number(&r, 2) : 0;
     ok = ok && g->shard_n >= 1 && g->shard_n <= 10000 && g->shard_k >= 1 &&
-         g->shard_k <= g->shard_n && next_line(&r) && line_is(&r, "started", 1) &&
-         snprintf(g->started, sizeof g->started, "%s", get_word(&r, 1)) >= 0 && next_line(&r) &&
+         g->shard_k <= g->shard_n && next_line(&r) && line_is(&r, "started", 2) &&
+         snprintf(g->started, sizeof g->started, "%s", get_word(&r, 1)) >= 0 &&
+         ((g->sandbox = get_text(&r, 2)), next_line(&r)) &&
          line_is(&r, "submissions", 1) && (count = (int)get_number(&r, 1)) >= 0 &&
          count <= g->member_count && !r.bad;
     g->subs = grade_alloc(((size_t)count + 1) * sizeof *g->subs);

@@ -13,6 +13,7 @@
 #include <strings.h>
 #include <unistd.h>
 
+#include "image_read.h"
 #include "imgfile.h"
 #include "stop.h"
 
@@ -56,6 +57,20 @@ static bool same_bytes(const char *a, const char *b)
         fclose(fa);
     if (fb != NULL)
         fclose(fb);
+    return same;
+}
+
+/* Tells whether the images at a and b, of any format, hold the same values pixel for pixel. */
+static bool same_pixels(const char *a, const char *b)
+{
+    Image ia = {0}, ib = {0};
+    Error err;
+    bool same = image_read(&ia, a, &err) && image_read(&ib, b, &err) &&
+                ia.width == ib.width && ia.height == ib.height &&
+                memcmp(ia.pixels, ib.pixels, 3 * sizeof *ia.pixels * (size_t)ia.width *
+                                                 (size_t)ia.height) == 0;
+    image_free(&ia);
+    image_free(&ib);
     return same;
 }
 
@@ -148,11 +163,10 @@ static void compare_image(const Grading *g, const Submission *s, int k, const ch
     /* Identical to the reference: the report then shows the reference's picture. */
     res->identical = res->compared && r->judge != JUDGE_COVER && f->max[0] == 0 &&
                      f->max[1] == 0 && f->max[2] == 0;
-    /* A program writes the reference's bytes when it renders as the model answer does, and
+    /* A program writes the reference's values when it renders as the model answer does, and
      * the canary's when it copies the file it found in its folder; images handed in are
      * flagged when they are the reference's file. */
-    res->copy = s->program ? (res->identical || d.statistical != NULL) && r->canary != NULL &&
-                                 same_bytes(image, r->canary)
+    res->copy = s->program ? res->compared && r->canary != NULL && same_pixels(image, r->canary)
                            : ((res->identical || d.statistical != NULL) &&
                               same_bytes(image, r->reference)) ||
                                  (r->shipped != NULL && same_bytes(image, r->shipped));
@@ -270,7 +284,7 @@ static const char remove_outputs[] =
 static char *remove_build_outputs(const char *copy, bool *trouble)
 {
     char *argv[] = {"sh", "-c", (char *)remove_outputs, NULL};
-    RunResult r = run_student(argv, copy, NULL, 600, 0);
+    RunResult r = run_student(argv, copy, NULL, 600, 0, &(View){{copy, NULL}, NULL, 0});
     *trouble = !r.ok || strstr(r.output, "!failed") != NULL;
     size_t n = strlen(r.output);
     while (n > 0 && r.output[n - 1] == '\n')
@@ -278,12 +292,13 @@ static char *remove_build_outputs(const char *copy, bool *trouble)
     return n > 0 ? grade_format("%.*s", (int)n, r.output) : NULL;
 }
 
-/* The grading whose references' canaries replace their copies in a submission (nftw's
- * visits take no argument of their own). */
+/* The grading whose references' canaries replace their copies in a submission, and the
+ * copy (nftw's visits take no argument of their own). */
 static const Grading *planting;
+static const char *planting_in;
 
-/* nftw's visit of a file of a submission's copy: a regular file that holds a reference's
- * bytes is given its canary's instead (Render.canary). */
+/* nftw's visit of a file of a submission's copy: a regular file that holds a shipped
+ * reference's bytes is given its canary's instead (Render.canary), by the student's cp. */
 static int plant_canary(const char *path, const struct stat *st, int type, struct FTW *ftw)
 {
     (void)ftw;
@@ -293,11 +308,23 @@ static int plant_canary(const char *path, const struct stat *st, int type, struc
         if (r->canary == NULL || stat(r->shipped, &ref) != 0 || ref.st_size != st->st_size ||
             !same_bytes(path, r->shipped))
             continue;
-        char *cp[] = {"cp", "-f", "--", r->canary, (char *)path, NULL};
-        run_student(cp, NULL, NULL, 60, 0);
+        char *cp[] = {"cp", "-f", "--", r->canary, (char *)path, NULL}, *canary[] = {r->canary, NULL};
+        run_student(cp, NULL, NULL, 60, 0, &(View){{planting_in, NULL}, canary, 0});
         break;
     }
     return 0;
+}
+
+/* Puts each reference's canary in the place of every file of the copy at `copy` that holds
+ * the shipped reference's bytes: the student's user first lets the grader read all of its
+ * files (its own, some of which it may have kept to itself), then the grader compares. */
+static void plant_canaries(const Grading *g, const char *copy)
+{
+    char *let[] = {"chmod", "-R", "u+rwX,g+rX", "--", ".", NULL};
+    run_student(let, copy, NULL, 60, 0, &(View){{copy, NULL}, NULL, 0});
+    planting = g;
+    planting_in = copy;
+    nftw(copy, plant_canary, 16, FTW_PHYS);
 }
 
 /* Copies submission s into its work folder (cp -P: a link stays a link, never followed out
@@ -308,26 +335,33 @@ static char *build(const Grading *g, Submission *s)
 {
     char *copy = grade_format("%s/build", s->work), *log = grade_format("%s/build.log", s->work);
     char *program = grade_format("%s/raytra", copy);
-    char *cp[] = {"cp", "-R", "-P", "--", grade_format("%s/.", s->path), copy, NULL};
+    /* The sandbox sees the submission by its real path, read-only, and the copy. */
+    char *from = realpath(s->path, NULL), *source[] = {from, NULL};
+    char *cp[] = {"cp", "-R", "-P", "--", grade_format("%s/.", from ? from : s->path), copy, NULL};
     char *make[] = {"make", NULL};
     bool trouble = false;
-    RunResult r = run_student(cp, NULL, log, 600, 0);
+    View own = {{copy, NULL}, NULL, g->disk_limit};
+    struct stat st;
+    RunResult r = run_student(cp, NULL, log, 600, 0, &(View){{copy, NULL}, source, g->disk_limit});
     if (r.ok) {
         s->removed = remove_build_outputs(copy, &trouble);
-        planting = g;
-        nftw(copy, plant_canary, 16, FTW_PHYS);
+        plant_canaries(g, copy);
     }
     if (!r.ok)
         s->build_message = grade_format("the submission could not be copied to build it (cp: %s)",
                                         run_describe(&r));
     else if (trouble)
         s->build_message = "the build outputs the submission carries could not be removed";
-    else if ((r = run_student(make, copy, log, g->build_time_limit, g->memory_limit)).end ==
+    else if ((r = run_student(make, copy, log, g->build_time_limit, g->memory_limit, &own)).end ==
              RUN_TIMED_OUT)
         s->build_message = grade_format("make did not finish within %g s", g->build_time_limit);
+    else if (r.end == RUN_OVER_DISK)
+        s->build_message = grade_format("make wrote more than %s, the disk limit, or filled the "
+                                        "disk: stopped, and what it wrote removed",
+                                        grade_size_text(g->disk_limit));
     else if (!r.ok)
         s->build_message = grade_format("make failed (%s)", run_describe(&r));
-    else if (grade_kind(program) != S_IFREG || access(program, X_OK) != 0)
+    else if (stat(program, &st) != 0 || !S_ISREG(st.st_mode) || (st.st_mode & 0111) == 0)
         s->build_message = "make succeeded but made no executable raytra beside the Makefile";
     s->build_log_tail = tail_of(g, r.output);
     return s->build_message != NULL || r.end == RUN_INTERRUPTED ? NULL : program;
@@ -348,6 +382,16 @@ static bool says_out_of_memory(const char *output)
     return false;
 }
 
+/* Sets the mode of those of files (a render's) that are hidden scenes' copies, which the
+ * grader keeps from the students' users (part_render_hidden) but while they are rendered. */
+static void show_hidden(const Grading *g, char **files, mode_t mode)
+{
+    char *hidden = grade_format("%s/hidden-scenes/", g->work);
+    for (char **f = files; *f != NULL; f++)
+        if (strncmp(*f, hidden, strlen(hidden)) == 0)
+            chmod(*f, mode);
+}
+
 /* Grades render k of a submission that is a program: runs it on the scene under the
  * limits, in a scratch folder, and judges how it ended and what it wrote. */
 static void run_scene(const Grading *g, Submission *s, int k)
@@ -361,7 +405,13 @@ static void run_scene(const Grading *g, Submission *s, int k)
     r->argv[0] = "../build/raytra";
     r->argv[2] = grade_format("../images/%s", r->image);
     char *dir = grade_format("%s/run", s->work);
-    RunResult run = run_student(r->argv, dir, log, g->time_limit, g->memory_limit);
+    /* The sandbox: the run and images folders to write; the build and the scene to read. */
+    char **files = sandbox_scene_files(r->argv[1], dir, grade_format("%s/build", s->work));
+    View view = {{dir, grade_format("%s/images", s->work), NULL}, files, g->disk_limit};
+    /* A hidden scene's files are the grader's alone but while they are rendered. */
+    show_hidden(g, files, 0644);
+    RunResult run = run_student(r->argv, dir, log, g->time_limit, g->memory_limit, &view);
+    show_hidden(g, files, 0600);
     res->seconds = run.seconds;
     res->log_tail = tail_of(g, run.output);
     res->command = run_command_line(r->argv, NULL);
@@ -376,6 +426,9 @@ static void run_scene(const Grading *g, Submission *s, int k)
                     grade_size_text(g->memory_limit));
     else if (run.end == RUN_TIMED_OUT)
         set_verdict(res, VERDICT_TIMEOUT, "did not finish within %g s", g->time_limit);
+    else if (run.end == RUN_OVER_DISK)
+        set_verdict(res, VERDICT_ERROR, "wrote more than %s, the disk limit, or filled the disk: "
+                    "stopped, and what it wrote removed", grade_size_text(g->disk_limit));
     else if (run.end == RUN_KILLED)
         set_verdict(res, VERDICT_CRASHED, "%s", how);
     else if (run.end == RUN_NOT_RUN)
@@ -405,6 +458,10 @@ static const char *make_work(const Submission *s, FILE *f)
     /* The build's copy too, so that a student's user (--run-as) may write in all three. */
     if (trouble == NULL && s->program && s->link == NULL)
         trouble = grade_fresh_folder(grade_format("%s/build", s->work), f);
+    /* Its users must reach the three: the folder is crossed, not read (whatever the umask). */
+    if (trouble == NULL && contain_active() && chmod(s->work, 0711) != 0)
+        trouble = grade_format("cannot open %s to the student's user: %s", s->work,
+                               strerror(errno));
     static const char *const shared[] = {"images", "run", "build"};
     for (size_t k = 0; k < 3 && trouble == NULL && s->program && s->link == NULL; k++)
         if (!contain_share(grade_format("%s/%s", s->work, shared[k])))
@@ -474,7 +531,11 @@ bool submission_grade(const Grading *g, Submission *s, FILE *f)
     for (const char *p = s->name; *p != '\0'; p++)
         fputc((unsigned char)*p < 0x20 || *p == 0x7F ? '?' : *p, f);
     fprintf(f, " (%s): %s", s->program ? "program" : "images", s->program ? "building... " : "");
-    return grade_one(g, s, trouble, f);
+    bool graded = grade_one(g, s, trouble, f);
+    /* Graded: with --run-as, closed to the students' users, who may be the next one's too. */
+    if (contain_active())
+        chmod(s->work, 0700);
+    return graded;
 }
 
 /* Lists the submissions, each with a work folder named safely for scripts (03-alice): the

@@ -4,7 +4,7 @@
 # Usage: tests/bvh-variants/run.sh GRADE VARIANTS
 #   GRADE     the grader, tools/build/grade
 #   VARIANTS  the folder of the programs raytra-NAME (make -C tests/bvh-variants)
-# Grades a class of one submission a variant (a Makefile that copies its program) with
+# Grades a class of one submission a variant (its program and a Makefile that copies it) with
 # tools/grade, two at a time, and checks grades.csv: every scene of a right variant
 # passes; each wrong one fails the scenes listed below, each with the words that say
 # what is wrong, and passes the others. Prints each variant's verdicts; exit status 0
@@ -36,7 +36,9 @@ mkdir "$tmp/class"
 for program in "$variants"/raytra-*; do
     name=${program##*/raytra-}
     mkdir "$tmp/class/$name"
-    printf "raytra:\n\tcp '%s' raytra\n" "$program" >"$tmp/class/$name/Makefile"
+    # The submission carries its program: the sandbox shows a build nothing but its folder.
+    cp "$program" "$tmp/class/$name/model" || exit 2
+    printf "raytra: model\n\tcp model raytra\n" >"$tmp/class/$name/Makefile"
 done
 # The time limit is generous: what is tested is the verdicts, on a machine maybe busy.
 "$grade" -q --jobs 2 --time-limit 600 --out "$tmp/out" 1.4 "$tmp/class" ||

@@ -4,8 +4,9 @@
 # Usage: setup.sh [--build-only | --users]
 # Gradescope runs it once, as root, when it builds the autograder's image, from the zip
 # that tools/gradescope/pack.sh writes, unpacked in /autograder/source. It installs make
-# and what tools/deps.sh names for a build (gcc, pkg-config, libpng-dev, libopenexr-dev)
-# when they are missing, builds tools/build/grade and imgdiff as tools/grade does, and,
+# and what tools/deps.sh names for a build (gcc, pkg-config, libpng-dev, libopenexr-dev,
+# bubblewrap, the grader's sandbox) when they are missing, builds tools/build/grade and
+# imgdiff as tools/grade does, and,
 # as root, makes two users who own nothing: raytra-student, who runs students' builds and
 # programs, and raytra-grader, who runs the grader (run_autograder); and leaves the files
 # readable by all and writable by root alone. --build-only stops after the build: what
