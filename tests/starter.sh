@@ -71,10 +71,11 @@ dead_links() {
 
 # The packages tools/deps.sh installs to build and to test a starter (not Embree, for the
 # benchmark, nor Chromium, for the grader's report, nor g++ and OpenEXR, for raytra's own
-# tests and tools' reader of OpenEXR files, nor the autograder's zip, unzip and jq: none of
-# them a starter's make check uses).
+# tests and tools' reader of OpenEXR files, nor the autograder's zip, unzip and jq, nor
+# bubblewrap, the grader's sandbox: none of them a starter's make check uses).
 packages=$(sed -n 's/.*need \("[^"]*"\|[A-Za-z0-9+-]*\) \([a-z0-9+-]*\) .*/\2/p' "$top/tools/deps.sh" |
-    grep -v -x -e libembree-dev -e chromium -e 'g++' -e libopenexr-dev -e zip -e unzip -e jq)
+    grep -v -x -e libembree-dev -e chromium -e 'g++' -e libopenexr-dev -e zip -e unzip -e jq \
+        -e bubblewrap)
 part=tools/deps.sh
 [ "$(echo "$packages" | wc -w)" -ge 4 ] || fail "cannot read the packages it installs: '$packages'"
 

@@ -2,10 +2,10 @@
 # deps.sh: makes sure the packages raytra builds with are installed, or names the command that installs them.
 #
 # Usage: tools/deps.sh [build|test|bench|gradescope|gradescope-test|chromium]
-#   build  needs a C compiler with its C library's headers, pkg-config, the headers of
-#          libpng and zlib, and on Linux bubblewrap (bwrap), the grader's sandbox; in
-#          raytra's repository (not in a student's starter, whose parts only write
-#          images) also OpenEXR 2 or 3, whose C interface to RGBA files
+#   build  needs a C compiler with its C library's headers, pkg-config, and the headers
+#          of libpng and zlib; in raytra's repository (not in a student's starter, whose
+#          parts only write images) also bubblewrap (bwrap) on Linux, the grader's
+#          sandbox, and OpenEXR 2 or 3, whose C interface to RGBA files
 #          (ImfCRgbaFile.h) the tools read OpenEXR files through (Ubuntu 22.04 and Debian
 #          11 have OpenEXR 2.5, Debian 12 has 3.1: either will do);
 #   test   needs, in addition, the Check unit-test framework, a C++ compiler (for
@@ -86,8 +86,10 @@ if [ -f "$(dirname "$0")/exr_rgba.c" ] && ! pkg-config --exists 'OpenEXR >= 2' 2
     need "OpenEXR (2 or 3)" libopenexr-dev openexr-devel openexr
 fi
 # The grader runs students' builds and programs in bubblewrap's namespaces (Linux only;
-# without it, tools/grade falls back to walls of its own: docs/grading.md, Containment).
-if [ "$(uname -s)" = Linux ] && ! command -v bwrap >/dev/null 2>&1; then
+# without it, tools/grade falls back to walls of its own: docs/grading.md, Containment);
+# a starter, which grades with imgdiff alone, needs none.
+if [ "$(uname -s)" = Linux ] && [ -f "$(dirname "$0")/exr_rgba.c" ] &&
+    ! command -v bwrap >/dev/null 2>&1; then
     need "bubblewrap (the grader's sandbox)" bubblewrap bubblewrap -
 fi
 if [ $need_check = yes ] && ! pkg-config --exists check 2>/dev/null; then

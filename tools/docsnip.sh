@@ -82,22 +82,105 @@ function load(path,   file, line, n, st, kind, key) {
     return STATE[path]
 }
 function common(a, b,   i) { for (i = 1; i <= length(a) && substr(a, i, 1) == substr(b, i, 1); i++); return substr(a, 1, i - 1) }
-# Finds the C definition of name in path, a function, a typedef or a macro, with the
-# comment just above it: sets DFROM and DTO to its first and last lines and DBODY to the
-# line of the "{" of a function (past DTO otherwise), or returns why it cannot.
-function definition(path, name,   i, j, t, typedef, from, to, body) {
+# Prepares path for the C definition finder, once. CODE holds each line with its comments,
+# strings and character constants blanked; DIR marks the lines of preprocessor directives,
+# DIRSTART their first lines; TOP the other lines that begin in column 0 outside any
+# comment, braces or parentheses. Then reads each typedef: TDEND is its last line, TDNAMES
+# the names it defines (" A B "); one that only names a struct, typedef struct T X; (a
+# forward declaration when X is T), defines nothing but makes ALIAS[path, X] = T.
+function prepare(path,   n, line, code, tok, incom, dir, depth, paren, c, tag) {
+    if (path in PREP) return
+    PREP[path] = 1
+    for (n = 1; n <= NL[path]; n++) {
+        line = SRC[path, n]; code = ""
+        if (dir || (!incom && line ~ /^[ \t]*#/)) { DIR[path, n] = 1; if (!dir) DIRSTART[path, n] = 1 }
+        else if (!incom && !depth && !paren && line ~ /^[A-Za-z_]/) TOP[path, n] = 1
+        dir = ((path, n) in DIR) && line ~ /\\$/
+        while (line != "") {
+            if (incom) { if (!(c = index(line, "*/"))) break; line = substr(line, c + 2); code = code " "; incom = 0; continue }
+            if (!match(line, /\/[*\/]|["'\'']/)) { code = code line; break }
+            code = code substr(line, 1, RSTART - 1); tok = substr(line, RSTART, RLENGTH); line = substr(line, RSTART + RLENGTH)
+            if (tok == "//") break
+            if (tok == "/*") { incom = 1; code = code " "; continue }
+            while (match(line, tok == "\"" ? "[\\\\\"]" : "[\\\\'\'']") && substr(line, RSTART, 1) == "\\") line = substr(line, RSTART + 2)
+            line = RSTART ? substr(line, RSTART + 1) : ""; code = code tok tok
+        }
+        CODE[path, n] = code
+        if ((path, n) in DIR) continue
+        c = code; depth += gsub(/[{]/, "", c) - gsub(/[}]/, "", c); paren += gsub(/[(]/, "", c) - gsub(/[)]/, "", c)
+    }
+    for (n = 1; n <= NL[path]; n++) {
+        if (!((path, n) in TOP) || CODE[path, n] !~ /^typedef([^A-Za-z0-9_]|$)/ || !scan(path, n)) continue
+        TDEND[path, n] = SEND; sub(/^typedef[ \t]+((const|volatile)[ \t]+)*/, "", SHEAD); tag = tagof(SHEAD)
+        if (SBRACE) TDNAMES[path, n] = declared(STAIL) (SHEAD ~ TAGONLY ? tag " " : "")
+        else if (tag != "" && (c = declared(SHEAD)) ~ /^ [A-Za-z_][A-Za-z0-9_]* $/ && SHEAD ~ ("[ \t]" substr(c, 2, length(c) - 2) "[ \t]*$")) {
+            c = substr(c, 2, length(c) - 2); if (!((path, c) in ALIAS)) ALIAS[path, c] = tag
+        } else TDNAMES[path, n] = declared(SHEAD)
+    }
+}
+# Returns T when text begins with struct T, union T or enum T, "" otherwise.
+function tagof(text) {
+    if (!match(text, /^(struct|union|enum)[ \t]+[A-Za-z_][A-Za-z0-9_]*/)) return ""
+    text = substr(text, 1, RLENGTH); sub(/^[a-z]+[ \t]+/, "", text); return text
+}
+# Reads the declaration or definition that begins on line i of path, to its ";" or the
+# brace that closes a function'\''s body: sets SEND to its last line and returns it (0 when
+# it has no end), sets SBRACE to the line of its first outer "{" (0 when none), SFN when
+# those braces are a function'\''s body, SHEAD and STAIL to its outer text before and after.
+function scan(path, i,   n, c, t, ch, depth, paren) {
+    SEND = SBRACE = SFN = 0; SHEAD = STAIL = ""
+    for (n = i; n <= NL[path]; n++) {
+        if ((path, n) in DIR) continue
+        for (c = CODE[path, n] " "; c != ""; ) {
+            if (match(c, /[{}();]/)) { ch = substr(c, RSTART, 1); t = substr(c, 1, RSTART - 1); c = substr(c, RSTART + 1) }
+            else { ch = ""; t = c; c = "" }
+            if (ch == "(" || ch == ")") { t = t ch; paren += ch == "(" ? 1 : -1 }
+            if (!depth) { if (SBRACE) STAIL = STAIL t; else SHEAD = SHEAD t }
+            if (ch == "{" && !depth++ && !SBRACE) { SBRACE = n; SFN = SHEAD ~ /[(]/ && SHEAD !~ /=/ && SHEAD !~ /^typedef/ }
+            else if (ch == "}" && --depth <= 0) { if (depth < 0) return 0; if (SFN) return SEND = n }
+            else if (ch == ";" && !depth && !paren) return SEND = n
+        }
+    }
+    return 0
+}
+# Returns the names the declarators of text declare, as " A B ": in each, the name after
+# the "(*" of a pointer to a function, or else the last name before any "(" or "[".
+function declared(text,   names, d, ch, k, paren) {
+    names = " "
+    for (k = 1; k <= length(text) + 1; k++) {
+        ch = k <= length(text) ? substr(text, k, 1) : ","
+        if (ch == "(") paren++; else if (ch == ")") paren--
+        if (ch != "," || paren) { d = d ch; continue }
+        if (match(d, /[(][ \t]*[*][ \t*]*/)) { d = substr(d, RSTART + RLENGTH); while (sub(/^(const|volatile|restrict)[ \t]+/, "", d)); }
+        else { sub(/[[(].*/, "", d); d = match(d, /[A-Za-z_][A-Za-z0-9_]*[ \t]*$/) ? substr(d, RSTART) : "" }
+        if (match(d, /^[A-Za-z_][A-Za-z0-9_]*/)) names = names substr(d, 1, RLENGTH) " "
+        d = ""
+    }
+    return names
+}
+# Finds the C definition of name in path with the comment just above it, the first of: a
+# function with its body; a macro with its continued lines; a typedef whose own name is
+# name (of a struct, union or enum with its braces, of a pointer to a function, ...); a
+# struct, union or enum T { ... }; whose T is name, or T of a typedef struct T name;.
+# Declarations are passed over: a prototype, struct T;, typedef struct T T;. Sets DFROM
+# and DTO to its first and last lines and DBODY to the line of the "{" of a function (past
+# DTO otherwise), or returns why it cannot.
+function definition(path, name,   i, t, from, to, body, tag, h) {
+    if (name !~ /^[A-Za-z_][A-Za-z0-9_]*$/) return "no definition of " name
+    prepare(path)
+    tag = (path, name) in ALIAS ? ALIAS[path, name] : name
     for (i = 1; i <= NL[path] && !to; i++) {
-        t = SRC[path, i]
-        if (t ~ /^typedef/) typedef = i
-        if (typedef && t ~ ("^}[ \t]*" name "[ \t]*;")) { from = typedef; to = i }
-        else if (t ~ /^typedef/ && t ~ ("[ *(]" name "([ \t)[;]|$)"))
-            for (from = j = i; j <= NL[path] && !to; j++) to = SRC[path, j] ~ /;[ \t]*$/ ? j : 0
-        else if (t ~ ("^#define[ \t]+" name "([ \t(]|$)")) from = to = i
-        else if (t ~ /^[A-Za-z_]/ && t !~ /^typedef/ && t ~ ("(^|[ *])" name "\\(")) {
-            for (j = i; j <= NL[path] && SRC[path, j] != "{" && SRC[path, j] !~ /;[ \t]*$/; j++);
-            if (SRC[path, j] == "{") {
-                from = i; body = j
-                for (; j <= NL[path] && !to; j++) to = SRC[path, j] == "}" ? j : 0
+        t = CODE[path, i]
+        if ((path, i) in DIRSTART) {
+            if (sub(/^[ \t]*#[ \t]*define[ \t]+/, "", t) && match(t, /^[A-Za-z_][A-Za-z0-9_]*/) && substr(t, 1, RLENGTH) == name)
+                for (from = to = i; to < NL[path] && SRC[path, to] ~ /\\$/; to++);
+        } else if (!((path, i) in TOP)) continue
+        else if ((path, i) in TDEND) { if (index(TDNAMES[path, i], " " name " ")) { from = i; to = TDEND[path, i] } }
+        else if ((h = tagof(t)) != "" && (h == name || h == tag) && scan(path, i) && SBRACE && !SFN && SHEAD ~ TAGONLY) { from = i; to = SEND }
+        else if (t ~ ("(^|[^A-Za-z0-9_])" name "[ \t]*[(]") && scan(path, i) && SFN) {
+            h = substr(SHEAD, 1, index(SHEAD, "(") - 1); sub(/[ \t]+$/, "", h)
+            if (match(h, /[A-Za-z_][A-Za-z0-9_]*$/) && substr(h, RSTART) == name) {
+                from = i; to = SEND; body = SBRACE + (CODE[path, SBRACE] !~ /^[ \t]*[{][ \t]*$/)
             }
         }
     }
@@ -105,6 +188,7 @@ function definition(path, name,   i, j, t, typedef, from, to, body) {
     DFROM = from; DTO = to; DBODY = body ? body : to + 1
     if (from > 1 && SRC[path, from - 1] ~ /\*\/[ \t]*$/ && SRC[path, from - 1] !~ /^\/\* starter:/ && !((path, from - 1) in ISM))
         for (DFROM = from - 1; DFROM > 1 && SRC[path, DFROM] !~ /^\/\*/; DFROM--);
+    for (i = DFROM; i < from; i++) if (CODE[path, i] ~ /[^ \t]/ || ((path, i) in DIR)) DFROM = from
     return ""
 }
 # Appends the lines of excerpt or definition name of path to PICK (0 a blank line between two).
@@ -159,6 +243,7 @@ function region(o, e, path, names,   i, n, w, have, want, st, why) {
     gsub(/\n/, E[o], want); OUT[o] = L[o] E[o] want; changed = 1
     for (i = o + 1; i < e; i++) OUT[i] = ""
 }
+BEGIN { TAGONLY = "^(struct|union|enum)[ \t]+[A-Za-z_][A-Za-z0-9_]*[ \t]*$" }
 { E[NR] = sub(/\r$/, "") ? "\r\n" : "\n"; L[NR] = $0 }
 END {
     if (defs != "") {
