@@ -228,6 +228,104 @@ expect "a name both an excerpt and a definition fails" 1 \
     "both.md:1: 'setup' is both an excerpt and a definition in src/box.c" "$docsnip" --check both.md
 rm -f src/box.c defs.md nodef.md both.md want.txt
 
+# Only a definition of the name itself is quoted, never a declaration or a mention: a
+# function pointer type that mentions Hit before Hit's typedef, forward declarations before
+# the definitions (the struct of typedef struct Tracer Tracer; with its comment, a function
+# after its prototype), a macro continued over three lines.
+cat >src/hooks.h <<'EOF'
+/* hooks.h: a fixture of declarations and mentions before definitions. */
+#ifndef HOOKS_H
+#define HOOKS_H
+
+typedef struct Tracer Tracer;
+struct Hit;
+struct Scene;
+
+/* A hook: it mentions Hit, Tracer and Ray, and defines LightFn alone. */
+typedef double (*LightFn)(Ray r, const Tracer *tr,
+                          const struct Hit *hit);
+
+double tracer_trace(const Tracer *tr,
+                    const struct Hit *hit);
+
+/* The features, on three lines. */
+#define FEATURES                                                                               \
+    (FEATURE_SPHERES | FEATURE_PLANES |                                                        \
+     FEATURE_LIGHTS)
+
+/* A hit. */
+typedef struct Hit {
+    double t;
+    LightFn light; /* { a brace in a comment */
+} Hit;
+
+/* A tracer. */
+struct Tracer {
+    Hit last;
+    LightFn light;
+};
+
+/* Traces. */
+double tracer_trace(const Tracer *tr, const struct Hit *hit)
+{
+    return hit->t + (tr->light ? '}' : 0);
+}
+#endif
+EOF
+expect "--definitions finds each one's own definition" 0 "" \
+    "$docsnip" --definitions src/hooks.h Hit Tracer FEATURES LightFn tracer_trace:
+cat >want.txt <<'EOF'
+/* A hit. */
+typedef struct Hit {
+    double t;
+    LightFn light; /* { a brace in a comment */
+} Hit;
+/* A tracer. */
+struct Tracer {
+    Hit last;
+    LightFn light;
+};
+/* The features, on three lines. */
+#define FEATURES                                                                               \
+    (FEATURE_SPHERES | FEATURE_PLANES |                                                        \
+     FEATURE_LIGHTS)
+/* A hook: it mentions Hit, Tracer and Ray, and defines LightFn alone. */
+typedef double (*LightFn)(Ray r, const Tracer *tr,
+                          const struct Hit *hit);
+/* Traces. */
+double tracer_trace(const Tracer *tr, const struct Hit *hit)
+EOF
+same "a typedef not a mention, a struct not its declaration, a macro whole" want.txt out.txt
+expect "a name only mentioned is refused" 1 "src/hooks.h: no definition of Ray" \
+    "$docsnip" --definitions src/hooks.h Ray
+expect "a name only declared is refused" 1 "src/hooks.h: no definition of Scene" \
+    "$docsnip" --definitions src/hooks.h Scene
+expect "an unknown name is refused" 1 "src/hooks.h: no definition of Missing" \
+    "$docsnip" --definitions src/hooks.h Hit Missing
+cat >hooks.md <<'EOF'
+<!-- excerpt: src/hooks.h FEATURES tracer_trace -->
+```c
+/* The features, on three lines. */
+#define FEATURES                                                                               \
+    (FEATURE_SPHERES | FEATURE_PLANES |                                                        \
+     FEATURE_LIGHTS)
+
+/* Traces. */
+double tracer_trace(const Tracer *tr, const struct Hit *hit)
+{
+    return hit->t + (tr->light ? '}' : 0);
+}
+```
+*From src/hooks.h*
+<!-- end excerpt -->
+EOF
+expect "a doc quotes a continued macro whole and a function, not its prototype" 0 "" \
+    "$docsnip" --check hooks.md
+printf '<!-- excerpt: src/hooks.h Hit Scene -->\n<!-- end excerpt -->\n' >nohook.md
+expect "a doc naming a name only declared is refused" 1 \
+    "nohook.md:1: no excerpt or definition 'Scene' in src/hooks.h" "$docsnip" --update nohook.md
+rm -f src/hooks.h hooks.md nohook.md want.txt
+
 # --- Up to date, stale, update ----------------------------------------------
 
 expect "an up-to-date doc passes (nesting, dedent, # markers, long fence)" 0 "" \

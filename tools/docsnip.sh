@@ -5,8 +5,9 @@
 # A source marks an excerpt with lines holding only  /* excerpt: NAME */ ... /* end excerpt:
 # NAME */  (or # excerpt: NAME); a doc quotes it between  <!-- excerpt: PATH NAME -->  and
 # <!-- end excerpt -->, which docsnip fills with a fenced block and the caption *From PATH*.
-# A C file needs no marker for a whole definition: NAME may name a function, a typedef or a
-# macro, which quotes it with the comment just above it; several names quote several, in turn.
+# A C file needs no marker for a whole definition: NAME may name a function, a type (its
+# typedef, or the struct T { ... }; of a typedef struct T NAME;) or a macro, quoted whole with
+# the comment just above it, never a declaration; several names quote several, in turn.
 # --definitions FILE NAME... prints those definitions of FILE as they stand, NAME: for a
 # function's contract alone (its comment and signature); tools/doctables.sh counts them.
 # Exit status: 0 when all is well, 1 when a problem was found, 2 for bad usage.
@@ -14,7 +15,7 @@ usage() { echo "docsnip: $1" >&2; echo "Try 'docsnip --help'." >&2; exit 2; }
 mode="" root=.
 while [ $# -gt 0 ]; do
     case $1 in
-    -h | --help) sed -n '2,12s/^# \{0,1\}//p' "$0"; exit 0 ;;
+    -h | --help) sed -n '2,13s/^# \{0,1\}//p' "$0"; exit 0 ;;
     --check | --update | --list | --definitions)
         [ -z "$mode" ] || usage "choose one of --check, --update, --list and --definitions"; mode=${1#--} ;;
     --root) [ $# -gt 1 ] || usage "--root needs a folder"; root=$2; shift ;;
@@ -158,6 +159,15 @@ function declared(text,   names, d, ch, k, paren) {
     }
     return names
 }
+# Returns the name a function'\''s head declares: the one before its last outer "(", past
+# any macro before it, as in static void PRINTF_LIKE(1, 2) say(const char *fmt, ...).
+function fname(head,   k, ch, paren, at) {
+    for (k = 1; k <= length(head); k++)
+        if ((ch = substr(head, k, 1)) == "(" && !paren++) at = k
+        else if (ch == ")") paren--
+    head = substr(head, 1, at - 1); sub(/[ \t]+$/, "", head)
+    return match(head, /[A-Za-z_][A-Za-z0-9_]*$/) ? substr(head, RSTART) : ""
+}
 # Finds the C definition of name in path with the comment just above it, the first of: a
 # function with its body; a macro with its continued lines; a typedef whose own name is
 # name (of a struct, union or enum with its braces, of a pointer to a function, ...); a
@@ -177,11 +187,8 @@ function definition(path, name,   i, t, from, to, body, tag, h) {
         } else if (!((path, i) in TOP)) continue
         else if ((path, i) in TDEND) { if (index(TDNAMES[path, i], " " name " ")) { from = i; to = TDEND[path, i] } }
         else if ((h = tagof(t)) != "" && (h == name || h == tag) && scan(path, i) && SBRACE && !SFN && SHEAD ~ TAGONLY) { from = i; to = SEND }
-        else if (t ~ ("(^|[^A-Za-z0-9_])" name "[ \t]*[(]") && scan(path, i) && SFN) {
-            h = substr(SHEAD, 1, index(SHEAD, "(") - 1); sub(/[ \t]+$/, "", h)
-            if (match(h, /[A-Za-z_][A-Za-z0-9_]*$/) && substr(h, RSTART) == name) {
-                from = i; to = SEND; body = SBRACE + (CODE[path, SBRACE] !~ /^[ \t]*[{][ \t]*$/)
-            }
+        else if (t ~ ("(^|[^A-Za-z0-9_])" name "[ \t]*[(]") && scan(path, i) && SFN && fname(SHEAD) == name) {
+            from = i; to = SEND; body = SBRACE + (CODE[path, SBRACE] !~ /^[ \t]*[{][ \t]*$/)
         }
     }
     if (!to) return "no definition of " name
