@@ -40,6 +40,12 @@ find_chromium() {
     done
     return 1
 }
+case ${1:-build} in
+-h | --help) sed -n '2,26s/^# \{0,1\}//p' "$0"; exit 0 ;;
+build | test | bench | gradescope | gradescope-test | chromium) ;;
+*) echo "deps.sh: no need '$1': build, test, bench, gradescope, gradescope-test or chromium" >&2
+   exit 2 ;;
+esac
 if [ "${1:-}" = chromium ]; then
     find_chromium
     exit

@@ -144,6 +144,7 @@ bool jobs_grade_all(Grading *g)
     if (g->shard_n > 0)
         fprintf(f, " (shard %d of %d of a class of %d)", g->shard_k, g->shard_n, g->member_count);
     fprintf(f, g->jobs > 1 ? ", %d at a time\n" : "\n", g->jobs);
+    fprintf(f, "grade: sandbox: %s\n", g->sandbox);
     if (g->illustrations != NULL)
         fprintf(f, "grade: not graded (illustrations): %s\n", g->illustrations);
     if (g->jobs > 1 && g->sub_count > 1)

@@ -40,8 +40,8 @@ static char *find_on_path(const char *name)
 /* Chooses the containment that --sandbox asks for (auto, namespaces or fallback): namespaces
  * when bubblewrap is installed and a sandbox of its starts (tried as a student's build would
  * be, through run_student), else the fallback, unless namespaces were asked for; sets
- * g->sandbox to the choice in words and says it on the progress. False (reported) when the
- * choice cannot be had. */
+ * g->sandbox to the choice in words (grading tells it). False (reported) when the choice
+ * cannot be had. */
 bool sandbox_choose(Grading *g)
 {
     const char *asked = g->sandbox != NULL ? g->sandbox : "auto";
@@ -85,7 +85,6 @@ bool sandbox_choose(Grading *g)
                                     why, contain_active() ? "as a user of its own (--run-as)"
                                                           : "as your user: nothing stands "
                                                             "between a program and your files");
-    fprintf(g->progress, "grade: sandbox: %s\n", g->sandbox);
     return true;
 }
 

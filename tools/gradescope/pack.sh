@@ -24,6 +24,7 @@ die() {
     echo "gradescope: $*" >&2
     exit 2
 }
+case ${1:-} in -h | --help) sed -n '2,19s/^# \{0,1\}//p' "$0"; exit 0 ;; esac
 [ $# -ge 1 ] && [ $# -le 2 ] || die "usage: $0 PART [ZIP]"
 command -v zip >/dev/null 2>&1 || die "zip is not installed (tools/deps.sh gradescope installs it)"
 command -v git >/dev/null 2>&1 && git -C "$top" rev-parse --git-dir >/dev/null 2>&1 ||
