@@ -96,6 +96,9 @@ void run_child_setup(const char *dir, int out, long long memory_limit, double ti
             close(atoi(e->d_name));
     if (fds == NULL || closedir(fds) != 0)
         _exit(RUN_EXEC_FAILED);
+    /* Before the limits, which leave a grader built with AddressSanitizer no room to allocate. */
+    if (student)
+        sandbox_environment(dir);
     /* Soft and hard, so that the child cannot raise them again; should the grader's own hard
      * limit be lower, setrlimit fails and that one stays. */
     setrlimit(RLIMIT_CORE, &(struct rlimit){0, 0});
@@ -109,7 +112,6 @@ void run_child_setup(const char *dir, int out, long long memory_limit, double ti
     /* What a student's program writes, its group (the grader's, with --run-as) reads; it
      * runs at a lower priority than the grader, whose sweeps outrun a loop of forks. */
     if (student) {
-        sandbox_environment(dir);
         umask(027);
         setpriority(PRIO_PROCESS, 0, 10);
     }

@@ -4,6 +4,7 @@
 
 #include <errno.h>
 #include <ftw.h>
+#include <limits.h>
 #include <stdlib.h>
 #include <string.h>
 #include <sys/statvfs.h>
@@ -154,14 +155,11 @@ char **sandbox_wrap(char *const argv[], const char *dir, const View *view)
  * the sandbox's: a fixed PATH, locale and home, nothing of the grader's (tokens, HOME). */
 void sandbox_environment(const char *dir)
 {
-    static char *env[6];
-    const char *home = dir != NULL ? dir : "/tmp";
-    env[0] = "PATH=/usr/local/bin:/usr/bin:/bin";
-    env[1] = "LANG=C.UTF-8";
-    env[2] = "TERM=dumb";
-    env[3] = grade_format("HOME=%s", home);
-    env[4] = grade_format("TMPDIR=%s", namespaces ? "/tmp" : home);
-    env[5] = NULL;
+    static char home[PATH_MAX + 8], tmpdir[PATH_MAX + 8];
+    static char *env[] = {"PATH=/usr/local/bin:/usr/bin:/bin", "LANG=C.UTF-8", "TERM=dumb",
+                          home, tmpdir, NULL};
+    snprintf(home, sizeof home, "HOME=%s", dir != NULL ? dir : "/tmp");
+    snprintf(tmpdir, sizeof tmpdir, "TMPDIR=%s", namespaces || dir == NULL ? "/tmp" : dir);
     environ = env;
 }
 
@@ -196,11 +194,10 @@ bool sandbox_over_disk(const View *view)
 /* Returns the real path of the regular file at path, or NULL. */
 static char *real_file(const char *path)
 {
-    char *real = realpath(path, NULL);
-    if (real != NULL && grade_kind(real) == S_IFREG)
-        return real;
-    free(real);
-    return NULL;
+    char real[PATH_MAX];
+    return realpath(path, real) != NULL && grade_kind(real) == S_IFREG
+               ? grade_format("%s", real)
+               : NULL;
 }
 
 /* Returns what a render of the scene at `scene` (from the folder run_dir) reads, which its

@@ -336,8 +336,9 @@ static char *build(const Grading *g, Submission *s)
     char *copy = grade_format("%s/build", s->work), *log = grade_format("%s/build.log", s->work);
     char *program = grade_format("%s/raytra", copy);
     /* The sandbox sees the submission by its real path, read-only, and the copy. */
-    char *from = realpath(s->path, NULL), *source[] = {from, NULL};
-    char *cp[] = {"cp", "-R", "-P", "--", grade_format("%s/.", from ? from : s->path), copy, NULL};
+    char real[PATH_MAX], *from = realpath(s->path, real) != NULL ? real : s->path;
+    char *source[] = {from, NULL};
+    char *cp[] = {"cp", "-R", "-P", "--", grade_format("%s/.", from), copy, NULL};
     char *make[] = {"make", NULL};
     bool trouble = false;
     View own = {{copy, NULL}, NULL, g->disk_limit};
