@@ -240,7 +240,6 @@ bool contain_share(const char *path);
 
 /* grade_sandbox.c */
 bool sandbox_choose(Grading *g);
-bool sandbox_namespaces(void);
 char **sandbox_wrap(char *const argv[], const char *dir, const View *view);
 char **sandbox_scene_files(const char *scene, const char *run_dir, char *also);
 void sandbox_environment(const char *dir);

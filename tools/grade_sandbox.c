@@ -89,12 +89,6 @@ bool sandbox_choose(Grading *g)
     return true;
 }
 
-/* Tells whether builds and runs are in namespaces of their own. */
-bool sandbox_namespaces(void)
-{
-    return namespaces;
-}
-
 /* Returns argv, run in folder dir (NULL: /), as the sandbox runs it: inside bubblewrap,
  * which sees view's folders writable, its reads read-only, the toolchain read-only, and
  * nothing else, without capabilities; with the fallback, argv itself. */
