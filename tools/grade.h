@@ -233,10 +233,12 @@ int contain_run(char *const argv[], const char *dir, int out, long long memory_l
 void contain_kill(void);
 bool contain_answered(void);
 RunEnd contain_wait(int *status);
-void contain_end_strays(const pid_t *keep, int keep_count);
 void contain_limit_processes(void);
 void contain_release(const char *folder);
 bool contain_share(const char *path);
+
+/* grade_reap.c */
+void contain_end_strays(const pid_t *keep, int keep_count);
 
 /* grade_sandbox.c */
 bool sandbox_choose(Grading *g);

@@ -7,7 +7,7 @@ GRADE         := $(BUILD)/grade
 PART_OPTIONS  := shade_options.c trace_options.c accel_options.c refract_options.c \
                  montecarlo_options.c
 GRADE_OBJECTS := $(addprefix $(BUILD)/,grade.o grade_part.o grade_submission.o grade_run.o grade_report.o \
-                   grade_jobs.o grade_contain.o grade_sandbox.o grade_shard.o grade_merge.o grade_export.o \
+                   grade_jobs.o grade_contain.o grade_reap.o grade_sandbox.o grade_shard.o grade_merge.o grade_export.o \
                    imgfile.o toolopt.o part_options.o) $(PART_OPTIONS:%.c=$(BUILD)/%.o)
 PART_DIRS     := $(wildcard $(TOP)/milestones/*)
 vpath %_options.c $(PART_DIRS)
