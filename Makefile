@@ -1,4 +1,5 @@
-# Makefile: builds, tests and demonstrates raytra: the library, every part of the course, the tools.
+# Makefile: builds, tests and demonstrates raytra: the library, every part of the course, and
+# the instructor's wings (compare/, grader/, book/).
 #
 #   make             build everything
 #   make test        run every test (unit tests, reference images, docs, layout)
@@ -27,7 +28,7 @@
 #   make statistics-figure  draw the z-score heat maps docs/grading.md shows
 #   make check-bvh-variants  part 1.4's grading: correct BVHs unlike raytra's pass every scene,
 #                    wrong ones fail, saying why (tests/bvh-variants, a few minutes)
-#   make check-slurm  grade a made-up class through tools/slurm/grade-slurm on a Slurm cluster
+#   make check-slurm  grade a made-up class through grader/slurm/grade-slurm on a Slurm cluster
 #                    of one node it starts (as root; installs slurm-wlm and munge, or skips)
 #   make gradescope PART=1.3 [OUT=file.zip]  write the part's Gradescope autograder, by
 #                    default out/gradescope-<part>.zip (docs/grading.md, section 7);
@@ -36,7 +37,7 @@
 #                    empty submission of part 1.3 (a few minutes)
 #   make check-contain  hostile submissions (processes left behind, a terminal's input,
 #                    classmates' folders, a full disk, shared memory, copied references...)
-#                    graded by tools/grade and run_autograder in both sandboxes, namespaces
+#                    graded by grader/grade and run_autograder in both sandboxes, namespaces
 #                    and the fallback: none reaches past its folder (as root for all of it;
 #                    about 5 minutes)
 #   make check-debian11  build, unit tests and that autograder in a Debian 11 root, whose
@@ -47,8 +48,8 @@
 include common/build.mk
 
 PARTS    := $(sort $(notdir $(wildcard milestones/*)))
-CHAPTERS := $(wildcard docs/*.md README.md milestones/*/README.md)
-DOCSNIP  := $(TOOLS_DIR)/$(BUILD)/docsnip
+CHAPTERS := $(wildcard docs/*.md README.md */README.md milestones/*/README.md grader/docs/*.md)
+DOCSNIP  := $(BOOK_DIR)/$(BUILD)/docsnip
 # The program of part $1, as this build (normal or SANITIZE=1) makes it.
 program   = milestones/$1/$(if $(filter 1,$(SANITIZE)),$(BUILD)/raytra,raytra)
 LATEST   := $(call program,$(lastword $(PARTS)))
@@ -68,22 +69,26 @@ FUZZ_SECONDS ?= 1800
 all:
 	$(DEPS_STEP)
 	@$(SUBMAKE) -C common
-	@$(SUBMAKE) -C tools
+	@$(SUBMAKE) -C compare
+	@$(SUBMAKE) -C grader
+	@$(SUBMAKE) -C book
 	@for part in $(PARTS); do $(SUBMAKE) -C milestones/$$part || exit 1; done
 
-# The grader's tests (make -C tools test) run beside all the others (test-others), their
+# The grader's tests (make -C grader test) run beside all the others (test-others), their
 # output held until the others' is done (tests/beside.sh): on two cores, a minute sooner.
 test:
 	$(DEPS_STEP) test
 	@$(SUBMAKE) all
-	@echo "make test: the grader's tests (make -C tools test) run beside the others; their output comes last"
-	@tests/beside.sh "$(SUBMAKE) -C tools test" "$(SUBMAKE) test-others"
+	@echo "make test: the grader's tests (make -C grader test) run beside the others; their output comes last"
+	@tests/beside.sh "$(SUBMAKE) -C grader test" "$(SUBMAKE) test-others"
 	@echo "make test: every test passed"
 
 test-others:
 	@$(SUBMAKE) -C tests test
+	@$(SUBMAKE) -C compare test
+	@$(SUBMAKE) -C book test
 	@for part in $(PARTS); do $(SUBMAKE) -C milestones/$$part test || exit 1; done
-	@$(SUBMAKE) -C tools/mistakes
+	@$(SUBMAKE) -C grader/mistakes
 	@$(SUBMAKE) check-docs check-slides check-figures check-exercises check-layout check-course \
 	            check-demo check-chromium
 	@$(SUBMAKE) check-starter-chapter
@@ -131,7 +136,7 @@ fuzz:
 # Speed, never part of make test: installs Embree 3 for the baseline when it can.
 bench:
 	$(DEPS_STEP)
-	@tools/deps.sh bench || echo "bench: Embree 3 is not installed: the baseline will be skipped"
+	@common/deps.sh bench || echo "bench: Embree 3 is not installed: the baseline will be skipped"
 	@$(SUBMAKE) -C bench run
 
 fuzz-run: fuzz
@@ -142,7 +147,7 @@ fuzz-run: fuzz
 check-demo:
 	@tests/readme-images.sh "$(MAKE)"
 
-# tools/deps.sh finds Chromium, which tests/grade-report.sh runs, by each of its names.
+# common/deps.sh finds Chromium, which grader/tests/grade-report.sh runs, by each of its names.
 check-chromium:
 	@tests/chromium-lookup.sh
 
@@ -150,23 +155,23 @@ check-chromium:
 check-course:
 	@tests/course-scenes.sh check $(LATEST)
 
-# The docs' tool outputs come from runs of the programs (tools/doctables.sh): built first.
+# The docs' tool outputs come from runs of the programs (book/doctables.sh): built first.
 DOCTABLES := BUILD=$(BUILD) RAYTRA_PROGRAM=$(if $(filter 1,$(SANITIZE)),$(BUILD)/raytra,raytra) \
-             tools/doctables.sh
+             book/doctables.sh
 check-docs:
 	@$(SUBMAKE) all
-	@$(SUBMAKE) -C tools/mistakes
-	@$(SUBMAKE) -C tools docsnip
+	@$(SUBMAKE) -C grader/mistakes
+	@$(SUBMAKE) -C book docsnip
 	@$(DOCSNIP) --root . --check $(CHAPTERS) && echo "check-docs: every excerpt matches the source"
 	@$(DOCTABLES) --check
-	@tools/marked.sh check-explain && echo "check-docs: no function a student writes prints to --trace-pixel"
+	@book/marked.sh check-explain && echo "check-docs: no function a student writes prints to --trace-pixel"
 
 # Every SVG of docs/figures is well-formed with a viewBox; every figure linked to exists.
 check-figures:
 	@tests/figures.sh
 
 check-layout:
-	@tools/check-layout.sh $(BUILD)
+	@book/check-layout.sh $(BUILD)
 
 # Every pixel answer of the chapters' exercises agrees with a render (docs/exercises-answers.md).
 check-exercises:
@@ -179,14 +184,14 @@ starter:
 	@if [ $(words $(PART)) -ne 1 ]; then echo "make starter: PART is one part (PART=1.2), got" \
 	    "'$(PART)': make one starter at a time" >&2; exit 2; fi
 	$(DEPS_STEP)
-	@tools/starter.sh --chapter $(STARTER_OPTIONS) '$(PART)' $(if $(DEST),'$(subst ','\'',$(DEST))')
+	@book/starter.sh --chapter $(STARTER_OPTIONS) '$(PART)' $(if $(DEST),'$(subst ','\'',$(DEST))')
 
 # The starter of the latest part with every earlier part stubbed too: each marked function
 # of the project in one build, failing its tests as a stub and passing them when solved.
 check-starter:
 	@tests/starter.sh --stub-earlier $(lastword $(PARTS))
 
-# The student edition of part 1.4's chapter (tools/starter.sh --chapter): its marked
+# The student edition of part 1.4's chapter (book/starter.sh --chapter): its marked
 # functions as stubs, nothing else changed; tests/starter-chapter.sh 1.1 ... 1.6 tries all.
 check-starter-chapter:
 	@tests/starter-chapter.sh 1.4
@@ -201,8 +206,8 @@ check-slides:
 
 docs:
 	@$(SUBMAKE) all
-	@$(SUBMAKE) -C tools/mistakes
-	@$(SUBMAKE) -C tools docsnip
+	@$(SUBMAKE) -C grader/mistakes
+	@$(SUBMAKE) -C book docsnip
 	@$(DOCSNIP) --root . --update $(CHAPTERS)
 	@$(DOCTABLES) --update
 
@@ -227,8 +232,8 @@ demo: all
 
 # The gallery of common mistakes: part 1.3 with one function broken at a time.
 mistakes: all
-	@$(SUBMAKE) -C tools/mistakes
-	@tools/mistakes/gallery.sh
+	@$(SUBMAKE) -C grader/mistakes
+	@grader/mistakes/gallery.sh
 
 # Monte Carlo renders judged by statistics (docs/grading.md): right programs (raytra and
 # other generators and schemes) with MC_SEEDS seeds of their own each pass, each variant
@@ -250,7 +255,7 @@ check-bvh-variants:
 	$(DEPS_STEP)
 	@$(SUBMAKE) all
 	@$(SUBMAKE) -C tests/bvh-variants
-	@tests/bvh-variants/run.sh $(TOOLS_DIR)/$(BUILD)/grade tests/bvh-variants/$(BUILD)
+	@tests/bvh-variants/run.sh $(GRADER_DIR)/$(BUILD)/grade tests/bvh-variants/$(BUILD)
 
 # The false-fail rate of the statistical grading, measured: MC_COUNT seeds (default 350)
 # of each of the six right programs and graded scene, in PNG, PFM and EXR (an hour or so).
@@ -266,9 +271,9 @@ calibrate-statistics:
 # started and stopped by the test, give the report that one run of grade gives.
 check-slurm:
 	$(DEPS_STEP)
-	@$(SUBMAKE) -C tools grade SANITIZE=0
+	@$(SUBMAKE) -C grader SANITIZE=0
 	@$(SUBMAKE) -C milestones/1.1-spheres-red SANITIZE=0
-	@tests/slurm.sh milestones/1.1-spheres-red/raytra
+	@grader/tests/slurm.sh milestones/1.1-spheres-red/raytra
 
 # A part's Gradescope autograder: a zip with setup.sh and run_autograder at its root.
 # PART is one word, as for a starter; OUT is quoted.
@@ -276,24 +281,24 @@ gradescope:
 	@if [ -z "$(PART)" ]; then echo "usage: make gradescope PART=1.3 [OUT=file.zip]" >&2; exit 2; fi
 	@if [ $(words $(PART)) -ne 1 ]; then echo "make gradescope: PART is one part (PART=1.3)," \
 	    "got '$(PART)'" >&2; exit 2; fi
-	@tools/deps.sh gradescope
-	@tools/gradescope/pack.sh '$(PART)' $(if $(OUT),'$(subst ','\'',$(OUT))')
+	@common/deps.sh gradescope
+	@grader/gradescope/pack.sh '$(PART)' $(if $(OUT),'$(subst ','\'',$(OUT))')
 
 # The autograder of part 1.3 unpacked, set up and run as Gradescope would, on a correct, a
-# buggy, an empty and a hostile submission (tests/gradescope.sh); not part of make test.
+# buggy, an empty and a hostile submission (grader/tests/gradescope.sh); not part of make test.
 check-gradescope:
-	@tools/deps.sh gradescope-test
-	@tests/gradescope.sh
+	@common/deps.sh gradescope-test
+	@grader/tests/gradescope.sh
 
-# Hostile submissions, each of a way out of its folder: contained by tools/grade (as a user,
+# Hostile submissions, each of a way out of its folder: contained by grader/grade (as a user,
 # and as root with --run-as) and by run_autograder, in bubblewrap's namespaces and in the
-# fallback (tests/contain.sh).
+# fallback (grader/tests/contain.sh).
 check-contain:
 	$(DEPS_STEP)
-	@tools/deps.sh gradescope-test
-	@$(SUBMAKE) -C tools grade SANITIZE=0
+	@common/deps.sh gradescope-test
+	@$(SUBMAKE) -C grader SANITIZE=0
 	@$(SUBMAKE) -C milestones/1.1-spheres-red SANITIZE=0
-	@tests/contain.sh tools/build/grade
+	@grader/tests/contain.sh grader/build/grade
 
 # OpenEXR 2 (Ubuntu 22.04, Gradescope's newest image) as well as 3: in a Debian 11 root.
 check-debian11:
@@ -314,9 +319,11 @@ clean:
 	@$(SUBMAKE) -C common clean
 	@$(SUBMAKE) -C tests clean
 	@$(SUBMAKE) -C tests/fuzz clean
-	@$(SUBMAKE) -C tools clean
+	@$(SUBMAKE) -C compare clean
+	@$(SUBMAKE) -C grader clean
+	@$(SUBMAKE) -C book clean
 	@$(SUBMAKE) -C bench clean
-	@$(SUBMAKE) -C tools/mistakes clean
+	@$(SUBMAKE) -C grader/mistakes clean
 	@$(SUBMAKE) -C tests/mc-variants clean
 	@$(SUBMAKE) -C tests/bvh-variants clean
 	@for part in $(PARTS); do $(SUBMAKE) -C milestones/$$part clean; done

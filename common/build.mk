@@ -27,7 +27,7 @@ SANFLAGS :=
 endif
 
 # pkg-config is asked once, and only when a recipe needs the answer, so that
-# the deps step can install a missing pkg-config first (see tools/deps.sh).
+# the deps step can install a missing pkg-config first (see common/deps.sh).
 lazy = $(eval $1 := $$(shell $2))$($1)
 PNG_CFLAGS   = $(call lazy,PNG_CFLAGS,pkg-config --cflags libpng 2>/dev/null)
 PNG_LIBS     = $(call lazy,PNG_LIBS,pkg-config --libs libpng 2>/dev/null || echo -lpng -lz)
@@ -36,7 +36,7 @@ PNG_LIBS     = $(call lazy,PNG_LIBS,pkg-config --libs libpng 2>/dev/null || echo
 # OpenEXR 2 and 3. A student's starter has exr_rgba_none.c instead, and needs no OpenEXR.
 ZLIB_CFLAGS  = $(call lazy,ZLIB_CFLAGS,pkg-config --cflags zlib 2>/dev/null)
 ZLIB_LIBS    = $(call lazy,ZLIB_LIBS,pkg-config --libs zlib 2>/dev/null || echo -lz)
-EXR_RGBA    := $(if $(wildcard $(TOP)/tools/exr_rgba.c),exr_rgba,exr_rgba_none)
+EXR_RGBA    := $(if $(wildcard $(TOP)/compare/exr_rgba.c),exr_rgba,exr_rgba_none)
 EXR_CFLAGS   = $(call lazy,EXR_CFLAGS,pkg-config --cflags OpenEXR 2>/dev/null || echo -I/usr/include/OpenEXR)
 EXR_LIBS     = $(if $(filter exr_rgba,$(EXR_RGBA)),$(call lazy,EXR_LIBS,pkg-config --libs OpenEXR 2>/dev/null || echo -lOpenEXR))
 # What a program that links libraytra.a links for its image files; a tool that reads them
@@ -52,15 +52,17 @@ ALL_LDFLAGS  = $(SANFLAGS) -pthread $(LDFLAGS)
 
 COMMON_DIR := $(TOP)/common
 COMMON_LIB := $(COMMON_DIR)/$(BUILD)/libraytra.a
-TOOLS_DIR  := $(TOP)/tools
-IMGDIFF    := $(TOOLS_DIR)/$(BUILD)/imgdiff
+COMPARE_DIR := $(TOP)/compare
+GRADER_DIR  := $(TOP)/grader
+BOOK_DIR    := $(TOP)/book
+IMGDIFF     := $(COMPARE_DIR)/$(BUILD)/imgdiff
 
 # The deps step installs (or names) missing packages once per top-level make;
 # sub-makes started through $(SUBMAKE) skip it.
 ifdef RAYTRA_DEPS_OK
 DEPS_STEP = @true
 else
-DEPS_STEP = @$(TOP)/tools/deps.sh
+DEPS_STEP = @$(TOP)/common/deps.sh
 endif
 SUBMAKE = $(MAKE) --no-print-directory RAYTRA_DEPS_OK=1
 

@@ -67,7 +67,7 @@ bool image_write_png(const Image *img, FILE *f, PngEncoding encoding, Error *err
 bool image_write_pfm(const Image *img, FILE *f, Error *err);
 bool image_write_exr(const Image *img, FILE *f, Error *err);
 
-/* Reading: PFM here (the parts' tests read their renders); PNG and OpenEXR in tools/. */
+/* Reading: PFM here (the parts' tests read their renders); PNG and OpenEXR in compare/. */
 bool image_read_png(Image *img, const char *path, Error *err);
 bool image_read_pfm(Image *img, const char *path, Error *err);
 

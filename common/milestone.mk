@@ -67,12 +67,12 @@ FIGURES    := $(wildcard $(TOP)/docs/figures/$(PART)/renders.txt)
 IMAGE_SETS := references $(FIGURES:%/renders.txt=%)
 
 image-test: $(PROGRAM)
-	@$(SUBMAKE) -C $(TOOLS_DIR) imgdiff
+	@$(SUBMAKE) -C $(COMPARE_DIR) imgdiff
 	@for set in $(IMAGE_SETS); do \
 	    $(TOP)/tests/regress.sh check $(CURDIR)/$(PROGRAM) $(IMGDIFF) $$set || exit 1; done
 
 references: $(PROGRAM)
-	@$(SUBMAKE) -C $(TOOLS_DIR) imgdiff
+	@$(SUBMAKE) -C $(COMPARE_DIR) imgdiff
 	@for set in $(IMAGE_SETS); do \
 	    $(TOP)/tests/regress.sh update $(CURDIR)/$(PROGRAM) $(IMGDIFF) $$set || exit 1; done
 

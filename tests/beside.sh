@@ -3,7 +3,7 @@
 #
 # Usage: tests/beside.sh 'COMMAND A' 'COMMAND B'
 #
-# make test runs the grader's tests (A: make -C tools test) beside all the others (B):
+# make test runs the grader's tests (A: make -C grader test) beside all the others (B):
 # neither keeps two cores busy for long, so together they take little more than B alone.
 # A's output is held in a file and printed whole when both are done, so that the two
 # never mix. Exits 0 when both succeed; otherwise says which failed and exits with B's

@@ -1,9 +1,9 @@
 #!/bin/sh
-# chromium-lookup.sh: tools/deps.sh finds Chromium by any of its names on PATH, or by $CHROMIUM.
+# chromium-lookup.sh: common/deps.sh finds Chromium by any of its names on PATH, or by $CHROMIUM.
 #
 # Usage: tests/chromium-lookup.sh
-# Makes folders of stand-in programs and checks what `tools/deps.sh chromium` prints
-# with each as PATH: the Chromium that tests/grade-report.sh runs.
+# Makes folders of stand-in programs and checks what `common/deps.sh chromium` prints
+# with each as PATH: the Chromium that grader/tests/grade-report.sh runs.
 set -u
 top=$(cd "$(dirname "$0")/.." && pwd)
 tmp=$(mktemp -d)
@@ -20,7 +20,7 @@ program() {
 # Checks that with PATH=$1 (and the environment given before the call) deps.sh prints $2,
 # or fails when $2 is empty.
 expect() {
-    got=$(PATH=$1 "$top/tools/deps.sh" chromium)
+    got=$(PATH=$1 "$top/common/deps.sh" chromium)
     status=$?
     if [ -z "$2" ] && [ $status -ne 0 ] && [ -z "$got" ]; then
         echo "ok   nothing found with PATH=$1${CHROMIUM:+ and CHROMIUM=$CHROMIUM}"

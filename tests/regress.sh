@@ -7,7 +7,7 @@
 # one image a line:   IMAGE  SCENE  [arguments...]
 # with SCENE relative to the top of the repository; the arguments (a part's own
 # positional arguments, then raytra options) follow SCENE and OUTPUT on the command line.
-# An IMAGE written !IMAGE is an illustration, which tools/grade does not grade; it is a
+# An IMAGE written !IMAGE is an illustration, which grader/grade does not grade; it is a
 # reference all the same. An IMAGE written ~IMAGE is a Monte Carlo render graded by
 # statistics: beside IMAGE (raytra's render with its default seed), REFDIR holds
 # NAME.stats.exr, its statistical reference (docs/grading.md), made from MCREF_RENDERS
@@ -20,7 +20,7 @@
 #           render against NAME.stats.exr, which it must pass.
 #   update  renders each scene, prints imgdiff's comparison with the current image,
 #           then replaces it (make references); for ~IMAGE, makes NAME.stats.exr anew
-#           (tools/mcref.sh, with mcstats beside IMGDIFF) and judges the render against it.
+#           (compare/mcref.sh, with mcstats beside IMGDIFF) and judges the render against it.
 set -u
 [ $# -eq 4 ] || { echo "usage: $0 check|update RAYTRA IMGDIFF REFDIR" >&2; exit 2; }
 mode=$1 raytra=$2 imgdiff=$3 refdir=$4
@@ -67,7 +67,7 @@ while read -r image scene options; do
         if [ -n "$stats" ]; then
             echo "== ${stats##*/}: ${MCREF_RENDERS:-64} renders with independent seeds"
             # shellcheck disable=SC2086
-            "$top/tools/mcref.sh" "$raytra" "$(dirname "$imgdiff")/mcstats" "$stats" \
+            "$top/compare/mcref.sh" "$raytra" "$(dirname "$imgdiff")/mcstats" "$stats" \
                 "$top/$scene" "${MCREF_RENDERS:-64}" 1000 $options || exit 1
             "$imgdiff" "$stats" "$two" | sed 's/^/    /'
         fi

@@ -2,8 +2,8 @@
 # starter-chapter.sh: each part's student edition of its chapter shows each marked function it excerpts as a stub.
 #
 # Usage: tests/starter-chapter.sh PART...
-# For each PART, `tools/starter.sh --chapter` writes a starter into a temporary folder;
-# every marked function (tools/marked.sh list) whose signature the full chapter shows
+# For each PART, `book/starter.sh --chapter` writes a starter into a temporary folder;
+# every marked function (book/marked.sh list) whose signature the full chapter shows
 # must stand in the student edition with a TODO in place of its body, and nothing else
 # of the chapter may change but the lines of those bodies. Exit status 1 names each fault.
 set -u
@@ -14,12 +14,12 @@ failed=0
 for part in "$@"; do
     for dir in "$top/milestones/$part"*; do part=$(basename "$dir"); break; done
     full=$top/docs/$part.md
-    sh "$top/tools/starter.sh" --chapter "$part" "$tmp/$part" >"$tmp/out" 2>&1 ||
-        { echo "FAIL: $part: tools/starter.sh --chapter failed:"; sed 's/^/    /' "$tmp/out"; failed=$((failed + 1)); continue; }
+    sh "$top/book/starter.sh" --chapter "$part" "$tmp/$part" >"$tmp/out" 2>&1 ||
+        { echo "FAIL: $part: book/starter.sh --chapter failed:"; sed 's/^/    /' "$tmp/out"; failed=$((failed + 1)); continue; }
     edition=$tmp/$part/docs/$part.md
     [ -f "$edition" ] || { echo "FAIL: $part: no docs/$part.md in the starter"; failed=$((failed + 1)); continue; }
     shown=0
-    "$top/tools/marked.sh" list | awk -v part="$part" '$1 == part { print $2, $3, $4 }' >"$tmp/marked"
+    "$top/book/marked.sh" list | awk -v part="$part" '$1 == part { print $2, $3, $4 }' >"$tmp/marked"
     while read -r file line name; do
         signature=$(sed -n "${line}p" "$top/$file")
         grep -qF -- "$signature" "$full" || continue

@@ -3,7 +3,7 @@
 #
 # Usage: tests/starter.sh [--stub-earlier] PART...
 #
-# For each PART, in a temporary folder: writes the starter (tools/starter.sh) and
+# For each PART, in a temporary folder: writes the starter (book/starter.sh) and
 # the solution's starter (--solution), and checks that
 #   - the solution's sources are the repository's, less the marker and excerpt lines;
 #   - the starter has a TODO stub for each marker of the parts it stubs;
@@ -14,7 +14,7 @@
 #   - nothing it built refers to the repository: the starter stands alone;
 #   - it can be handed out: its folders and files have the modes the umask gives (readable
 #     by all with umask 022), every link of its READMEs leads to a file in it, and its
-#     README names every package tools/deps.sh installs to build and test.
+#     README names every package common/deps.sh installs to build and test.
 # And that `make starter` refuses a PART of two words, which would make the second DEST.
 set -u
 top=$(cd "$(dirname "$0")/.." && pwd) || exit 2
@@ -69,14 +69,14 @@ dead_links() {
     done
 }
 
-# The packages tools/deps.sh installs to build and to test a starter (not Embree, for the
+# The packages common/deps.sh installs to build and to test a starter (not Embree, for the
 # benchmark, nor Chromium, for the grader's report, nor g++ and OpenEXR, for raytra's own
 # tests and tools' reader of OpenEXR files, nor the autograder's zip, unzip and jq, nor
 # bubblewrap, the grader's sandbox: none of them a starter's make check uses).
-packages=$(sed -n 's/.*need \("[^"]*"\|[A-Za-z0-9+-]*\) \([a-z0-9+-]*\) .*/\2/p' "$top/tools/deps.sh" |
+packages=$(sed -n 's/.*need \("[^"]*"\|[A-Za-z0-9+-]*\) \([a-z0-9+-]*\) .*/\2/p' "$top/common/deps.sh" |
     grep -v -x -e libembree-dev -e chromium -e 'g++' -e libopenexr-dev -e zip -e unzip -e jq \
         -e bubblewrap)
-part=tools/deps.sh
+part=common/deps.sh
 [ "$(echo "$packages" | wc -w)" -ge 4 ] || fail "cannot read the packages it installs: '$packages'"
 
 part="make starter"
@@ -99,9 +99,9 @@ for part in "$@"; do
     stub=$tmp/$part
     solved=$tmp/$part-solution
     # shellcheck disable=SC2086 # options is one word or none
-    if ! (umask 022 && "$top/tools/starter.sh" $options "$part" "$stub" >/dev/null) ||
-        ! (umask 027 && "$top/tools/starter.sh" $options --solution "$part" "$solved" >/dev/null); then
-        fail "tools/starter.sh failed"
+    if ! (umask 022 && "$top/book/starter.sh" $options "$part" "$stub" >/dev/null) ||
+        ! (umask 027 && "$top/book/starter.sh" $options --solution "$part" "$solved" >/dev/null); then
+        fail "book/starter.sh failed"
         continue
     fi
 

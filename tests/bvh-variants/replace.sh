@@ -3,12 +3,12 @@
 #
 # Usage: tests/bvh-variants/replace.sh VARIANT SOURCE
 #   VARIANT  a C file of function definitions, each named as a marked function of the part
-#            (tools/marked.sh) and written as the starter markers delimit a body: the
+#            (book/marked.sh) and written as the starter markers delimit a body: the
 #            signature, a line that is exactly "{", the body, a line that is exactly "}"
 #   SOURCE   one of the part's C files
 # Prints SOURCE with the body of each of its marked functions that VARIANT defines replaced
 # by VARIANT's body; signatures, comments and every other line are kept. The functions are
-# found by name, as tools/starter.sh finds them, so a variant keeps working while the code
+# found by name, as book/starter.sh finds them, so a variant keeps working while the code
 # around them changes. Exit status 2 when VARIANT defines a function that no marked function
 # of any file of SOURCE's folder is named after (the name changed: the variant must follow).
 set -u
@@ -27,7 +27,7 @@ FNR == NR {
     if (state == "" && (nm = name_of($0)) != "") { state = "signature"; name = nm; next }
     if (state == "signature" && $0 == "{") { state = "body"; body[name] = ""; next }
     if (state == "body" && $0 == "}") { state = ""; if (index(marked, " " name " ") == 0) {
-        printf "%s: %s is not a marked function of the part (tools/marked.sh list)\n", vfile, name >"/dev/stderr"; bad = 1 }
+        printf "%s: %s is not a marked function of the part (book/marked.sh list)\n", vfile, name >"/dev/stderr"; bad = 1 }
         next }
     if (state == "body") body[name] = body[name] $0 "\n"
     next

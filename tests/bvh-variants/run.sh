@@ -2,10 +2,10 @@
 # run.sh: shows that grading part 1.4 passes every correct BVH and fails wrong ones.
 #
 # Usage: tests/bvh-variants/run.sh GRADE VARIANTS
-#   GRADE     the grader, tools/build/grade
+#   GRADE     the grader, grader/build/grade
 #   VARIANTS  the folder of the programs raytra-NAME (make -C tests/bvh-variants)
 # Grades a class of one submission a variant (its program and a Makefile that copies it) with
-# tools/grade, two at a time, and checks grades.csv: every scene of a right variant
+# grader/grade, two at a time, and checks grades.csv: every scene of a right variant
 # passes; each wrong one fails the scenes listed below, each with the words that say
 # what is wrong, and passes the others. Prints each variant's verdicts; exit status 0
 # when everything is as expected, 1 otherwise.
