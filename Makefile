@@ -5,6 +5,9 @@
 #   make test        run every test (unit tests, reference images, docs, layout)
 #   make demo        render scenes/demo-tour.scn with every part, as each shows it best, into out/
 #   make references  re-render every part's reference images, showing what changed
+#   make install [PREFIX=/usr/local] [DESTDIR=]   install each part's renderer as
+#                    raytra-1.1 ... raytra-1.6, and imgdiff and mcstats as raytra-imgdiff and
+#                    raytra-mcstats, into DESTDIR/PREFIX/bin (make uninstall removes them)
 #   make docs        refresh the code excerpts and generated tables in docs/ from the source
 #   make starter PART=1.2 [DEST=dir]   write the starter of a part, the folder a course
 #                    hands out, into out/starter-<part>/ (docs/starters.md)
@@ -63,36 +66,43 @@ FUZZ_SECONDS ?= 1800
         check-robust check-fuzz-regressions check-bad-input check-interrupt check-nonfinite \
         check-course-render check-renders valgrind fuzz fuzz-run bench mistakes starter check-starter check-starter-chapter check-starters \
         check-exercises check-statistics calibrate-statistics check-bvh-variants statistics-figure gradescope \
-        check-gradescope check-slurm check-contain check-debian11
-.NOTPARALLEL:
+        check-gradescope check-slurm check-contain check-debian11 install uninstall check-help check-install
 
-all:
+# Each folder is built by its own Makefile once what it links is built: common/ first, then
+# compare/, the grader, the book's scripts and the parts (each after the parts it USES),
+# side by side under make -j.
+FOLDERS := common compare grader book $(PARTS:%=milestones/%)
+.PHONY: deps $(FOLDERS)
+all: $(FOLDERS)
+	@:
+deps:
 	$(DEPS_STEP)
-	@$(SUBMAKE) -C common
-	@$(SUBMAKE) -C compare
-	@$(SUBMAKE) -C grader
-	@$(SUBMAKE) -C book
-	@for part in $(PARTS); do $(SUBMAKE) -C milestones/$$part || exit 1; done
+$(FOLDERS): deps
+	+@$(SUBMAKE) -C $@
+compare book $(PARTS:%=milestones/%): common
+grader: compare
+$(foreach part,$(PARTS),$(eval milestones/$(part): \
+    $(addprefix milestones/,$(shell sed -n 's/^USES *:= *//p' milestones/$(part)/Makefile))))
 
 # The grader's tests (make -C grader test) run beside all the others (test-others), their
 # output held until the others' is done (tests/beside.sh): on two cores, a minute sooner.
 test:
 	$(DEPS_STEP) test
-	@$(SUBMAKE) all
+	+@$(SUBMAKE) all
 	@echo "make test: the grader's tests (make -C grader test) run beside the others; their output comes last"
-	@tests/beside.sh "$(SUBMAKE) -C grader test" "$(SUBMAKE) test-others"
+	+@tests/beside.sh "$(SUBMAKE) -C grader test" "$(SUBMAKE) test-others"
 	@echo "make test: every test passed"
 
 test-others:
-	@$(SUBMAKE) -C tests test
-	@$(SUBMAKE) -C compare test
-	@$(SUBMAKE) -C book test
-	@for part in $(PARTS); do $(SUBMAKE) -C milestones/$$part test || exit 1; done
-	@$(SUBMAKE) -C grader/mistakes
-	@$(SUBMAKE) check-docs check-slides check-figures check-exercises check-layout check-course \
+	+@$(SUBMAKE) -C tests test
+	+@$(SUBMAKE) -C compare test
+	+@$(SUBMAKE) -C book test
+	+@for part in $(PARTS); do $(SUBMAKE) -C milestones/$$part test || exit 1; done
+	+@$(SUBMAKE) -C grader/mistakes
+	+@$(SUBMAKE) check-docs check-slides check-figures check-exercises check-layout check-course \
 	            check-demo check-chromium
-	@$(SUBMAKE) check-starter-chapter
-	@$(SUBMAKE) check-fuzz-regressions check-bad-input
+	+@$(SUBMAKE) check-starter-chapter check-help check-install
+	+@$(SUBMAKE) check-fuzz-regressions check-bad-input
 
 # Broken input of every kind and interruptions (docs/robustness.md); make test runs the
 # first two, CI the interruptions too (their stops under valgrind take half a minute or more).
@@ -104,7 +114,7 @@ check-renders: check-nonfinite check-course-render
 
 # Every input the fuzzers ever crashed on, and their minimised corpora, loaded again.
 check-fuzz-regressions:
-	@$(SUBMAKE) -C tests/fuzz regress
+	+@$(SUBMAKE) -C tests/fuzz regress
 
 check-bad-input:
 	@tests/bad-input.sh $(LATEST)
@@ -126,18 +136,18 @@ check-course-render:
 
 valgrind:
 	@if [ "$(SANITIZE)" = 1 ]; then echo "make valgrind: not with SANITIZE=1"; exit 2; fi
-	@$(SUBMAKE) all
-	@$(SUBMAKE) -C tests/fuzz regress-programs
+	+@$(SUBMAKE) all
+	+@$(SUBMAKE) -C tests/fuzz regress-programs
 	@tests/valgrind.sh $(PARTS:%=milestones/%)
 
 fuzz:
-	@$(SUBMAKE) -C tests/fuzz fuzzers
+	+@$(SUBMAKE) -C tests/fuzz fuzzers
 
 # Speed, never part of make test: installs Embree 3 for the baseline when it can.
 bench:
 	$(DEPS_STEP)
 	@common/deps.sh bench || echo "bench: Embree 3 is not installed: the baseline will be skipped"
-	@$(SUBMAKE) -C bench run
+	+@$(SUBMAKE) -C bench run
 
 fuzz-run: fuzz
 	@tests/fuzz/run.sh scene $(FUZZ_SECONDS) && tests/fuzz/run.sh obj $(FUZZ_SECONDS) && \
@@ -159,9 +169,9 @@ check-course:
 DOCTABLES := BUILD=$(BUILD) RAYTRA_PROGRAM=$(if $(filter 1,$(SANITIZE)),$(BUILD)/raytra,raytra) \
              book/doctables.sh
 check-docs:
-	@$(SUBMAKE) all
-	@$(SUBMAKE) -C grader/mistakes
-	@$(SUBMAKE) -C book docsnip
+	+@$(SUBMAKE) all
+	+@$(SUBMAKE) -C grader/mistakes
+	+@$(SUBMAKE) -C book docsnip
 	@$(DOCSNIP) --root . --check $(CHAPTERS) && echo "check-docs: every excerpt matches the source"
 	@$(DOCTABLES) --check
 	@book/marked.sh check-explain && echo "check-docs: no function a student writes prints to --trace-pixel"
@@ -205,9 +215,9 @@ check-slides:
 	@tests/slides.sh
 
 docs:
-	@$(SUBMAKE) all
-	@$(SUBMAKE) -C grader/mistakes
-	@$(SUBMAKE) -C book docsnip
+	+@$(SUBMAKE) all
+	+@$(SUBMAKE) -C grader/mistakes
+	+@$(SUBMAKE) -C book docsnip
 	@$(DOCSNIP) --root . --update $(CHAPTERS)
 	@$(DOCTABLES) --update
 
@@ -232,7 +242,7 @@ demo: all
 
 # The gallery of common mistakes: part 1.3 with one function broken at a time.
 mistakes: all
-	@$(SUBMAKE) -C grader/mistakes
+	+@$(SUBMAKE) -C grader/mistakes
 	@grader/mistakes/gallery.sh
 
 # Monte Carlo renders judged by statistics (docs/grading.md): right programs (raytra and
@@ -242,8 +252,8 @@ MC_PART := milestones/1.6-monte-carlo
 MC_SEEDS ?= 2
 check-statistics:
 	$(DEPS_STEP)
-	@$(SUBMAKE) all
-	@$(SUBMAKE) -C tests/mc-variants
+	+@$(SUBMAKE) all
+	+@$(SUBMAKE) -C tests/mc-variants
 	@tests/mc-variants/calibrate.sh $(call program,1.6-monte-carlo) tests/mc-variants/$(BUILD) \
 	    $(MC_PART)/references $(MC_SEEDS)
 	@tests/mc-variants/run.sh $(call program,1.6-monte-carlo) tests/mc-variants/$(BUILD) \
@@ -253,8 +263,8 @@ check-statistics:
 # tests/bvh-variants, right or wrong, passes or fails as it should, with the reason.
 check-bvh-variants:
 	$(DEPS_STEP)
-	@$(SUBMAKE) all
-	@$(SUBMAKE) -C tests/bvh-variants
+	+@$(SUBMAKE) all
+	+@$(SUBMAKE) -C tests/bvh-variants
 	@tests/bvh-variants/run.sh $(GRADER_DIR)/$(BUILD)/grade tests/bvh-variants/$(BUILD)
 
 # The false-fail rate of the statistical grading, measured: MC_COUNT seeds (default 350)
@@ -262,8 +272,8 @@ check-bvh-variants:
 MC_COUNT ?= 350
 calibrate-statistics:
 	$(DEPS_STEP)
-	@$(SUBMAKE) all
-	@$(SUBMAKE) -C tests/mc-variants
+	+@$(SUBMAKE) all
+	+@$(SUBMAKE) -C tests/mc-variants
 	@nice -n 10 tests/mc-variants/calibrate.sh $(call program,1.6-monte-carlo) \
 	    tests/mc-variants/$(BUILD) $(MC_PART)/references $(MC_COUNT) $(MC_OUT)
 
@@ -271,8 +281,8 @@ calibrate-statistics:
 # started and stopped by the test, give the report that one run of grade gives.
 check-slurm:
 	$(DEPS_STEP)
-	@$(SUBMAKE) -C grader SANITIZE=0
-	@$(SUBMAKE) -C milestones/1.1-spheres-red SANITIZE=0
+	+@$(SUBMAKE) -C grader SANITIZE=0
+	+@$(SUBMAKE) -C milestones/1.1-spheres-red SANITIZE=0
 	@grader/tests/slurm.sh milestones/1.1-spheres-red/raytra
 
 # A part's Gradescope autograder: a zip with setup.sh and run_autograder at its root.
@@ -296,8 +306,8 @@ check-gradescope:
 check-contain:
 	$(DEPS_STEP)
 	@common/deps.sh gradescope-test
-	@$(SUBMAKE) -C grader SANITIZE=0
-	@$(SUBMAKE) -C milestones/1.1-spheres-red SANITIZE=0
+	+@$(SUBMAKE) -C grader SANITIZE=0
+	+@$(SUBMAKE) -C milestones/1.1-spheres-red SANITIZE=0
 	@grader/tests/contain.sh grader/build/grade
 
 # OpenEXR 2 (Ubuntu 22.04, Gradescope's newest image) as well as 3: in a Debian 11 root.
@@ -306,25 +316,50 @@ check-debian11:
 
 # The figures of the statistical grading (docs/grading.md, chapter 1.6): z-score heat maps.
 statistics-figure:
-	@$(SUBMAKE) all
-	@$(SUBMAKE) -C tests/mc-variants
+	+@$(SUBMAKE) all
+	+@$(SUBMAKE) -C tests/mc-variants
 	@tests/mc-variants/figure.sh $(call program,1.6-monte-carlo) tests/mc-variants/$(BUILD) \
 	    $(IMGDIFF) $(MC_PART)/references docs/figures/1.6-monte-carlo
 
+# The programs that stand alone: each part's renderer, and compare/'s two. The grader is not
+# installed: it grades from its checkout, whose references and scenes it reads.
+PREFIX ?= /usr/local
+BINDIR ?= $(PREFIX)/bin
+INSTALLED := $(foreach part,$(PARTS),raytra-$(firstword $(subst -, ,$(part)))) raytra-imgdiff raytra-mcstats
+install: all
+	install -d '$(DESTDIR)$(BINDIR)'
+	@for part in $(PARTS); do \
+	    echo "install $(call program,$$part) $(DESTDIR)$(BINDIR)/raytra-$${part%%-*}"; \
+	    install -m 755 $(call program,$$part) '$(DESTDIR)$(BINDIR)'/raytra-$${part%%-*} || exit 1; \
+	done
+	install -m 755 $(IMGDIFF) '$(DESTDIR)$(BINDIR)/raytra-imgdiff'
+	install -m 755 $(COMPARE_DIR)/$(BUILD)/mcstats '$(DESTDIR)$(BINDIR)/raytra-mcstats'
+
+uninstall:
+	cd '$(DESTDIR)$(BINDIR)' && rm -f $(INSTALLED)
+
+# Every program and script a user runs answers --help; make install and uninstall into a
+# temporary DESTDIR, and the installed renderers run from there.
+check-help:
+	@tests/help.sh $(BUILD)
+
+check-install:
+	@tests/install.sh "$(MAKE)"
+
 references:
 	$(DEPS_STEP)
-	@for part in $(PARTS); do $(SUBMAKE) -C milestones/$$part references || exit 1; done
+	+@for part in $(PARTS); do $(SUBMAKE) -C milestones/$$part references || exit 1; done
 
 clean:
-	@$(SUBMAKE) -C common clean
-	@$(SUBMAKE) -C tests clean
-	@$(SUBMAKE) -C tests/fuzz clean
-	@$(SUBMAKE) -C compare clean
-	@$(SUBMAKE) -C grader clean
-	@$(SUBMAKE) -C book clean
-	@$(SUBMAKE) -C bench clean
-	@$(SUBMAKE) -C grader/mistakes clean
-	@$(SUBMAKE) -C tests/mc-variants clean
-	@$(SUBMAKE) -C tests/bvh-variants clean
-	@for part in $(PARTS); do $(SUBMAKE) -C milestones/$$part clean; done
+	+@$(SUBMAKE) -C common clean
+	+@$(SUBMAKE) -C tests clean
+	+@$(SUBMAKE) -C tests/fuzz clean
+	+@$(SUBMAKE) -C compare clean
+	+@$(SUBMAKE) -C grader clean
+	+@$(SUBMAKE) -C book clean
+	+@$(SUBMAKE) -C bench clean
+	+@$(SUBMAKE) -C grader/mistakes clean
+	+@$(SUBMAKE) -C tests/mc-variants clean
+	+@$(SUBMAKE) -C tests/bvh-variants clean
+	+@for part in $(PARTS); do $(SUBMAKE) -C milestones/$$part clean; done
 	rm -rf out

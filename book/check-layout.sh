@@ -7,6 +7,7 @@
 #   3. no function or variable is defined in two libraries (a part that changes an
 #      earlier part's function gives its version a new name);
 #   4. every part named in a Makefile's USES exists and comes earlier in the course.
+case ${1:-} in -h | --help) sed -n '2,/^[^#]/s/^# \{0,1\}//p' "$0"; exit 0 ;; esac
 set -u
 cd "$(dirname "$0")/.." || exit 2
 build=${1:-build}

@@ -15,6 +15,7 @@
 # The outputs run the built programs: BUILD (default build) names compare/'s and the parts'
 # build folder, RAYTRA_PROGRAM (default raytra) a part's program in its folder.
 # --check exits 1, naming the doc, when a table is not what the source makes now.
+case ${1:-} in -h | --help) sed -n '2,/^[^#]/s/^# \{0,1\}//p' "$0"; exit 0 ;; esac
 set -u
 top=$(cd "$(dirname "$0")/.." && pwd) || exit 2
 case ${1:-} in

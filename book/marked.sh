@@ -7,6 +7,7 @@
 #                                        the trace is told by the tracer's seams
 # A function is marked by a line /* starter: todo */ before it (docs/starters.md); its
 # body runs from the next line that is exactly "{" to the next that is exactly "}".
+case ${1:-} in -h | --help) sed -n '2,/^[^#]/s/^# \{0,1\}//p' "$0"; exit 0 ;; esac
 set -u
 top=$(cd "$(dirname "$0")/.." && pwd) || exit 2
 case ${1:-} in

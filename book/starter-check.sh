@@ -10,6 +10,7 @@
 # OUT/NAME.heat.png and imgdiff's figures to OUT/NAME.diff.txt; a render that runs
 # longer than RENDER_SECONDS (default 120) fails. Exit status 0
 # when every test passes and every image matches, 1 otherwise.
+case ${1:-} in -h | --help) sed -n '2,/^[^#]/s/^# \{0,1\}//p' "$0"; exit 0 ;; esac
 set -u
 [ $# -eq 5 ] || { echo "usage: $0 PART_DIR RAYTRA TEST_DIR IMGDIFF OUT" >&2; exit 2; }
 top=$(cd "$(dirname "$0")/.." && pwd) || exit 2

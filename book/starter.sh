@@ -253,21 +253,21 @@ PART_PROGRAM := $(PART_DIR)/$(if $(filter 1,$(SANITIZE)),$(BUILD)/raytra,raytra)
 # The program is copied to the top too, where grader/grade looks for a submission's raytra.
 all:
 	$(DEPS_STEP)
-	@$(SUBMAKE) -C $(PART_DIR)
+	+@$(SUBMAKE) -C $(PART_DIR)
 	@cp $(PART_PROGRAM) raytra
 
 check:
 	$(DEPS_STEP) test
-	@$(SUBMAKE) all
-	@$(SUBMAKE) -C $(PART_DIR) test-programs
-	@$(SUBMAKE) -C compare imgdiff
+	+@$(SUBMAKE) all
+	+@$(SUBMAKE) -C $(PART_DIR) test-programs
+	+@$(SUBMAKE) -C compare imgdiff
 	@sh book/starter-check.sh $(PART_DIR) $(PART_PROGRAM) $(PART_DIR)/$(BUILD)/tests $(IMGDIFF) out/check
 
 clean:
-	@$(SUBMAKE) -C common clean
-	@$(SUBMAKE) -C compare clean
-	@$(SUBMAKE) -C grader clean
-	@for dir in milestones/*; do $(SUBMAKE) -C $$dir clean; done
+	+@$(SUBMAKE) -C common clean
+	+@$(SUBMAKE) -C compare clean
+	+@$(SUBMAKE) -C grader clean
+	+@for dir in milestones/*; do $(SUBMAKE) -C $$dir clean; done
 	rm -rf out raytra
 EOF
 

@@ -26,25 +26,26 @@ BUILD    := build
 SANFLAGS :=
 endif
 
-# pkg-config is asked once, and only when a recipe needs the answer, so that
+# pkg-config (PKG_CONFIG) is asked once, and only when a recipe needs the answer, so that
 # the deps step can install a missing pkg-config first (see common/deps.sh).
+PKG_CONFIG ?= pkg-config
 lazy = $(eval $1 := $$(shell $2))$($1)
-PNG_CFLAGS   = $(call lazy,PNG_CFLAGS,pkg-config --cflags libpng 2>/dev/null)
-PNG_LIBS     = $(call lazy,PNG_LIBS,pkg-config --libs libpng 2>/dev/null || echo -lpng -lz)
+PNG_CFLAGS   = $(call lazy,PNG_CFLAGS,$(PKG_CONFIG) --cflags libpng 2>/dev/null)
+PNG_LIBS     = $(call lazy,PNG_LIBS,$(PKG_CONFIG) --libs libpng 2>/dev/null || echo -lpng -lz)
 # raytra writes OpenEXR itself, on zlib (docs/architecture.md); the tools read what their own
 # reader does not through OpenEXR's C interface to RGBA files (exr_rgba.c), the same in
 # OpenEXR 2 and 3. A student's starter has exr_rgba_none.c instead, and needs no OpenEXR.
-ZLIB_CFLAGS  = $(call lazy,ZLIB_CFLAGS,pkg-config --cflags zlib 2>/dev/null)
-ZLIB_LIBS    = $(call lazy,ZLIB_LIBS,pkg-config --libs zlib 2>/dev/null || echo -lz)
+ZLIB_CFLAGS  = $(call lazy,ZLIB_CFLAGS,$(PKG_CONFIG) --cflags zlib 2>/dev/null)
+ZLIB_LIBS    = $(call lazy,ZLIB_LIBS,$(PKG_CONFIG) --libs zlib 2>/dev/null || echo -lz)
 EXR_RGBA    := $(if $(wildcard $(TOP)/compare/exr_rgba.c),exr_rgba,exr_rgba_none)
-EXR_CFLAGS   = $(call lazy,EXR_CFLAGS,pkg-config --cflags OpenEXR 2>/dev/null || echo -I/usr/include/OpenEXR)
-EXR_LIBS     = $(if $(filter exr_rgba,$(EXR_RGBA)),$(call lazy,EXR_LIBS,pkg-config --libs OpenEXR 2>/dev/null || echo -lOpenEXR))
+EXR_CFLAGS   = $(call lazy,EXR_CFLAGS,$(PKG_CONFIG) --cflags OpenEXR 2>/dev/null || echo -I/usr/include/OpenEXR)
+EXR_LIBS     = $(if $(filter exr_rgba,$(EXR_RGBA)),$(call lazy,EXR_LIBS,$(PKG_CONFIG) --libs OpenEXR 2>/dev/null || echo -lOpenEXR))
 # What a program that links libraytra.a links for its image files; a tool that reads them
 # links TOOL_IMAGE_LIBS.
 IMAGE_LIBS   = $(PNG_LIBS) $(ZLIB_LIBS)
 TOOL_IMAGE_LIBS = $(IMAGE_LIBS) $(EXR_LIBS)
-CHECK_CFLAGS = $(call lazy,CHECK_CFLAGS,pkg-config --cflags check 2>/dev/null)
-CHECK_LIBS   = $(call lazy,CHECK_LIBS,pkg-config --libs check 2>/dev/null || echo -lcheck -lsubunit -lm)
+CHECK_CFLAGS = $(call lazy,CHECK_CFLAGS,$(PKG_CONFIG) --cflags check 2>/dev/null)
+CHECK_LIBS   = $(call lazy,CHECK_LIBS,$(PKG_CONFIG) --libs check 2>/dev/null || echo -lcheck -lsubunit -lm)
 
 ALL_CPPFLAGS = -D_XOPEN_SOURCE=700 -MMD -MP $(INCLUDES) $(CPPFLAGS)
 ALL_CFLAGS   = -std=c11 $(OPT) $(WARNINGS) $(SANFLAGS) -pthread $(CFLAGS)
@@ -62,7 +63,7 @@ IMGDIFF     := $(COMPARE_DIR)/$(BUILD)/imgdiff
 ifdef RAYTRA_DEPS_OK
 DEPS_STEP = @true
 else
-DEPS_STEP = @$(TOP)/common/deps.sh
+DEPS_STEP = @CC='$(CC)' PKG_CONFIG='$(PKG_CONFIG)' $(TOP)/common/deps.sh
 endif
 SUBMAKE = $(MAKE) --no-print-directory RAYTRA_DEPS_OK=1
 

@@ -73,39 +73,43 @@ if [ "${1:-build}" = gradescope-test ]; then
     command -v unzip >/dev/null 2>&1 || need unzip unzip unzip -
     command -v jq >/dev/null 2>&1 || need jq jq jq jq
 fi
-command -v cc >/dev/null 2>&1 || need "a C compiler" gcc gcc -
+# The compiler and pkg-config the Makefiles run ($(CC), $(PKG_CONFIG), passed on by them): the
+# first word, so that CC="ccache gcc" is looked for as ccache.
+compiler=${CC:-cc}
+pkg_config=${PKG_CONFIG:-pkg-config}
+command -v "${compiler%% *}" >/dev/null 2>&1 || need "a C compiler ($compiler)" gcc gcc -
 # gcc does not bring the C library's headers when installed without what it recommends.
 if [ "$(uname -s)" != Darwin ] && [ ! -f /usr/include/stdio.h ]; then
     need "the C library's headers" libc6-dev glibc-devel -
 fi
-command -v pkg-config >/dev/null 2>&1 || need pkg-config pkg-config pkgconf-pkg-config pkg-config
-if ! pkg-config --exists libpng 2>/dev/null && [ ! -f /usr/include/png.h ]; then
+command -v "${pkg_config%% *}" >/dev/null 2>&1 || need pkg-config pkg-config pkgconf-pkg-config pkg-config
+if ! $pkg_config --exists libpng 2>/dev/null && [ ! -f /usr/include/png.h ]; then
     need libpng libpng-dev libpng-devel libpng
 fi
-if [ "$(uname -s)" != Darwin ] && ! pkg-config --exists zlib 2>/dev/null &&
+if [ "$(uname -s)" != Darwin ] && ! $pkg_config --exists zlib 2>/dev/null &&
     [ ! -f /usr/include/zlib.h ]; then
     need zlib zlib1g-dev zlib-devel -
 fi
-# The tools' exr_rgba.c reads through OpenEXR's library; a starter has none (compare/Makefile).
-if [ -f "$(dirname "$0")/exr_rgba.c" ] && ! pkg-config --exists 'OpenEXR >= 2' 2>/dev/null &&
+# compare/exr_rgba.c reads through OpenEXR's library; a starter has none (compare/Makefile).
+if [ -f "$(dirname "$0")/../compare/exr_rgba.c" ] && ! $pkg_config --exists 'OpenEXR >= 2' 2>/dev/null &&
     [ ! -f /usr/include/OpenEXR/ImfCRgbaFile.h ]; then
     need "OpenEXR (2 or 3)" libopenexr-dev openexr-devel openexr
 fi
 # The grader runs students' builds and programs in bubblewrap's namespaces (Linux only;
 # without it, grader/grade falls back to walls of its own: docs/grading.md, Containment);
 # a starter, which grades with imgdiff alone, needs none.
-if [ "$(uname -s)" = Linux ] && [ -f "$(dirname "$0")/exr_rgba.c" ] &&
+if [ "$(uname -s)" = Linux ] && [ -f "$(dirname "$0")/../compare/exr_rgba.c" ] &&
     ! command -v bwrap >/dev/null 2>&1; then
     need "bubblewrap (the grader's sandbox)" bubblewrap bubblewrap -
 fi
-if [ $need_check = yes ] && ! pkg-config --exists check 2>/dev/null; then
+if [ $need_check = yes ] && ! $pkg_config --exists check 2>/dev/null; then
     need Check check check-devel check
 fi
-if [ $need_check = yes ] && ! command -v c++ >/dev/null 2>&1; then
+if [ $need_check = yes ] && ! command -v "${CXX:-c++}" >/dev/null 2>&1; then
     need "a C++ compiler" g++ gcc-c++ -
 fi
 if [ $need_embree = yes ] && [ ! -f /usr/include/embree3/rtcore.h ] &&
-    ! pkg-config --exists 'embree >= 3' 2>/dev/null; then
+    ! $pkg_config --exists 'embree >= 3' 2>/dev/null; then
     need "Embree 3" libembree-dev embree-devel embree
 fi
 if [ $need_check = yes ] && ! find_chromium >/dev/null && command -v apt-get >/dev/null 2>&1; then

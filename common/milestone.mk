@@ -30,8 +30,8 @@ test-programs: $(TEST_PROGS)
 # The libraries of common/ and of the parts used are built by their own Makefiles.
 prerequisites:
 	$(DEPS_STEP)
-	@$(SUBMAKE) -C $(COMMON_DIR) lib
-	@for dir in $(USED_DIRS); do $(SUBMAKE) -C $$dir lib || exit 1; done
+	+@$(SUBMAKE) -C $(COMMON_DIR) lib
+	+@for dir in $(USED_DIRS); do $(SUBMAKE) -C $$dir lib || exit 1; done
 $(COMMON_LIB) $(USED_LIBS): prerequisites ;
 
 $(LIB): $(OBJECTS)
@@ -53,7 +53,7 @@ test: unit-test image-test
 # runs in a scratch folder of its own, removed when it passes.
 unit-test:
 	$(DEPS_STEP) test
-	@$(SUBMAKE) test-programs $(PROGRAM)
+	+@$(SUBMAKE) test-programs $(PROGRAM)
 	@for t in $(TEST_PROGS); do \
 	    echo "== $(PART): $$t"; scratch=$$(mktemp -d); \
 	    (cd $$scratch && $(CURDIR)/$$t) || { echo "FAILED: $$t (scratch kept in $$scratch)"; exit 1; }; \
@@ -67,12 +67,12 @@ FIGURES    := $(wildcard $(TOP)/docs/figures/$(PART)/renders.txt)
 IMAGE_SETS := references $(FIGURES:%/renders.txt=%)
 
 image-test: $(PROGRAM)
-	@$(SUBMAKE) -C $(COMPARE_DIR) imgdiff
+	+@$(SUBMAKE) -C $(COMPARE_DIR) imgdiff
 	@for set in $(IMAGE_SETS); do \
 	    $(TOP)/tests/regress.sh check $(CURDIR)/$(PROGRAM) $(IMGDIFF) $$set || exit 1; done
 
 references: $(PROGRAM)
-	@$(SUBMAKE) -C $(COMPARE_DIR) imgdiff
+	+@$(SUBMAKE) -C $(COMPARE_DIR) imgdiff
 	@for set in $(IMAGE_SETS); do \
 	    $(TOP)/tests/regress.sh update $(CURDIR)/$(PROGRAM) $(IMGDIFF) $$set || exit 1; done
 

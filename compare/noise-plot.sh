@@ -10,6 +10,7 @@
 #                         correlated pairs of pixel and light strata
 #   times.md              render times of the full-size scene for several (P, S)
 # Takes about a minute on two cores. Needs only sh, awk and the two programs.
+case ${1:-} in -h | --help) sed -n '2,/^[^#]/s/^# \{0,1\}//p' "$0"; exit 0 ;; esac
 set -eu
 [ $# -eq 3 ] || { echo "usage: $0 RAYTRA IMGDIFF OUTDIR" >&2; exit 2; }
 raytra=$1 imgdiff=$2 out=$3

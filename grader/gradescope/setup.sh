@@ -11,6 +11,7 @@
 # programs, and raytra-grader, who runs the grader (run_autograder); and leaves the files
 # readable by all and writable by root alone. --build-only stops after the build: what
 # grader/tests/gradescope.sh runs; --users only makes the users.
+case ${1:-} in -h | --help) sed -n '2,/^[^#]/s/^# \{0,1\}//p' "$0"; exit 0 ;; esac
 set -u
 here=$(cd "$(dirname "$0")" && pwd) || exit 1
 export DEBIAN_FRONTEND=noninteractive

@@ -1,10 +1,13 @@
 #!/bin/sh
 # gallery.sh: renders the gallery of common mistakes and writes docs/mistakes.md (make mistakes).
 #
+# Usage: grader/mistakes/gallery.sh   (make mistakes: builds the variants first)
+#
 # Each mistake is rendered by part 1.3's raytra with one option (shadow acne), or by a
 # variant of it with one function wrapped (grader/mistakes/mistakes.c), next to the
 # right image; imgdiff draws the heat map of the differences, and --trace-pixel tells
 # what happened at one telling pixel. Nothing here is drawn or written by hand.
+case ${1:-} in -h | --help) sed -n '2,/^[^#]/s/^# \{0,1\}//p' "$0"; exit 0 ;; esac
 set -eu
 top=$(cd "$(dirname "$0")/../.." && pwd)
 cd "$top"
