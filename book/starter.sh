@@ -198,6 +198,14 @@ done
 if [ $solution = yes ]; then copy_part "$part" solution; else copy_part "$part" stub; fi
 cp -R "$top/milestones/$part/tests" "$top/milestones/$part/references" "$tmp/milestones/$part/" ||
     exit 2
+# The grader (make grade) knows every part's arguments from its headers and table of options:
+# those of the parts after this one, which the starter has not, go to grader/parts/.
+for folder in "$top"/milestones/*/; do
+    later=$(basename "$folder")
+    [ -d "$tmp/milestones/$later" ] || [ "$later" = "$part" ] && continue
+    mkdir -p "$tmp/grader/parts/$later" &&
+        cp "$folder"*.h "$folder"*_options.c "$tmp/grader/parts/$later/" || exit 2
+done
 # The instructor's controls (points, visibility, the folder of hidden scenes) stay theirs.
 rm -f "$tmp/milestones/$part/references/grading.conf"
 # The lists of the earlier parts' reference renders (not their images): a part's tests
@@ -247,7 +255,7 @@ STARTER_PART := @PART@
 PART_DIR     := milestones/$(STARTER_PART)
 PART_PROGRAM := $(PART_DIR)/$(if $(filter 1,$(SANITIZE)),$(BUILD)/raytra,raytra)
 
-.PHONY: all check clean
+.PHONY: all check grade clean
 .NOTPARALLEL:
 
 # The program is copied to the top too, where grader/grade looks for a submission's raytra.
@@ -262,6 +270,14 @@ check:
 	+@$(SUBMAKE) -C $(PART_DIR) test-programs
 	+@$(SUBMAKE) -C compare imgdiff
 	@sh book/starter-check.sh $(PART_DIR) $(PART_PROGRAM) $(PART_DIR)/$(BUILD)/tests $(IMGDIFF) out/check
+
+# Grades the part as the course's grader will (grader/grade --self: docs/grading.md,
+# section 4): a copy built afresh, every graded scene under the same limits, each verdict
+# with its reason; the report in grading-$(STARTER_PART)/, beside this folder.
+grade:
+	$(DEPS_STEP)
+	+@$(SUBMAKE) -C grader grade
+	@grader/build/grade --self --out ../grading-$(STARTER_PART) $(STARTER_PART) .
 
 clean:
 	+@$(SUBMAKE) -C common clean
@@ -323,20 +339,29 @@ earlier="the parts in \`milestones/\` other than $part are complete."
     echo
     echo "\`common/\` is the library every part links (vectors, scenes, images, the"
     echo "render loop); $earlier"
-    echo "\`milestones/$part/README.md\` describes the part; the chapters it names"
-    if [ -n "$docs_url" ]; then
-        echo "(\`docs/\`) are not in the starter: its links take you to them at $docs_url."
+    echo "\`milestones/$part/README.md\` describes the part."
+    if [ $chapter = yes ]; then
+        echo "\`docs/$part.md\` is its chapter, as students read it: the functions you write"
+        echo "stand there as their contracts and stubs. The other chapters show solutions and"
+        echo "are not in the starter; links to them lead to raytra's repository."
+    elif [ -n "$docs_url" ]; then
+        echo "Its chapters are not in the starter: its links take you to them at $docs_url."
     else
-        echo "(\`docs/\` of raytra's repository) show its solution and are not in the starter."
+        echo "Its chapters (\`docs/\` of raytra's repository) show its solution and are not"
+        echo "in the starter."
     fi
+    echo
+    echo "\`make grade\` grades your part as the course's grader will: a copy of this folder"
+    echo "built afresh, every graded scene run under the same limits and judged, each verdict"
+    echo "with its reason, and a report in \`../grading-$part/report.html\`."
 } >"$tmp/README.md"
 rm "$tmp/todo.txt"
 echo "raytra starter of part $part" >"$tmp/.raytra-starter"
 
-# The READMEs' links to files the starter does not hold: an earlier part's picture is
-# copied in; anything else (a chapter, which shows the solution; bench/) is pointed to
+# The READMEs' and the chapter's links to files the starter does not hold: a picture (an
+# earlier part's, a figure of the chapters) is copied in; anything else (a chapter, which shows the solution; bench/) is pointed to
 # where it is, at URL or by its path in raytra's repository, so that no link is dead.
-find "$tmp/milestones" -name '*.md' | while read -r md; do
+find "$tmp/milestones" "$tmp/docs" -name '*.md' 2>/dev/null | while read -r md; do
     rel=${md#"$tmp"/}
     awk -v dir="${rel%/*}" -v tmp="$tmp" -v top="$top" -v url="$docs_url" '
     # The path of target from the top, for a link in folder dir: "." and ".." resolved.
@@ -368,7 +393,7 @@ find "$tmp/milestones" -name '*.md' | while read -r md; do
             path = resolve(file)
             folder = tmp "/" path
             sub(/\/[^\/]*$/, "", folder)
-            if (link ~ /^!/ && path ~ /^milestones\// && exists(top "/" path) &&
+            if (link ~ /^!/ && path ~ /^(milestones|docs\/figures)\// && exists(top "/" path) &&
                 system("mkdir -p \"" folder "\" && cp \"" top "/" path "\" \"" tmp "/" path "\"") == 0)
                 done = done link
             else if (url != "")

@@ -99,8 +99,8 @@ for part in "$@"; do
     stub=$tmp/$part
     solved=$tmp/$part-solution
     # shellcheck disable=SC2086 # options is one word or none
-    if ! (umask 022 && "$top/book/starter.sh" $options "$part" "$stub" >/dev/null) ||
-        ! (umask 027 && "$top/book/starter.sh" $options --solution "$part" "$solved" >/dev/null); then
+    if ! (umask 022 && "$top/book/starter.sh" --chapter $options "$part" "$stub" >/dev/null) ||
+        ! (umask 027 && "$top/book/starter.sh" --chapter $options --solution "$part" "$solved" >/dev/null); then
         fail "book/starter.sh failed"
         continue
     fi
@@ -160,6 +160,15 @@ for part in "$@"; do
     if make --no-print-directory -C "$stub" check WERROR=1 >"$tmp/solved.log" 2>&1; then
         echo "ok   solved: $(grep '^unit tests:' "$tmp/solved.log"); $(grep '^images:' "$tmp/solved.log")"
         same_trace "$part" "$stub/raytra"
+        # make grade, from inside the starter, grades it as the course's grader does.
+        if make --no-print-directory -C "$stub" grade >"$tmp/grade.log" 2>&1 &&
+            grep -q '^\([0-9]*\) of \1 scenes pass' "$tmp/grade.log"; then
+            echo "ok   solved: make grade: $(grep 'scenes pass' "$tmp/grade.log")"
+        else
+            fail "make grade does not pass the solved starter:"
+            tail -n 5 "$tmp/grade.log" | sed 's/^/    /'
+        fi
+        rm -rf "$tmp/grading-$part"*
     else
         fail "make check fails with the bodies put back:"
         grep -e '^FAIL' -e 'error' -e 'warning' "$tmp/solved.log" | grep -v '^cc ' | head -n 20 | sed 's/^/    /'
