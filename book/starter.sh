@@ -303,7 +303,8 @@ if [ $chapter = yes ]; then
         mkdir -p "$mirror/$(dirname "$file")" &&
             filter "$mode" "$top/$file" "$mirror/$file" "$file" /dev/null anchors || exit 2
     done || exit 2
-    mkdir -p "$tmp/docs" && cp "$doc" "$tmp/docs/$part.md" || exit 2
+    mkdir -p "$tmp/docs" && cp "$doc" "$tmp/docs/$part.md" && cp "$top/docs/students.md" "$tmp/docs/" ||
+        exit 2
     sh "$top/book/docsnip.sh" --root "$mirror" --update "$tmp/docs/$part.md" >/dev/null ||
         die "docsnip could not make the student edition of docs/$part.md"
     rm -rf "$mirror"
@@ -351,6 +352,7 @@ earlier="the parts in \`milestones/\` other than $part are complete."
         echo "in the starter."
     fi
     echo
+    [ $chapter = yes ] && echo "\`docs/students.md\` is the whole round, from \`make\` to \`make grade\`."
     echo "\`make grade\` grades your part as the course's grader will: a copy of this folder"
     echo "built afresh, every graded scene run under the same limits and judged, each verdict"
     echo "with its reason, and a report in \`../grading-$part/report.html\`."
