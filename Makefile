@@ -59,7 +59,7 @@ FIRST    := $(call program,$(firstword $(PARTS)))
 COURSE_SCALE ?= 0.05
 FUZZ_SECONDS ?= 1800
 
-.PHONY: all test test-others demo check-demo check-chromium references docs check-docs check-slides check-figures check-layout check-course clean \
+.PHONY: all test test-others demo check-demo check-chromium references docs check-docs check-slides check-figures check-links check-layout check-course clean \
         check-robust check-fuzz-regressions check-bad-input check-interrupt check-nonfinite \
         check-course-render check-renders valgrind fuzz fuzz-run bench mistakes starter check-starter check-starter-chapter check-starters \
         check-exercises check-statistics calibrate-statistics check-bvh-variants statistics-figure gradescope \
@@ -89,7 +89,7 @@ test-others:
 	@$(SUBMAKE) -C book test
 	@for part in $(PARTS); do $(SUBMAKE) -C milestones/$$part test || exit 1; done
 	@$(SUBMAKE) -C grader/mistakes
-	@$(SUBMAKE) check-docs check-slides check-figures check-exercises check-layout check-course \
+	@$(SUBMAKE) check-docs check-slides check-figures check-links check-exercises check-layout check-course \
 	            check-demo check-chromium
 	@$(SUBMAKE) check-starter-chapter
 	@$(SUBMAKE) check-fuzz-regressions check-bad-input
@@ -169,6 +169,10 @@ check-docs:
 # Every SVG of docs/figures is well-formed with a viewBox; every figure linked to exists.
 check-figures:
 	@tests/figures.sh
+
+# Every relative link of the chapters and READMEs leads to a file, and each #anchor to a heading.
+check-links:
+	@tests/links.sh
 
 check-layout:
 	@book/check-layout.sh $(BUILD)
