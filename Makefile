@@ -5,7 +5,7 @@
 #   make test        run every test (unit tests, reference images, docs, layout)
 #   make demo        render scenes/demo-tour.scn with every part, as each shows it best, into out/
 #   make references  re-render every part's reference images, showing what changed
-#   make docs        refresh the code excerpts and generated tables in docs/ from the source
+#   make docs        refresh the code excerpts and generated tables in docs/ and grader/docs/ from the source
 #   make starter PART=1.2 [DEST=dir]   write the starter of a part, the folder a course
 #                    hands out, into out/starter-<part>/ (docs/starters.md)
 #   make check-starter  the latest part's starter, every earlier part stubbed too: each
@@ -25,13 +25,13 @@
 #   make calibrate-statistics  the statistical grading's false-fail rate over 350 seeds a
 #                    scene and right program, 2,100 renders a scene (MC_COUNT, MC_OUT=DIR
 #                    keeps the verdicts; about an hour on two idle cores)
-#   make statistics-figure  draw the z-score heat maps docs/grading.md shows
+#   make statistics-figure  draw the z-score heat maps grader/docs/statistics.md shows
 #   make check-bvh-variants  part 1.4's grading: correct BVHs unlike raytra's pass every scene,
 #                    wrong ones fail, saying why (tests/bvh-variants, a few minutes)
 #   make check-slurm  grade a made-up class through grader/slurm/grade-slurm on a Slurm cluster
 #                    of one node it starts (as root; installs slurm-wlm and munge, or skips)
 #   make gradescope PART=1.3 [OUT=file.zip]  write the part's Gradescope autograder, by
-#                    default out/gradescope-<part>.zip (docs/grading.md, section 7);
+#                    default out/gradescope-<part>.zip (grader/docs/gradescope.md);
 #                    GRADING_CONF=FILE, HIDDEN=DIR: points, visibility, hidden scenes
 #   make check-gradescope  that autograder, unpacked and run on a correct, a buggy and an
 #                    empty submission of part 1.3 (a few minutes)
@@ -239,9 +239,9 @@ mistakes: all
 	@$(SUBMAKE) -C grader/mistakes
 	@grader/mistakes/gallery.sh
 
-# Monte Carlo renders judged by statistics (docs/grading.md): right programs (raytra and
-# other generators and schemes) with MC_SEEDS seeds of their own each pass, each variant
-# of part 1.6 (tests/mc-variants) passes or fails as it should.
+# Monte Carlo renders judged by statistics (grader/docs/statistics.md): right programs
+# (raytra and other generators and schemes) with MC_SEEDS seeds of their own each pass,
+# each variant of part 1.6 (tests/mc-variants) passes or fails as it should.
 MC_PART := milestones/1.6-monte-carlo
 MC_SEEDS ?= 2
 check-statistics:
@@ -253,7 +253,7 @@ check-statistics:
 	@tests/mc-variants/run.sh $(call program,1.6-monte-carlo) tests/mc-variants/$(BUILD) \
 	    $(IMGDIFF) $(MC_PART)/references
 
-# Part 1.4 graded on BVHs unlike raytra's (docs/grading.md): each variant of
+# Part 1.4 graded on BVHs unlike raytra's (grader/docs/bvh-judging.md): each variant of
 # tests/bvh-variants, right or wrong, passes or fails as it should, with the reason.
 check-bvh-variants:
 	$(DEPS_STEP)
@@ -271,8 +271,8 @@ calibrate-statistics:
 	@nice -n 10 tests/mc-variants/calibrate.sh $(call program,1.6-monte-carlo) \
 	    tests/mc-variants/$(BUILD) $(MC_PART)/references $(MC_COUNT) $(MC_OUT)
 
-# A class graded on Slurm (docs/grading.md): shards and a merge, on a cluster of one node
-# started and stopped by the test, give the report that one run of grade gives.
+# A class graded on Slurm (grader/docs/at-scale.md): shards and a merge, on a cluster of
+# one node started and stopped by the test, give the report that one run of grade gives.
 check-slurm:
 	$(DEPS_STEP)
 	@$(SUBMAKE) -C grader SANITIZE=0
@@ -308,7 +308,8 @@ check-contain:
 check-debian11:
 	@tests/debian11.sh
 
-# The figures of the statistical grading (docs/grading.md, chapter 1.6): z-score heat maps.
+# The figures of the statistical grading (grader/docs/statistics.md, chapter 1.6): z-score
+# heat maps.
 statistics-figure:
 	@$(SUBMAKE) all
 	@$(SUBMAKE) -C tests/mc-variants
