@@ -18,7 +18,7 @@
 #   make valgrind    render scenes of every part, and broken inputs, under valgrind's memcheck
 #   make bench       benchmark part 1.4's BVH (against Embree 3 when installed; bench/README.md)
 #   make fuzz        build the libFuzzer harnesses of the scene, OBJ and OpenEXR readers (clang)
-#   make fuzz-run    fuzz each reader for FUZZ_SECONDS (default 1800) s (docs/robustness.md)
+#   make fuzz-run    fuzz each reader for FUZZ_SECONDS (default 1800) s (docs/fuzzing.md)
 #   make mistakes    render the gallery of common mistakes and write docs/mistakes.md
 #   make check-statistics  part 1.6's grading by statistics: right programs with 2 seeds pass,
 #                    right and wrong solutions pass and fail (tests/mc-variants, a few minutes)
@@ -94,12 +94,12 @@ test-others:
 	@$(SUBMAKE) check-starter-chapter
 	@$(SUBMAKE) check-fuzz-regressions check-bad-input
 
-# Broken input of every kind and interruptions (docs/robustness.md); make test runs the
+# Broken input of every kind and interruptions (docs/robustness-tests.md); make test runs the
 # first two, CI the interruptions too (their stops under valgrind take half a minute or more).
 check-robust: check-fuzz-regressions check-bad-input check-interrupt
 
 # Every part renders every reference, project and course scene, with finite pixels: a few
-# hundred renders, too many for make test; CI runs it (docs/robustness.md).
+# hundred renders, too many for make test; CI runs it (docs/robustness-tests.md).
 check-renders: check-nonfinite check-course-render
 
 # Every input the fuzzers ever crashed on, and their minimised corpora, loaded again.
