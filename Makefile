@@ -8,7 +8,7 @@
 #   make install [PREFIX=/usr/local] [DESTDIR=]   install each part's renderer as
 #                    raytra-1.1 ... raytra-1.6, and imgdiff and mcstats as raytra-imgdiff and
 #                    raytra-mcstats, into DESTDIR/PREFIX/bin (make uninstall removes them)
-#   make docs        refresh the code excerpts and generated tables in docs/ from the source
+#   make docs        refresh the code excerpts and generated tables in docs/ and grader/docs/ from the source
 #   make starter PART=1.2 [DEST=dir]   write the starter of a part, the folder a course
 #                    hands out, into out/starter-<part>/ (docs/starters.md)
 #   make check-starter  the latest part's starter, every earlier part stubbed too: each
@@ -21,20 +21,20 @@
 #   make valgrind    render scenes of every part, and broken inputs, under valgrind's memcheck
 #   make bench       benchmark part 1.4's BVH (against Embree 3 when installed; bench/README.md)
 #   make fuzz        build the libFuzzer harnesses of the scene, OBJ and OpenEXR readers (clang)
-#   make fuzz-run    fuzz each reader for FUZZ_SECONDS (default 1800) s (docs/robustness.md)
+#   make fuzz-run    fuzz each reader for FUZZ_SECONDS (default 1800) s (docs/fuzzing.md)
 #   make mistakes    render the gallery of common mistakes and write docs/mistakes.md
 #   make check-statistics  part 1.6's grading by statistics: right programs with 2 seeds pass,
 #                    right and wrong solutions pass and fail (tests/mc-variants, a few minutes)
 #   make calibrate-statistics  the statistical grading's false-fail rate over 350 seeds a
 #                    scene and right program, 2,100 renders a scene (MC_COUNT, MC_OUT=DIR
 #                    keeps the verdicts; about an hour on two idle cores)
-#   make statistics-figure  draw the z-score heat maps docs/grading.md shows
+#   make statistics-figure  draw the z-score heat maps grader/docs/statistics.md shows
 #   make check-bvh-variants  part 1.4's grading: correct BVHs unlike raytra's pass every scene,
 #                    wrong ones fail, saying why (tests/bvh-variants, a few minutes)
 #   make check-slurm  grade a made-up class through grader/slurm/grade-slurm on a Slurm cluster
 #                    of one node it starts (as root; installs slurm-wlm and munge, or skips)
 #   make gradescope PART=1.3 [OUT=file.zip]  write the part's Gradescope autograder, by
-#                    default out/gradescope-<part>.zip (docs/grading.md, section 7);
+#                    default out/gradescope-<part>.zip (grader/docs/gradescope.md);
 #                    GRADING_CONF=FILE, HIDDEN=DIR: points, visibility, hidden scenes
 #   make check-gradescope  that autograder, unpacked and run on a correct, a buggy and an
 #                    empty submission of part 1.3 (a few minutes)
@@ -62,7 +62,7 @@ FIRST    := $(call program,$(firstword $(PARTS)))
 COURSE_SCALE ?= 0.05
 FUZZ_SECONDS ?= 1800
 
-.PHONY: all test test-others demo check-demo check-chromium references docs check-docs check-slides check-figures check-layout check-course clean \
+.PHONY: all test test-others demo check-demo check-chromium references docs check-docs check-slides check-figures check-links check-layout check-course clean \
         check-robust check-fuzz-regressions check-bad-input check-interrupt check-nonfinite \
         check-course-render check-renders valgrind fuzz fuzz-run bench mistakes starter check-starter check-starter-chapter check-starters \
         check-exercises check-statistics calibrate-statistics check-bvh-variants statistics-figure gradescope \
@@ -99,17 +99,17 @@ test-others:
 	+@$(SUBMAKE) -C book test
 	+@for part in $(PARTS); do $(SUBMAKE) -C milestones/$$part test || exit 1; done
 	+@$(SUBMAKE) -C grader/mistakes
-	+@$(SUBMAKE) check-docs check-slides check-figures check-exercises check-layout check-course \
+	+@$(SUBMAKE) check-docs check-slides check-figures check-links check-exercises check-layout check-course \
 	            check-demo check-chromium
 	+@$(SUBMAKE) check-starter-chapter check-help check-install
 	+@$(SUBMAKE) check-fuzz-regressions check-bad-input
 
-# Broken input of every kind and interruptions (docs/robustness.md); make test runs the
+# Broken input of every kind and interruptions (docs/robustness-tests.md); make test runs the
 # first two, CI the interruptions too (their stops under valgrind take half a minute or more).
 check-robust: check-fuzz-regressions check-bad-input check-interrupt
 
 # Every part renders every reference, project and course scene, with finite pixels: a few
-# hundred renders, too many for make test; CI runs it (docs/robustness.md).
+# hundred renders, too many for make test; CI runs it (docs/robustness-tests.md).
 check-renders: check-nonfinite check-course-render
 
 # Every input the fuzzers ever crashed on, and their minimised corpora, loaded again.
@@ -180,6 +180,10 @@ check-docs:
 check-figures:
 	@tests/figures.sh
 
+# Every relative link of the chapters and READMEs leads to a file, and each #anchor to a heading.
+check-links:
+	@tests/links.sh
+
 check-layout:
 	@book/check-layout.sh $(BUILD)
 
@@ -245,9 +249,9 @@ mistakes: all
 	+@$(SUBMAKE) -C grader/mistakes
 	@grader/mistakes/gallery.sh
 
-# Monte Carlo renders judged by statistics (docs/grading.md): right programs (raytra and
-# other generators and schemes) with MC_SEEDS seeds of their own each pass, each variant
-# of part 1.6 (tests/mc-variants) passes or fails as it should.
+# Monte Carlo renders judged by statistics (grader/docs/statistics.md): right programs
+# (raytra and other generators and schemes) with MC_SEEDS seeds of their own each pass,
+# each variant of part 1.6 (tests/mc-variants) passes or fails as it should.
 MC_PART := milestones/1.6-monte-carlo
 MC_SEEDS ?= 2
 check-statistics:
@@ -259,7 +263,7 @@ check-statistics:
 	@tests/mc-variants/run.sh $(call program,1.6-monte-carlo) tests/mc-variants/$(BUILD) \
 	    $(IMGDIFF) $(MC_PART)/references
 
-# Part 1.4 graded on BVHs unlike raytra's (docs/grading.md): each variant of
+# Part 1.4 graded on BVHs unlike raytra's (grader/docs/bvh-judging.md): each variant of
 # tests/bvh-variants, right or wrong, passes or fails as it should, with the reason.
 check-bvh-variants:
 	$(DEPS_STEP)
@@ -277,8 +281,8 @@ calibrate-statistics:
 	@nice -n 10 tests/mc-variants/calibrate.sh $(call program,1.6-monte-carlo) \
 	    tests/mc-variants/$(BUILD) $(MC_PART)/references $(MC_COUNT) $(MC_OUT)
 
-# A class graded on Slurm (docs/grading.md): shards and a merge, on a cluster of one node
-# started and stopped by the test, give the report that one run of grade gives.
+# A class graded on Slurm (grader/docs/at-scale.md): shards and a merge, on a cluster of
+# one node started and stopped by the test, give the report that one run of grade gives.
 check-slurm:
 	$(DEPS_STEP)
 	+@$(SUBMAKE) -C grader SANITIZE=0
@@ -314,7 +318,8 @@ check-contain:
 check-debian11:
 	@tests/debian11.sh
 
-# The figures of the statistical grading (docs/grading.md, chapter 1.6): z-score heat maps.
+# The figures of the statistical grading (grader/docs/statistics.md, chapter 1.6): z-score
+# heat maps.
 statistics-figure:
 	+@$(SUBMAKE) all
 	+@$(SUBMAKE) -C tests/mc-variants

@@ -205,8 +205,10 @@ marked_functions >"$tmp/marked" || exit 1
 reading_load >"$tmp/load" || exit 1
 put docs/starters.md marked-functions "$tmp/marked"
 put docs/architecture.md reading-load "$tmp/load"
-# Every block "output NAME" of the chapters, from a run of its own.
-for doc in docs/*.md README.md milestones/*/README.md; do
+# Every block "output NAME" of the chapters (docs/, the grader's grader/docs/) and READMEs,
+# from a run of its own.
+for doc in docs/*.md grader/docs/*.md README.md milestones/*/README.md; do
+    [ -f "$doc" ] || continue
     # shellcheck disable=SC2013 # a name is one word
     for name in $(sed -n 's/^ *<!-- generated: output \([^ ]*\) -->$/\1/p' "$doc"); do
         output "$name" >"$tmp/output" || exit 1

@@ -45,14 +45,15 @@ command -v timeout >/dev/null 2>&1 && limit="timeout ${RENDER_SECONDS:-120}"
 echo "== images: renders and heat maps go to $out/"
 images=0 images_failed=0
 while read -r image scene options; do
-    # An illustration (!IMAGE, docs/grading.md) is raytra's own picture, not graded.
+    # An illustration (!IMAGE, grader/docs/references.md) is raytra's own picture, not graded.
     case $image in '' | '#'* | '!'*) continue ;; esac
-    # ~IMAGE: a Monte Carlo render, judged against its statistical reference (docs/grading.md).
+    # ~IMAGE: a Monte Carlo render, judged against its statistical reference
+    # (grader/docs/statistics.md).
     ref=$refdir/$image
     case $image in '~'*) image=${image#\~} ref=$refdir/${image%.*}.stats.exr ;; esac
     # IMAGE=OTHER: matches OTHER's reference, and equals this program's own OTHER, an
     # earlier line, pixel for pixel; IMAGE>MASK: drawn wherever the reference MASK is
-    # drawn (docs/grading.md).
+    # drawn (grader/docs/references.md).
     how='' own=''
     case $image in
     *'='*) ref=$refdir/${image#*=} own=$out/${image#*=} image=${image%%=*} ;;

@@ -271,9 +271,9 @@ check:
 	+@$(SUBMAKE) -C compare imgdiff
 	@sh book/starter-check.sh $(PART_DIR) $(PART_PROGRAM) $(PART_DIR)/$(BUILD)/tests $(IMGDIFF) out/check
 
-# Grades the part as the course's grader will (grader/grade --self: docs/grading.md,
-# section 4): a copy built afresh, every graded scene under the same limits, each verdict
-# with its reason; the report in grading-$(STARTER_PART)/, beside this folder.
+# Grades the part as the course's grader will (grader/grade --self: grader/docs/self.md): a
+# copy built afresh, every graded scene under the same limits, each verdict with its
+# reason; the report in grading-$(STARTER_PART)/, beside this folder.
 grade:
 	$(DEPS_STEP)
 	+@$(SUBMAKE) -C grader grade

@@ -96,7 +96,7 @@ if [ -f "$(dirname "$0")/../compare/exr_rgba.c" ] && ! $pkg_config --exists 'Ope
     need "OpenEXR (2 or 3)" libopenexr-dev openexr-devel openexr
 fi
 # The grader runs students' builds and programs in bubblewrap's namespaces (Linux only;
-# without it, grader/grade falls back to walls of its own: docs/grading.md, Containment);
+# without it, grader/grade falls back to walls of its own: grader/docs/containment.md);
 # a starter, which grades with imgdiff alone, needs none.
 if [ "$(uname -s)" = Linux ] && [ -f "$(dirname "$0")/../compare/exr_rgba.c" ] &&
     ! command -v bwrap >/dev/null 2>&1; then

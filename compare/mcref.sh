@@ -5,7 +5,7 @@
 #
 # Renders SCENE COUNT times as PFM (linear, exact), with --seed FIRST_SEED, FIRST_SEED + 1,
 # ..., and the options (the part's --samples P --light-samples S among them), and writes
-# OUT.exr with mcstats: the renders' mean and variance per pixel (docs/grading.md).
+# OUT.exr with mcstats: the renders' mean and variance per pixel (grader/docs/statistics.md).
 case ${1:-} in -h | --help) sed -n '2,/^[^#]/s/^# \{0,1\}//p' "$0"; exit 0 ;; esac
 set -eu
 [ $# -ge 6 ] || { echo "usage: $0 RAYTRA MCSTATS OUT.exr SCENE COUNT FIRST_SEED [options...]" >&2; exit 2; }

@@ -39,9 +39,9 @@ for svg in docs/figures/*.svg; do
     fi
 done
 
-# Every link to a figure, in every chapter and README, names a file that exists.
+# Every link to a figure, in every chapter (docs/, grader/docs/) and README, names a file that exists.
 links=0
-for md in docs/*.md README.md milestones/*/README.md; do
+for md in docs/*.md grader/docs/*.md README.md */README.md milestones/*/README.md; do
     [ -f "$md" ] || continue
     dir=$(dirname "$md")
     for target in $(grep -o '](\([^) ]*figures/[^) ]*\))' "$md" | sed 's/^](//; s/)$//; s/#.*//'); do

@@ -66,7 +66,7 @@ trap 'exit 130' INT TERM
     (cd "$top" && ls scenes/*.scn)
 } | sort -u >"$tmp/renders"
 
-# The brightest scene within the limits (docs/robustness.md): every light as bright as a
+# The brightest scene within the limits (docs/robustness-tests.md): every light as bright as a
 # number may be (colour times intensity at most 1e12), the point lights where 1/r^2 is
 # largest (1e-7 from the point the camera sees, where raytra clamps r^2 to 1e-12), and
 # the path bouncing between two perfect mirrors for as long as --max-depth lets it.

@@ -10,7 +10,7 @@
 # An IMAGE written !IMAGE is an illustration, which grader/grade does not grade; it is a
 # reference all the same. An IMAGE written ~IMAGE is a Monte Carlo render graded by
 # statistics: beside IMAGE (raytra's render with its default seed), REFDIR holds
-# NAME.stats.exr, its statistical reference (docs/grading.md), made from MCREF_RENDERS
+# NAME.stats.exr, its statistical reference (grader/docs/statistics.md), made from MCREF_RENDERS
 # (default 64) renders with seeds 1000, 1001, ...
 # IMAGE=OTHER (graded against the program's own OTHER) has OTHER's reference, which
 # update leaves as it is; IMAGE>MASK (graded by coverage of MASK) has IMAGE's own.

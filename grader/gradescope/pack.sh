@@ -11,8 +11,9 @@
 # the grader compiles in to know each part's arguments; no part's other sources, so that
 # no model answer lies where a student's program could read it. At the root: setup.sh,
 # run_autograder and gradescope.conf (the part, and the time budget: BUDGET seconds for
-# the whole grading, default 540, and BUILD_TIME_LIMIT, default 120). docs/grading.md,
-# section 7, says how to upload it. The zip is written to a temporary and renamed.
+# the whole grading, default 540, and BUILD_TIME_LIMIT, default 120).
+# grader/docs/gradescope.md says how to upload it. The zip is written to a temporary and
+# renamed.
 #
 # The instructor's controls: the part's references/grading.conf (or GRADING_CONF=FILE), its
 # points and visibilities, goes in as the part's; the hidden scenes of its `hidden` line
@@ -119,7 +120,7 @@ echo "gradescope: wrote $zip ($(wc -l <"$stage/files") files of raytra, part $pa
 [ "$hidden_count" -eq 0 ] ||
     echo "gradescope: with $hidden_count hidden scenes of $hidden, rendered by the model answer"
 cat <<EOF
-Next steps (docs/grading.md, section 7):
+Next steps (grader/docs/gradescope.md):
   1. On Gradescope, create a Programming Assignment; in Configure Autograder choose the
      base image Ubuntu 22.04 (or later) and upload $zip.
   2. Gradescope runs setup.sh as it builds the image; then Test Autograder with a

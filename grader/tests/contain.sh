@@ -17,7 +17,7 @@
 #      only root may read, or a FIFO, where the grader's log would be, and one whose
 #      grader is killed from outside after 2 s;
 #   4. one submission (or two) for each way a submission once reached past its folder
-#      (docs/grading.md, Containment): a program that pushes a command into the grader's
+#      (grader/docs/containment.md): a program that pushes a command into the grader's
 #      terminal (TIOCSTI), one that keeps stopping every process of its user (SIGSTOP), a
 #      classmate's build that puts folders at another's image paths, a program that copies
 #      a classmate's images, one that fills the disk, one that leaves System V shared
@@ -374,7 +374,7 @@ parts() {
         wait "$busy" 2>/dev/null
         mkdir "$tmp/$mode/out2" && chown "$graderuid:$graderuid" "$tmp/$mode/out2" || exit 2
         # The fork loop alone: in the fallback, a process left behind lives until the sweep,
-        # which a fork loop graded beside it slows (docs/grading.md, Containment).
+        # which a fork loop graded beside it slows (grader/docs/containment.md).
         if [ ! -d "$tmp/both" ]; then
             mkdir "$tmp/both" "$tmp/loop" && cp -R "$tmp/class/." "$tmp/killers/." "$tmp/both/" &&
                 mv "$tmp/both/forkloop" "$tmp/loop/" && chmod -R a+rX "$tmp/both" "$tmp/loop" ||

@@ -44,7 +44,7 @@ copy_references() {
 # Makes submission $1 a program: make copies the shell script read from stdin to raytra.
 # The submission carries the program $2 (default: part 1.1's raytra) and moved.scn, which
 # the script runs as $model and reads as $moved: a student's program sees nothing outside
-# its folder but the toolchain and its scene (the sandbox, docs/grading.md, Containment).
+# its folder but the toolchain and its scene (the sandbox, grader/docs/containment.md).
 script_submission() {
     mkdir -p "class/$1"
     cat >"class/$1/raytra.sh"

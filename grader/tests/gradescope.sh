@@ -369,7 +369,7 @@ else
 fi
 rm -f "$root/submission_metadata.json"
 # The hidden scenes: the grader copies them where the program reads them, and without the
-# grader's sandbox (docs/grading.md, section 3) make can read them too.
+# grader's sandbox (grader/docs/containment.md) make can read them too.
 if grep -q '^s 3 22 -10   9$' "$tmp/hidden/own-shadow.scn" &&
     jq -r .output "$root/results/results.json" | grep -q '^s 3 22 -10   9$'; then
     echo "gradescope.sh: note: the build read a hidden scene, which results.json shows (no sandbox)"

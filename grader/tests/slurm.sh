@@ -11,7 +11,7 @@
 # folder, on ports no one listens on, and stopped by their PIDs at the end, on failure or
 # interrupt too. The class is graded in 3 shards, and the report compared with a local run's
 # (grader/tests/same-grades.sh); then again with a shard that fails: the merge must refuse, and the
-# shard graded again and merged by hand, as docs/grading.md says, must give the report.
+# shard graded again and merged by hand, as grader/docs/at-scale.md says, must give the report.
 # Skips the cluster, saying so (exit 0), when not root or when the packages cannot be had.
 set -u
 [ $# -eq 1 ] || { echo "usage: $0 RAYTRA" >&2; exit 2; }

@@ -1,5 +1,6 @@
 #!/bin/sh
-# figure.sh: draws the figures of docs/grading.md's and chapter 1.6's section on grading by statistics.
+# figure.sh: draws the figures of grader/docs/statistics.md and of chapter 1.6's section on
+# grading by statistics.
 #
 # Usage: tests/mc-variants/figure.sh RAYTRA VARIANTS IMGDIFF REFDIR OUTDIR
 #

@@ -12,7 +12,7 @@
 # noise), noise (noisier than the "good" standard allows), or smooth (too little noise).
 # Then the reference's mean written as a PNG, and IMGDIFF on raytra's own reference
 # images: each must pass its statistical reference. Writes the table of verdicts, in
-# Markdown, to TABLE when given (docs/grading.md shows it).
+# Markdown, to TABLE when given (grader/docs/statistics.md shows it).
 # Exit status 0 when everything is as expected, 1 otherwise.
 set -u
 [ $# -ge 4 ] || { echo "usage: $0 RAYTRA VARIANTS IMGDIFF REFDIR [TABLE]" >&2; exit 2; }
@@ -26,7 +26,7 @@ trap 'exit 130' INT TERM
 # solution), or fail by a test (biased: bias or exact; tests joined by +: any of them)
 # where it fails, on one scene at least; untold: a mistake one image cannot tell, shown
 # for what it is judged. A mistake that one image cannot show passes some scenes
-# (docs/grading.md).
+# (grader/docs/statistics.md).
 expectations="rv-first:good:pass own-rng:good:pass xorshift:good:pass drand48:good:pass
 transposed:good:pass shift:good:pass random-light:ok:pass random-light:good:noise
 no-cosine:good:biased one-over-s:good:biased flipped:good:biased half-pixel:good:biased
