@@ -8,6 +8,7 @@
 #include <unistd.h>
 
 #include "explain.h"
+#include "hint.h"
 #include "image.h"
 #include "outfile.h"
 #include "stop.h"
@@ -157,6 +158,8 @@ static bool check_scene(const Program *program, const Options *opts)
            COUNT(scene.material_count), convention_name(scene.convention));
 #undef COUNT
     note_ignored(program, &scene);
+    if (opts->view == NULL)
+        hint_scene(&scene, program->features, program->cli.part, stderr);
     scene_free(&scene);
     return true;
 }
@@ -419,6 +422,8 @@ int app_main(const Program *program, int argc, char **argv)
         !apply_scale(&scene, &opts))
         goto done;
     note_ignored(program, &scene);
+    if (opts.view == NULL)
+        hint_scene(&scene, program->features, program->cli.part, stderr);
     int trace_x = 0, trace_y = 0, trace_sample = -1;
     Explain explain = {stdout, &scene};
     /* The pixel's samples, where the part samples pixels: the one place this reads them. */
@@ -457,6 +462,8 @@ int app_main(const Program *program, int argc, char **argv)
         /* Under --strict a non-finite pixel fails the run, but the image is still written
          * so that its magenta pixels show where the bug is. */
         status = opts.strict && result.nonfinite > 0 ? EXIT_FAILURE : EXIT_SUCCESS;
+        if (opts.view == NULL)
+            hint_image(&scene, program->features, &img, stderr);
         if (!opts.quiet) {
             print_summary(output, &img, &opts, &result);
             if (program->report != NULL)

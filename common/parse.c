@@ -712,9 +712,11 @@ static void finish(Parser *p, const SceneLoadOptions *opts)
 }
 
 /* Says once when the scene's point or area lights are far too bright for its convention:
- * the fall2016 scenes' lights are in the thousands, made for 1/r^2 falloff, and without
- * it (the lecture convention) they wash the image out to white. A light of 100 or more,
- * two orders of magnitude above the lecture's lights near 1, is taken for one of them. */
+ * the fall2016 scenes' lights are in the thousands, made for 1/r^2 falloff, and their planes
+ * are p.N = d. Under the lecture's convention the lit parts wash out to white, and a plane
+ * stands on the other side of the origin, where it may hide the light: large parts black.
+ * A light of 100 or more, two orders of magnitude above the lecture's lights near 1, is
+ * taken for one of them. */
 static void note_convention(const Scene *s, FILE *messages)
 {
     const Light *brightest = NULL;
@@ -730,10 +732,11 @@ static void note_convention(const Scene *s, FILE *messages)
     /* Formatted by error_set, which makes a file name safe to print, as diagnostics are. */
     Error note;
     error_set(&note,
-              "raytra: note: %s:%d: a light of %g without falloff (the lecture convention) "
-              "washes the image out to white; lights this bright are made for the fall2016 "
-              "convention, which dims them by 1/r^2: run with --convention fall2016 or add the "
-              "line 'o convention fall2016' (docs/scene-format.md)",
+              "raytra: note: %s:%d: a light of %g is made for the fall2016 convention, which "
+              "dims lights by 1/r^2 and reads planes as p.N = d; under the lecture convention "
+              "the lit parts wash out to white and planes may stand where they hide the light: "
+              "run with --convention fall2016 or add the line 'o convention fall2016' "
+              "(docs/scene-format.md)",
               s->path, brightest->line, most);
     fprintf(messages, "%s\n", note.text);
 }

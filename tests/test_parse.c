@@ -723,11 +723,11 @@ START_TEST(lights_that_do_not_fit_the_convention_are_noted)
     Loaded l = load(bright);
     ck_assert_msg(l.ok, "%s", l.messages);
     ck_assert_str_eq(l.messages,
-                     "raytra: note: t.scn:2: a light of 8000 without falloff (the lecture "
-                     "convention) washes the image out to white; lights this bright are made "
-                     "for the fall2016 convention, which dims them by 1/r^2: run with "
-                     "--convention fall2016 or add the line 'o convention fall2016' "
-                     "(docs/scene-format.md)\n");
+                     "raytra: note: t.scn:2: a light of 8000 is made for the fall2016 "
+                     "convention, which dims lights by 1/r^2 and reads planes as p.N = d; under "
+                     "the lecture convention the lit parts wash out to white and planes may "
+                     "stand where they hide the light: run with --convention fall2016 or add "
+                     "the line 'o convention fall2016' (docs/scene-format.md)\n");
     done(&l);
     /* An area light alone, its intensity given as i: the same. */
     l = load(CAMERA "l s 0 9 0  0 -1 0  1 0 0  2  1 1 1 6000\n");
