@@ -141,7 +141,7 @@ static bool set_option(void *state, int k, const char *value)
         return true;
     }
     if (k == OPT_STANDARD) {
-        if (statdiff_standard_from_name(value, &o->standard))
+        if (statstandard_from_name(value, &o->standard))
             return true;
         fprintf(stderr, "imgdiff: --standard takes good or ok, got '%s'\n", value);
         return false;
