@@ -121,3 +121,10 @@ bool imgfile_header(const char *path, ImgFileKind *kind, int *width, int *height
     *height = (int)ht;
     return true;
 }
+
+/* Returns the encoding that writes an image read from a file of kind `kind` back to a PNG as
+ * it looks: a PNG's values as they were read, linear ones as raytra encodes its PNGs. */
+PngEncoding imgfile_encoding(ImgFileKind kind)
+{
+    return kind == IMGFILE_PNG ? PNG_ENCODING_LINEAR : PNG_ENCODING_SRGB;
+}

@@ -7,6 +7,7 @@
 #include <sys/stat.h>
 
 #include "diag.h"
+#include "image.h"
 
 /* The image formats imgdiff and the grader tell apart. */
 typedef enum { IMGFILE_UNKNOWN, IMGFILE_PNG, IMGFILE_PFM, IMGFILE_EXR } ImgFileKind;
@@ -14,5 +15,6 @@ typedef enum { IMGFILE_UNKNOWN, IMGFILE_PNG, IMGFILE_PFM, IMGFILE_EXR } ImgFileK
 const char *imgfile_kind_text(mode_t mode);
 FILE *imgfile_fopen(const char *path);
 bool imgfile_header(const char *path, ImgFileKind *kind, int *width, int *height, Error *err);
+PngEncoding imgfile_encoding(ImgFileKind kind);
 
 #endif

@@ -8,28 +8,7 @@
 #include "image.h"
 #include "imgfile.h"
 #include "mcref.h"
-
-/* The side of the square blocks of pixels the bias test compares. */
-#define STATDIFF_BLOCK 8
-/* The family-wise error rate of the bias test, and the error rate of the exact test of the
- * pixels the references saw without noise: together the chance that a correct render of
- * one scene fails (docs/grading.md measures it). */
-#define STATDIFF_ALPHA 0.0001
-#define STATDIFF_ALPHA_EXACT 0.00001
-/* The noise test: the RMS of the residual over the expected one, over the image's noisy
- * squares of 16 x 16 pixels, at least STATDIFF_NOISE_LOW (less: fewer samples than the
- * noise says, such as more samples than asked, a denoiser or the mean image), and at
- * most the standard's bound over the image and in any one square (calibrated,
- * docs/grading.md). */
-#define STATDIFF_NOISE_LOW 0.75
-#define STATDIFF_GOOD_IMAGE 1.6
-#define STATDIFF_GOOD_BLOCK 3.5
-#define STATDIFF_OK_IMAGE 3.0
-#define STATDIFF_OK_BLOCK 6.0
-
-/* The course's two standards of a soft shadow: "good", stratified or correlated light
- * samples (raytra's); "ok", random points on the light. */
-typedef enum { STATDIFF_GOOD, STATDIFF_OK } StatStandard;
+#include "statstandard.h"
 
 /* What imgdiff asks: the reference and the image, the pictures to draw, how to print. */
 typedef struct {
@@ -52,7 +31,6 @@ typedef struct {
 
 bool statdiff_judge(const McRef *ref, const Image *img, bool codes, StatStandard standard,
                     StatVerdict *out);
-bool statdiff_standard_from_name(const char *name, StatStandard *standard);
 int statdiff_run(const StatDiffRequest *req);
 
 #endif
