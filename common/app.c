@@ -422,7 +422,7 @@ int app_main(const Program *program, int argc, char **argv)
         !apply_scale(&scene, &opts))
         goto done;
     note_ignored(program, &scene);
-    if (opts.view == NULL)
+    if (opts.view == NULL && !tracing)
         hint_scene(&scene, program->features, program->cli.part, stderr);
     int trace_x = 0, trace_y = 0, trace_sample = -1;
     Explain explain = {stdout, &scene};

@@ -36,6 +36,7 @@ void hint_scene(const Scene *scene, unsigned features, const char *part, FILE *o
                  "black%s\n",
             scene->path, part,
             scene_features(scene) & FEATURE_AREA_LIGHTS ? "its area lights come in part 1.6"
+            : features & FEATURE_AREA_LIGHTS            ? "no 'l p', 'l d' or 'l s' line"
                                                         : "no 'l p' or 'l d' line",
             scene_features(scene) & FEATURE_AMBIENT_LIGHT ? " but for the ambient light" : "");
 }

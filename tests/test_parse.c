@@ -731,7 +731,7 @@ START_TEST(lights_that_do_not_fit_the_convention_are_noted)
     done(&l);
     /* An area light alone, its intensity given as i: the same. */
     l = load(CAMERA "l s 0 9 0  0 -1 0  1 0 0  2  1 1 1 6000\n");
-    ck_assert_contains(l.messages, "t.scn:2: a light of 6000 without falloff");
+    ck_assert_contains(l.messages, "t.scn:2: a light of 6000 is made for the fall2016 convention");
     done(&l);
     /* The same lights with falloff, from the file or the command line: nothing to say. */
     l = load(CAMERA "o convention fall2016\nl p 0 10 0  8000 8000 8000\n");
