@@ -188,22 +188,31 @@ typedef struct {
 #define RUN_OWN_MEMORY(limit) (limit)
 #endif
 
-/* grade.c */
+/* The grader's exit statuses: the report written (whatever the verdicts), trouble, a stop. */
+enum { EXIT_REPORTED = 0, EXIT_TROUBLE = 2, EXIT_INTERRUPTED = 130 };
+
+/* grade_base.c */
 void *grade_alloc(size_t size);
 char *grade_format(const char *fmt, ...) DIAG_PRINTF(1, 2);
 bool grade_fail(const char *fmt, ...) DIAG_PRINTF(1, 2);
 char *grade_size_text(long long bytes);
-int grade_kind(const char *path);
-bool grade_make_folder(const char *path);
-const char *grade_fresh_folder(const char *path, FILE *notes);
-char **grade_list_folders(const char *folder, int *count);
-bool grade_prepare_out(Grading *g);
+
+/* grade_path.c */
+int path_kind(const char *path);
+bool path_make_folder(const char *path);
+const char *path_fresh_folder(const char *path, FILE *notes);
+char **path_list_folders(const char *folder, int *count);
+
+/* grade_out.c */
+bool out_prepare(Grading *g);
 
 /* grade_part.c */
+bool part_find_top(Grading *g);
 bool part_find(Grading *g, const char *part);
 bool part_read_renders(Grading *g);
 bool part_read_conf(Grading *g);
 bool part_render_hidden(Grading *g);
+bool part_show_references(Grading *g);
 void part_make_canaries(Grading *g);
 double part_points(const Grading *g, const Submission *s, double *max);
 

@@ -546,7 +546,7 @@ RunEnd contain_wait(int *status)
 void contain_release(const char *folder)
 {
     int count = 0;
-    char **names = slot_count > 0 ? grade_list_folders(folder, &count) : NULL;
+    char **names = slot_count > 0 ? path_list_folders(folder, &count) : NULL;
     for (int k = 0; k < count; k++)
         chmod(grade_format("%s/%s", folder, names[k]), 0711);
     char *chmod[] = {"chmod", "-R", "a+rwX", "--", (char *)folder, NULL};

@@ -197,7 +197,7 @@ int merge_main(int argc, char **argv)
             return 2;
         }
     run_init();
-    ok = grade_prepare_out(&g) && link_work(&g) && report_write(&g) &&
+    ok = out_prepare(&g) && link_work(&g) && report_write(&g) &&
          (g.junit == NULL || export_junit(&g, g.junit));
     return ok ? 0 : 2;
 }

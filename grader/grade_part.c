@@ -13,6 +13,25 @@
 #include "image.h"
 #include "lex.h"
 #include "part_options.h"
+#include "stop.h"
+
+/* Finds the top of the repository, g->top, two folders above the grader's program
+ * (grader/build/grade), and imgdiff in compare/'s folder of the same build; false (reported)
+ * when it is not there. */
+bool part_find_top(Grading *g)
+{
+    char exe[PATH_MAX] = "", real[PATH_MAX];
+    if (realpath("/proc/self/exe", exe) != NULL)
+        *strrchr(exe, '/') = '\0';
+    if (realpath(grade_format("%s/../../milestones", exe), real) == NULL ||
+        path_kind(real) != S_IFDIR)
+        return grade_fail("cannot find the raytra repository: the grader must stay in "
+                          "grader/build/ of its checkout");
+    g->top = grade_format("%.*s", (int)(strrchr(real, '/') - real), real);
+    g->imgdiff = grade_format("%s/compare/%s/imgdiff", g->top, strrchr(exe, '/') + 1);
+    return access(g->imgdiff, X_OK) == 0 ||
+           grade_fail("no imgdiff at %s (make -C compare builds it)", g->imgdiff);
+}
 
 /* Finds the folder of part `part`, g->part, and its references: a path, or the folder of
  * milestones/ named so or whose name starts with "PART-" (the first in the order of their
@@ -21,10 +40,10 @@ bool part_find(Grading *g, const char *part)
 {
     char real[PATH_MAX], *milestones = grade_format("%s/milestones", g->top), *all = "";
     char *found = NULL;
-    if (strchr(part, '/') != NULL && realpath(part, real) != NULL && grade_kind(real) == S_IFDIR)
+    if (strchr(part, '/') != NULL && realpath(part, real) != NULL && path_kind(real) == S_IFDIR)
         found = grade_format("%s", real);
     int count = 0;
-    char **names = grade_list_folders(milestones, &count);
+    char **names = path_list_folders(milestones, &count);
     size_t len = strlen(part);
     for (int k = 0; found == NULL && k < count; k++) {
         if (strncmp(names[k], part, len) == 0 && (names[k][len] == '\0' || names[k][len] == '-'))
@@ -113,7 +132,7 @@ static bool judge_of(Grading *g, Render *r, char how, const char *other, const c
     if (how == '>') {
         r->judge = JUDGE_COVER;
         r->mask = grade_format("%s/%s", g->references, other);
-        return (strchr(other, '/') == NULL && grade_kind(r->mask) == S_IFREG) ||
+        return (strchr(other, '/') == NULL && path_kind(r->mask) == S_IFREG) ||
                grade_fail("%s: no reference image %s for %s to cover", where, r->mask, r->image);
     }
     r->judge = JUDGE_SAME_AS;
@@ -171,7 +190,7 @@ static bool add_render(Grading *g, char **words, int n, const char *where, const
     r->model[1] = scene_path;
     for (int k = 2; k < n; k++)
         r->model[k + 1] = grade_format("%s", words[k]);
-    if (grade_kind(scene_path) != S_IFREG)
+    if (path_kind(scene_path) != S_IFREG)
         return grade_fail("%s: no scene file %s", where, scene_path);
     if (judged != NULL && statistical)
         return grade_fail("%s: a Monte Carlo render (~) is judged by statistics alone", where);
@@ -182,7 +201,7 @@ static bool add_render(Grading *g, char **words, int n, const char *where, const
     r->shipped = r->hidden                    ? NULL
                  : r->judge == JUDGE_SAME_AS ? g->renders[r->same_as].shipped
                                              : grade_format("%s/%s", references, image);
-    return r->hidden || grade_kind(r->reference) == S_IFREG ||
+    return r->hidden || path_kind(r->reference) == S_IFREG ||
            grade_fail("%s: no reference image %s (make references makes it)", where, r->reference);
 }
 
@@ -348,8 +367,8 @@ bool part_read_conf(Grading *g)
     free(line);
     fclose(f);
     if (ok && g->hidden != NULL)
-        ok = (grade_kind(g->hidden) == S_IFDIR || grade_fail("no folder of hidden scenes %s",
-                                                             g->hidden)) &&
+        ok = (path_kind(g->hidden) == S_IFDIR || grade_fail("no folder of hidden scenes %s",
+                                                            g->hidden)) &&
              read_renders(g, grade_format("%s/renders.txt", g->hidden), g->hidden, NULL);
     /* The defaults first: a hidden scene is shown once the due date has passed. */
     for (int k = 0; k < g->render_count; k++)
@@ -412,7 +431,7 @@ bool part_render_hidden(Grading *g)
          * (work/NAME/run) so that its command line does not depend on where work is. */
         r->argv[1] = r->scene[0] == '/' ? r->scene
                                         : grade_format("../../hidden-scenes/%s", r->scene);
-        if (grade_kind(given) == S_IFREG) {
+        if (path_kind(given) == S_IFREG) {
             r->reference = given;
             continue;
         }
@@ -422,7 +441,7 @@ bool part_render_hidden(Grading *g)
         if (!built && !run_program(make, NULL, log, 1800, 0).ok)
             return grade_fail("the model answer of %s does not build, to render the hidden "
                               "scenes (%s says why)", g->part, log);
-        if (!built && !grade_make_folder(grade_format("%s/references/hidden", g->work)))
+        if (!built && !path_make_folder(grade_format("%s/references/hidden", g->work)))
             return false;
         built = true;
         r->reference = grade_format("%s/references/hidden/%s", g->work, r->image);
@@ -433,6 +452,29 @@ bool part_render_hidden(Grading *g)
         if (!run_program(r->model, NULL, log, 1800, 0).ok)
             return grade_fail("the model answer could not render the hidden scene %s (%s says "
                               "why)", r->name, log);
+    }
+    return true;
+}
+
+/* Has imgdiff compare each reference with itself before any work, which checks both the
+ * image and the tolerances and makes the report's thumbnail; false (reported) on trouble. */
+bool part_show_references(Grading *g)
+{
+    for (int k = 0; k < g->render_count; k++) {
+        Render *r = &g->renders[k];
+        char *log = grade_format("%s/references/%s.log", g->work, r->name);
+        r->reference_show = grade_format("%s/references/%s.png", g->work, r->name);
+        /* A Monte Carlo render's statistics judge raytra's own render, which ships beside. */
+        char *image =
+            r->statistical ? grade_format("%s/%s", g->references, r->image) : r->reference;
+        char *argv[] = {g->imgdiff, "-q", "--threshold", (char *)g->threshold, "--allow",
+                        (char *)g->allow, "--standard", (char *)g->standard, "--thumb",
+                        r->reference_show, "--", r->reference, image, NULL};
+        RunResult run = run_program(argv, NULL, log, 600, 0);
+        if (!run.ok) {
+            char *said = run_tail(run.output);
+            return !stop_requested() && grade_fail("%s", said ? said : "imgdiff could not run");
+        }
     }
     return true;
 }

@@ -189,7 +189,7 @@ bool sandbox_over_disk(const View *view)
 static char *real_file(const char *path)
 {
     char real[PATH_MAX];
-    return realpath(path, real) != NULL && grade_kind(real) == S_IFREG
+    return realpath(path, real) != NULL && path_kind(real) == S_IFREG
                ? grade_format("%s", real)
                : NULL;
 }

@@ -409,7 +409,7 @@ bool shard_read(Grading *g, const char *folder)
     char real[PATH_MAX];
     const char *kind;
     Reader r = {.path = grade_format("%s/shard.txt", folder)};
-    if (realpath(folder, real) == NULL || grade_kind(real) != S_IFDIR)
+    if (realpath(folder, real) == NULL || path_kind(real) != S_IFDIR)
         return grade_fail("no shard folder %s", folder);
     if ((r.file = open_regular(r.path, &kind)) == NULL && kind != NULL)
         return grade_fail("%s is not a regular file (%s): not the results of grade --shard",

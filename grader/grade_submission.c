@@ -450,15 +450,15 @@ static void run_scene(const Grading *g, Submission *s, int k)
  * returns NULL, or why they could not be made. */
 static const char *make_work(const Submission *s, FILE *f)
 {
-    const char *trouble = grade_fresh_folder(s->work, f);
+    const char *trouble = path_fresh_folder(s->work, f);
     /* A program is built and run, in folders of its own; a folder of images is read. */
     if (trouble == NULL && s->program && s->link == NULL)
-        trouble = grade_fresh_folder(grade_format("%s/images", s->work), f);
+        trouble = path_fresh_folder(grade_format("%s/images", s->work), f);
     if (trouble == NULL && s->program && s->link == NULL)
-        trouble = grade_fresh_folder(grade_format("%s/run", s->work), f);
+        trouble = path_fresh_folder(grade_format("%s/run", s->work), f);
     /* The build's copy too, so that a student's user (--run-as) may write in all three. */
     if (trouble == NULL && s->program && s->link == NULL)
-        trouble = grade_fresh_folder(grade_format("%s/build", s->work), f);
+        trouble = path_fresh_folder(grade_format("%s/build", s->work), f);
     /* Its users must reach the three: the folder is crossed, not read (whatever the umask). */
     if (trouble == NULL && contain_active() && chmod(s->work, 0711) != 0)
         trouble = grade_format("cannot open %s to the student's user: %s", s->work,
@@ -551,7 +551,7 @@ bool submission_list(Grading *g)
     char *self[] = {basename(realpath(g->submissions, real) != NULL
                                  ? grade_format("%s", real)
                                  : grade_format("%s", g->submissions))};
-    char **names = g->self ? self : grade_list_folders(g->submissions, &count);
+    char **names = g->self ? self : path_list_folders(g->submissions, &count);
     if (names == NULL)
         return grade_fail("cannot read the folder %s: %s", g->submissions, strerror(errno));
     g->subs = grade_alloc((size_t)count * sizeof *g->subs);
@@ -564,8 +564,8 @@ bool submission_list(Grading *g)
             strcmp(grade_format("%s/work", real), g->work) == 0)
             continue;
         /* So is another run's (a lock file and a work folder that grade marked). */
-        if (!g->self && grade_kind(grade_format("%s/.grade-lock", path)) == S_IFREG &&
-            grade_kind(grade_format("%s/work/.made-by-grade", path)) == S_IFREG) {
+        if (!g->self && path_kind(grade_format("%s/.grade-lock", path)) == S_IFREG &&
+            path_kind(grade_format("%s/work/.made-by-grade", path)) == S_IFREG) {
             fprintf(g->progress, "grade: note: %s is an output folder of grade: not graded\n",
                     path);
             continue;
@@ -580,7 +580,7 @@ bool submission_list(Grading *g)
         *s = (Submission){.name = grade_format("%s", names[k]), .path = path, .work = work};
         /* A program holds a Makefile, as make looks for one. */
         for (size_t m = 0; m < sizeof makefiles / sizeof makefiles[0]; m++)
-            s->program |= grade_kind(grade_format("%s/%s", path, makefiles[m])) == S_IFREG;
+            s->program |= path_kind(grade_format("%s/%s", path, makefiles[m])) == S_IFREG;
         /* A folder of the class that is a link (to a classmate's) is not graded as one. */
         ssize_t n = g->self ? -1 : readlink(path, real, sizeof real - 1);
         if (n >= 0)
