@@ -168,7 +168,7 @@ int main(int argc, char **argv)
               part_find_top(&g) && part_find(&g, argv[optind]) && shard_parse(&g) &&
               (path_kind(g.submissions) == S_IFDIR ||
                grade_fail("no folder %s", g.submissions)) &&
-              part_read_renders(&g) && part_read_conf(&g) && out_prepare(&g) &&
+              renders_read(&g) && conf_read(&g) && out_prepare(&g) &&
               part_render_hidden(&g) && part_show_references(&g) &&
               (part_make_canaries(&g), submission_list(&g)) && (shard_select(&g), jobs_grade_all(&g)) &&
               (g.shard_n > 0 ? shard_write(&g) : report_write(&g)) &&

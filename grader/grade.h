@@ -209,12 +209,17 @@ bool out_prepare(Grading *g);
 /* grade_part.c */
 bool part_find_top(Grading *g);
 bool part_find(Grading *g, const char *part);
-bool part_read_renders(Grading *g);
-bool part_read_conf(Grading *g);
 bool part_render_hidden(Grading *g);
 bool part_show_references(Grading *g);
 void part_make_canaries(Grading *g);
 double part_points(const Grading *g, const Submission *s, double *max);
+
+/* grade_renders.c */
+bool renders_read(Grading *g);
+bool renders_read_hidden(Grading *g);
+
+/* grade_conf.c */
+bool conf_read(Grading *g);
 
 /* grade_submission.c */
 bool submission_list(Grading *g);
