@@ -202,6 +202,7 @@ int path_kind(const char *path);
 bool path_make_folder(const char *path);
 const char *path_fresh_folder(const char *path, FILE *notes);
 char **path_list_folders(const char *folder, int *count);
+bool path_same_bytes(const char *a, const char *b);
 
 /* grade_out.c */
 bool out_prepare(Grading *g);
@@ -221,6 +222,17 @@ bool renders_read_hidden(Grading *g);
 /* grade_conf.c */
 bool conf_read(Grading *g);
 
+/* grade_verdict.c */
+void verdict_set(SceneResult *res, Verdict v, const char *fmt, ...) DIAG_PRINTF(3, 4);
+
+/* grade_judge.c */
+char *judge_image_path(const Grading *g, const Submission *s, int k);
+void judge_file(const Grading *g, const Submission *s, int k, const char *path,
+                const char *missing);
+
+/* grade_build.c */
+char *build_submission(const Grading *g, Submission *s);
+
 /* grade_submission.c */
 bool submission_list(Grading *g);
 bool submission_grade(const Grading *g, Submission *s, FILE *f);
@@ -237,6 +249,7 @@ char *run_describe(const RunResult *r);
 char *run_command_line(char *const argv[], const char *dir);
 char *run_quote(const char *word);
 char *run_tail(const char *output);
+char *run_tail_relative(const char *output, const char *work);
 
 /* grade_contain.c */
 bool contain_start(const char *run_as, const char *grader_user, int jobs);

@@ -14,14 +14,6 @@
 /* The largest picture embedded: thumbnails are far smaller; a larger file is a mistake. */
 #define EMBED_MAX_BYTES (8L << 20)
 
-/* Each verdict's name and column; in the order of Verdict. */
-const VerdictInfo verdict_info[VERDICT_COUNT] = {
-    {"PASS", TALLY_PASS},         {"FAIL", TALLY_FAIL},       {"WRONG SIZE", TALLY_FAIL},
-    {"LINK", TALLY_FAIL},         {"UNREADABLE", TALLY_FAIL}, {"MISSING", TALLY_MISSING},
-    {"ERROR", TALLY_ERROR},       {"CRASHED", TALLY_ERROR},   {"TIMEOUT", TALLY_ERROR},
-    {"OUT OF MEMORY", TALLY_ERROR}, {"BUILD FAILED", TALLY_ERROR},
-};
-
 /* The summary's class (and colour) for each tally. */
 static const char *const tally_class[TALLY_COUNT] = {"pass", "fail", "missing", "error"};
 
