@@ -172,8 +172,8 @@ int main(int argc, char **argv)
               part_render_hidden(&g) && part_show_references(&g) &&
               (part_make_canaries(&g), submission_list(&g)) && (shard_select(&g), jobs_grade_all(&g)) &&
               (g.shard_n > 0 ? shard_write(&g) : report_write(&g)) &&
-              (g.junit == NULL || export_junit(&g, g.junit)) &&
-              (g.gradescope == NULL || export_gradescope(&g, g.gradescope));
+              (g.junit == NULL || junit_export(&g, g.junit)) &&
+              (g.gradescope == NULL || gradescope_export(&g, g.gradescope));
     if (stop_requested()) {
         grade_fail(g.shard_n > 0 ? "interrupted: the shard's results (shard.txt) were not "
                                    "written: grade the shard again"
@@ -182,5 +182,5 @@ int main(int argc, char **argv)
     }
     if (!ok)
         return EXIT_TROUBLE;
-    return g.self ? report_print_self(&g) : EXIT_REPORTED;
+    return g.self ? self_print(&g) : EXIT_REPORTED;
 }

@@ -289,14 +289,27 @@ bool shard_read(Grading *g, const char *folder);
 /* grade_merge.c */
 int merge_main(int argc, char **argv);
 
-/* grade_export.c */
-bool export_junit(const Grading *g, const char *path);
-bool export_gradescope(const Grading *g, const char *path);
+/* grade_utf8.c */
+int utf8_read(const char *text, unsigned long *code);
+
+/* grade_feedback.c */
+char *feedback_text(const Grading *g, const Submission *s, int k, bool build);
+
+/* grade_junit.c */
+bool junit_export(const Grading *g, const char *path);
+
+/* grade_gradescope.c */
+bool gradescope_export(const Grading *g, const char *path);
 
 /* grade_report.c */
 char *report_command(const Submission *s, const SceneResult *res);
 bool report_write(const Grading *g);
 bool report_write_whole(const char *path, const Grading *g, void (*write)(FILE *, const Grading *));
-int report_print_self(const Grading *g);
+
+/* grade_csv.c */
+void csv_write(FILE *f, const Grading *g);
+
+/* grade_self.c */
+int self_print(const Grading *g);
 
 #endif

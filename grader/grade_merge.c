@@ -198,6 +198,6 @@ int merge_main(int argc, char **argv)
         }
     run_init();
     ok = out_prepare(&g) && link_work(&g) && report_write(&g) &&
-         (g.junit == NULL || export_junit(&g, g.junit));
+         (g.junit == NULL || junit_export(&g, g.junit));
     return ok ? 0 : 2;
 }
