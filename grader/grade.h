@@ -203,6 +203,7 @@ bool path_make_folder(const char *path);
 const char *path_fresh_folder(const char *path, FILE *notes);
 char **path_list_folders(const char *folder, int *count);
 bool path_same_bytes(const char *a, const char *b);
+FILE *path_open_regular(const char *path, const char **kind);
 
 /* grade_out.c */
 bool out_prepare(Grading *g);
@@ -277,12 +278,37 @@ bool sandbox_over_disk(const View *view);
 /* grade_jobs.c */
 bool jobs_grade_all(Grading *g);
 
+/* grade_results.c */
+/* The first line of a results file, with the version of its format. */
+#define RESULTS_MAGIC "grade-results 4"
+
+/* A results file being read, a line at a time, split into words. */
+typedef struct {
+    FILE *file;
+    const char *path;
+    int line;
+    char *text;
+    size_t size;
+    char *raw; /* the line as it was, before it was split */
+    char *word[64];
+    int count;
+    bool bad; /* a word was not as expected */
+} Reader;
+
+void results_put_text(FILE *f, const char *text);
+void results_put_submission(FILE *f, const Grading *g, const Submission *s);
+bool results_next_line(Reader *r);
+bool results_line_is(const Reader *r, const char *key, int count);
+char *results_get_text(Reader *r, int k);
+char *results_get_word(Reader *r, int k);
+double results_get_number(Reader *r, int k);
+bool results_get_submission(Reader *r, const Grading *g, Submission *s, const char *work,
+                            const char *work_name);
+char *results_read_submission(const Grading *g, Submission *s, const char *path);
+
 /* grade_shard.c */
 bool shard_parse(Grading *g);
 void shard_select(Grading *g);
-void shard_put_text(FILE *f, const char *text);
-void shard_put_submission(FILE *f, const Grading *g, const Submission *s);
-char *shard_read_submission(const Grading *g, Submission *s, const char *path);
 bool shard_write(const Grading *g);
 bool shard_read(Grading *g, const char *folder);
 

@@ -46,10 +46,10 @@ static void work(Grading *g, int k, int slot)
     char *path = results_path(g, k);
     if (!outfile_open(&out, path, &err))
         _exit(WORKER_TROUBLE);
-    shard_put_submission(out.file, g, &g->subs[k]);
+    results_put_submission(out.file, g, &g->subs[k]);
     fputs("told", out.file);
     /* The worker's told text goes through the same escaping as the results. */
-    shard_put_text(out.file, told);
+    results_put_text(out.file, told);
     fputc('\n', out.file);
     _exit(outfile_commit(&out, &err) ? WORKER_DONE : WORKER_TROUBLE);
 }
@@ -61,7 +61,7 @@ static void collect(Grading *g, int k, int status)
     Submission *s = &g->subs[k];
     char *path = results_path(g, k);
     char *told = WIFEXITED(status) && WEXITSTATUS(status) == WORKER_DONE
-                     ? shard_read_submission(g, s, path)
+                     ? results_read_submission(g, s, path)
                      : NULL;
     unlink(path);
     if (told != NULL) {

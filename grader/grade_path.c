@@ -1,10 +1,12 @@
-/* grade_path.c: the disk as the grader meets it: a path's kind, folders made and listed, files compared. */
+/* grade_path.c: the disk as the grader meets it: a path's kind, folders made and listed, files compared and opened. */
 #include "grade.h"
 
 #include <dirent.h>
 #include <errno.h>
+#include <fcntl.h>
 #include <stdlib.h>
 #include <string.h>
+#include <unistd.h>
 
 #include "imgfile.h"
 
@@ -81,4 +83,29 @@ bool path_same_bytes(const char *a, const char *b)
     if (fb != NULL)
         fclose(fb);
     return same;
+}
+
+/* Opens the file at path to read when it is a regular file, never blocking on a FIFO nor
+ * following a symbolic link; NULL when it cannot, with *kind the file's kind in words when
+ * it is there but not a regular file, else NULL (errno says why). */
+FILE *path_open_regular(const char *path, const char **kind)
+{
+    struct stat st;
+    *kind = NULL;
+    if (lstat(path, &st) == 0 && !S_ISREG(st.st_mode)) {
+        *kind = imgfile_kind_text(st.st_mode);
+        return NULL;
+    }
+    int fd = open(path, O_RDONLY | O_NONBLOCK | O_NOFOLLOW | O_CLOEXEC), flags;
+    bool opened = fd >= 0 && fstat(fd, &st) == 0;
+    FILE *f = NULL;
+    /* Checked again on the descriptor: the path may have changed since lstat. */
+    if (opened && !S_ISREG(st.st_mode))
+        *kind = imgfile_kind_text(st.st_mode);
+    else if (opened && (flags = fcntl(fd, F_GETFL)) >= 0 &&
+             fcntl(fd, F_SETFL, flags & ~O_NONBLOCK) == 0)
+        f = fdopen(fd, "r");
+    if (fd >= 0 && f == NULL)
+        close(fd);
+    return f;
 }
