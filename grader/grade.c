@@ -164,7 +164,7 @@ int main(int argc, char **argv)
     time_t now = time(NULL);
     strftime(g.started, sizeof g.started, "%Y-%m-%d %H:%M", localtime(&now));
     run_init();
-    bool ok = contain_start(g.run_as, g.grader_user, g.jobs) && sandbox_choose(&g) &&
+    bool ok = contain_start(g.run_as, g.grader_user, g.jobs) && containment_choose(&g) &&
               part_find_top(&g) && part_find(&g, argv[optind]) && shard_parse(&g) &&
               (path_kind(g.submissions) == S_IFDIR ||
                grade_fail("no folder %s", g.submissions)) &&

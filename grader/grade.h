@@ -238,42 +238,83 @@ char *build_submission(const Grading *g, Submission *s);
 bool submission_list(Grading *g);
 bool submission_grade(const Grading *g, Submission *s, FILE *f);
 
-/* grade_run.c */
-void run_init(void);
-RunResult run_program(char *const argv[], const char *dir, const char *log, double time_limit,
-                      long long memory_limit);
-RunResult run_student(char *const argv[], const char *dir, const char *log, double time_limit,
-                      long long memory_limit, const View *view);
-void run_child_setup(const char *dir, int out, long long memory_limit, double time_limit,
-                     bool student);
-char *run_describe(const RunResult *r);
-char *run_command_line(char *const argv[], const char *dir);
-char *run_quote(const char *word);
-char *run_tail(const char *output);
-char *run_tail_relative(const char *output, const char *work);
+/* grade_user.c */
+/* A user: its ids. */
+typedef struct {
+    uid_t uid;
+    gid_t gid;
+} User;
+
+/* Seconds the keeper tries to end a student's processes before it calls them unkillable. */
+#define SWEEP_GIVE_UP 30
+
+bool user_find(const char *text, User *u);
+bool user_become(User u);
+int user_processes(uid_t uid, bool end);
+void user_limit_processes(void);
+pid_t user_sweep(User u);
+
+/* grade_reap.c */
+void contain_end_strays(const pid_t *keep, int keep_count);
+
+/* grade_sandbox.c */
+void sandbox_use(char *bwrap_path, bool closes);
+char **sandbox_wrap(char *const argv[], const char *dir, const View *view, bool own_user);
+char **sandbox_scene_files(const char *scene, const char *run_dir, char *also);
+void sandbox_environment(const char *dir);
+bool sandbox_over_disk(const View *view);
+
+/* grade_child.c */
+void child_setup(const char *dir, int out, long long memory_limit, double time_limit,
+                 bool student);
+
+/* grade_keeper.c */
+/* The most students' users, one a job (--jobs takes at most 64). */
+#define MAX_SLOTS 64
+
+/* A request to the keeper, and its answer. */
+enum { ASK_RUN = 1, ASK_KILL = 2, ASK_SHARE = 3 };
+typedef struct {
+    int ask, argc;
+    long long memory_limit;
+    double time_limit;
+    long asker, serial; /* the asking process and its count of runs, which the answer names */
+} Request;
+typedef struct {
+    int how; /* RUN_EXITED: status is a wait status; RUN_NOT_RUN: an errno; else not contained */
+    int status;
+    long asker, serial;
+} Answer;
+
+void keeper_main(const User *users, const int *sockets, int count, User grader_user,
+                 pid_t grader_pid);
 
 /* grade_contain.c */
 bool contain_start(const char *run_as, const char *grader_user, int jobs);
 bool contain_active(void);
+int contain_users(void);
 void contain_use_slot(int k);
 int contain_run(char *const argv[], const char *dir, int out, long long memory_limit,
                 double time_limit);
 void contain_kill(void);
 bool contain_answered(void);
 RunEnd contain_wait(int *status);
-void contain_limit_processes(void);
-void contain_release(const char *folder);
 bool contain_share(const char *path);
 
-/* grade_reap.c */
-void contain_end_strays(const pid_t *keep, int keep_count);
+/* grade_run.c */
+void run_init(void);
+RunResult run_program(char *const argv[], const char *dir, const char *log, double time_limit,
+                      long long memory_limit);
+RunResult run_student(char *const argv[], const char *dir, const char *log, double time_limit,
+                      long long memory_limit, const View *view);
+char *run_describe(const RunResult *r);
+char *run_command_line(char *const argv[], const char *dir);
+char *run_quote(const char *word);
+char *run_tail(const char *output);
+char *run_tail_relative(const char *output, const char *work);
 
-/* grade_sandbox.c */
-bool sandbox_choose(Grading *g);
-char **sandbox_wrap(char *const argv[], const char *dir, const View *view);
-char **sandbox_scene_files(const char *scene, const char *run_dir, char *also);
-void sandbox_environment(const char *dir);
-bool sandbox_over_disk(const View *view);
+/* grade_containment.c */
+bool containment_choose(Grading *g);
 
 /* grade_jobs.c */
 bool jobs_grade_all(Grading *g);

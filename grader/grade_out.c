@@ -65,6 +65,23 @@ static bool lock_out(const Grading *g, const char *out)
                : grade_fail("cannot lock %s: %s", path, strerror(err));
 }
 
+/* Has each student's user make what it left in folder (a work folder of an earlier run)
+ * writable by all, for the grader to remove it, the submissions' folders, closed once
+ * graded, opened to them first; nothing without --run-as. */
+static void release_work(const char *folder)
+{
+    int count = 0, users = contain_users();
+    char **names = users > 0 ? path_list_folders(folder, &count) : NULL;
+    for (int k = 0; k < count; k++)
+        chmod(grade_format("%s/%s", folder, names[k]), 0711);
+    char *chmod[] = {"chmod", "-R", "a+rwX", "--", (char *)folder, NULL};
+    for (int k = 0; k < users; k++) {
+        contain_use_slot(k);
+        run_student(chmod, NULL, NULL, 600, 0, &(View){{folder, NULL}, NULL, 0});
+    }
+    contain_use_slot(0);
+}
+
 /* Makes OUT (grading-PART by default), when it may serve, and locks it; makes OUT/work anew,
  * an absolute path as students' programs run elsewhere, removing only a work folder that an
  * earlier run marked. */
@@ -96,7 +113,7 @@ bool out_prepare(Grading *g)
     /* chmod first: a student's build may have left folders read-only; with --run-as, its
      * users make their files in the work folder the grader's to remove. */
     if (lstat(g->work, &st) == 0)
-        contain_release(g->work);
+        release_work(g->work);
     char *anew[] = {"sh", "-c",
                     "chmod -R u+rwX -- \"$1\"; rm -rf -- \"$1\" && mkdir -- \"$1\" "
                     "\"$1/references\" \"$1/canaries\" && chmod 700 -- \"$1/references\" && echo \"grade's work folder: each run of grade with this "
