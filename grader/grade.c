@@ -1,12 +1,29 @@
 /* grade.c: grades a class's submissions for one part of the course against its reference images. */
-#include "grade.h"
-
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/stat.h>
 #include <time.h>
 #include <unistd.h>
 
+#include "grade_base.h"
+#include "grade_conf.h"
+#include "grade_contain.h"
+#include "grade_containment.h"
+#include "grade_gradescope.h"
+#include "grade_jobs.h"
+#include "grade_junit.h"
+#include "grade_merge.h"
+#include "grade_out.h"
+#include "grade_part.h"
+#include "grade_path.h"
+#include "grade_renders.h"
+#include "grade_report.h"
+#include "grade_run.h"
+#include "grade_self.h"
+#include "grade_shard.h"
+#include "grade_submission.h"
+#include "grading.h"
 #include "imgdiff.h"
 #include "progress.h"
 #include "stop.h"

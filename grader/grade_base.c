@@ -1,5 +1,5 @@
 /* grade_base.c: the grader's messages of failure, and the memory and strings it keeps until it exits. */
-#include "grade.h"
+#include "grade_base.h"
 
 #include <stdarg.h>
 #include <stdlib.h>

@@ -1,10 +1,16 @@
 /* grade_build.c: a program handed in, copied, cleared of the build outputs it carries, given canaries and made. */
-#include "grade.h"
+#include "grade_build.h"
 
 #include <ftw.h>
 #include <limits.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/stat.h>
+
+#include "grade_base.h"
+#include "grade_path.h"
+#include "grade_run.h"
+#include "grade_sandbox.h"
 
 /* Removes, in the folder it runs in, the build outputs a submission may carry from
  * another machine, which make would take as up to date: folders of builds (pruned,

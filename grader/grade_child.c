@@ -1,5 +1,5 @@
 /* grade_child.c: a new child made ready to exec: a session, signals, descriptors, environment, limits, folder. */
-#include "grade.h"
+#include "grade_child.h"
 
 #include <dirent.h>
 #include <errno.h>
@@ -8,9 +8,15 @@
 #include <stdlib.h>
 #include <string.h>
 #include <sys/resource.h>
+#include <sys/stat.h>
 #include <unistd.h>
 #ifdef __linux__
 #include <sys/prctl.h>
+
+#include "grade_base.h"
+#include "grade_sandbox.h"
+#include "grade_user.h"
+#include "grading.h"
 #endif
 
 /* The largest file a child may write: an image, or whatever else it writes in its folder. */

@@ -1,11 +1,15 @@
 /* grade_conf.c: grading.conf read: the part's points, its hidden scenes, each scene's points and visibility. */
-#include "grade.h"
+#include "grade_conf.h"
 
 #include <errno.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/stat.h>
 
 #include "array.h"
+#include "grade_base.h"
+#include "grade_path.h"
+#include "grade_renders.h"
 #include "lex.h"
 
 /* Returns the path p of a grading.conf line, from the folder `dir` of the file: as it is

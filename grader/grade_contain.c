@@ -1,5 +1,5 @@
-/* grade_contain.c: students' runs as users of their own (--run-as), the grader's side: it asks the keeper and waits. */
-#include "grade.h"
+/* grade_contain.c: students' runs as users of their own (--run-as), the grader's side, which asks the keeper. */
+#include "grade_contain.h"
 
 #include <errno.h>
 #include <signal.h>
@@ -7,6 +7,10 @@
 #include <sys/prctl.h>
 #include <sys/socket.h>
 #include <unistd.h>
+
+#include "grade_base.h"
+#include "grade_keeper.h"
+#include "grade_user.h"
 
 /* The grader's side: the sockets to the keeper, one a student's user, and which this
  * process uses (a worker its job's); count 0 when programs run as the grader's own user. */

@@ -1,9 +1,14 @@
-/* grade_containment.c: the containment --sandbox asks for, chosen: bubblewrap's namespaces where they work, or the fallback. */
-#include "grade.h"
+/* grade_containment.c: --sandbox's choice: bubblewrap's namespaces where they work here, or the fallback. */
+#include "grade_containment.h"
 
 #include <stdlib.h>
 #include <string.h>
 #include <unistd.h>
+
+#include "grade_base.h"
+#include "grade_contain.h"
+#include "grade_run.h"
+#include "grade_sandbox.h"
 
 /* Returns the path of program `name` on PATH, or NULL. */
 static char *find_on_path(const char *name)

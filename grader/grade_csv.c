@@ -1,7 +1,11 @@
 /* grade_csv.c: grades.csv: a line a submission and scene, with its verdict, figures and points. */
-#include "grade.h"
+#include "grade_csv.h"
 
 #include <string.h>
+
+#include "grade_base.h"
+#include "grade_part.h"
+#include "grade_verdict.h"
 
 /* Returns text as a CSV field: quoted, its quotes doubled (RFC 4180), when it holds a
  * comma, a quote or a line break, or starts or ends with a space; a text that a spreadsheet

@@ -1,8 +1,12 @@
 /* grade_feedback.c: a scene's verdict told to a student, for JUnit and Gradescope: why, its figures, what to do. */
-#include "grade.h"
+#include "grade_feedback.h"
 
 #include <math.h>
 #include <string.h>
+
+#include "grade_base.h"
+#include "grade_run.h"
+#include "grade_verdict.h"
 
 /* Returns imgdiff's figures for a scene, in a sentence, as the report gives them: "" when
  * no comparison was made. */

@@ -1,8 +1,13 @@
 /* grade_gradescope.c: Gradescope's results.json for the one submission of --self: its score, summary and tests. */
-#include "grade.h"
+#include "grade_gradescope.h"
 
 #include <string.h>
 
+#include "grade_base.h"
+#include "grade_feedback.h"
+#include "grade_part.h"
+#include "grade_report.h"
+#include "grade_utf8.h"
 #include "progress.h"
 
 /* Writes text as a JSON string, in quotes: the quote, the backslash and each control

@@ -1,5 +1,5 @@
 /* grade_jobs.c: grading the submissions N at a time, each in a worker process of its own. */
-#include "grade.h"
+#include "grade_jobs.h"
 
 #include <errno.h>
 #include <signal.h>
@@ -11,6 +11,12 @@
 #include <sys/prctl.h>
 #endif
 
+#include "grade_base.h"
+#include "grade_contain.h"
+#include "grade_reap.h"
+#include "grade_results.h"
+#include "grade_submission.h"
+#include "grade_verdict.h"
 #include "outfile.h"
 #include "stop.h"
 

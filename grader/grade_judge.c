@@ -1,9 +1,14 @@
 /* grade_judge.c: an image judged against its reference through imgdiff: its verdict, its reason, its figures. */
-#include "grade.h"
+#include "grade_judge.h"
 
 #include <string.h>
+#include <sys/stat.h>
 #include <unistd.h>
 
+#include "grade_base.h"
+#include "grade_path.h"
+#include "grade_run.h"
+#include "grade_verdict.h"
 #include "image_read.h"
 #include "imgfile.h"
 

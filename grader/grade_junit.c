@@ -1,7 +1,13 @@
 /* grade_junit.c: the verdicts as JUnit XML: a test suite a submission, a test case a scene. */
-#include "grade.h"
+#include "grade_junit.h"
 
 #include <string.h>
+
+#include "grade_base.h"
+#include "grade_feedback.h"
+#include "grade_report.h"
+#include "grade_utf8.h"
+#include "grade_verdict.h"
 
 /* Writes text as XML 1.0 character data: the five specials as entities, a carriage return
  * as a character reference (a parser would make it a line feed), in an attribute's value

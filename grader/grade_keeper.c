@@ -1,6 +1,6 @@
-/* grade_keeper.c: the keeper, root's part with --run-as, which starts each run as a student's user and ends them all. */
+/* grade_keeper.c: root's part with --run-as, the keeper: each run started as a student's user, and ended. */
 #define _GNU_SOURCE /* ppoll */
-#include "grade.h"
+#include "grade_keeper.h"
 
 #include <errno.h>
 #include <fcntl.h>
@@ -10,8 +10,13 @@
 #include <string.h>
 #include <sys/prctl.h>
 #include <sys/socket.h>
+#include <sys/stat.h>
 #include <sys/wait.h>
 #include <unistd.h>
+
+#include "grade_base.h"
+#include "grade_child.h"
+#include "grading.h"
 
 /* What the keeper knows of one student's user: the socket of the grader (or worker) that
  * asks for runs as it, the run going on, and the sweep ending what the run left. */

@@ -1,5 +1,5 @@
 /* grade_merge.c: grade merge: a class's shards checked against one another, made one report. */
-#include "grade.h"
+#include "grade_merge.h"
 
 #include <errno.h>
 #include <fcntl.h>
@@ -10,6 +10,13 @@
 #include <sys/file.h>
 #include <unistd.h>
 
+#include "grade_base.h"
+#include "grade_junit.h"
+#include "grade_out.h"
+#include "grade_report.h"
+#include "grade_run.h"
+#include "grade_shard.h"
+#include "grading.h"
 #include "toolopt.h"
 
 /* What grade merge was asked. */

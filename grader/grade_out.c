@@ -1,5 +1,5 @@
 /* grade_out.c: the output folder (--out), made when it may serve and locked, and its work folder made anew. */
-#include "grade.h"
+#include "grade_out.h"
 
 #include <errno.h>
 #include <fcntl.h>
@@ -7,7 +7,14 @@
 #include <stdlib.h>
 #include <string.h>
 #include <sys/file.h>
+#include <sys/stat.h>
 #include <unistd.h>
+
+#include "grade_base.h"
+#include "grade_contain.h"
+#include "grade_path.h"
+#include "grade_run.h"
+#include "grade_sandbox.h"
 
 /* Returns why the output folder, at `out` (its real path), cannot serve: it is the
  * submissions folder, or inside a submission (which is copied to be built, and would copy

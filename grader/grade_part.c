@@ -1,12 +1,16 @@
 /* grade_part.c: the part's folder found, its references made and shown, their canaries; what a submission scores. */
-#include "grade.h"
+#include "grade_part.h"
 
 #include <limits.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/stat.h>
 #include <time.h>
 #include <unistd.h>
 
+#include "grade_base.h"
+#include "grade_path.h"
+#include "grade_run.h"
 #include "image.h"
 #include "stop.h"
 

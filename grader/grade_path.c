@@ -1,13 +1,15 @@
-/* grade_path.c: the disk as the grader meets it: a path's kind, folders made and listed, files compared and opened. */
-#include "grade.h"
+/* grade_path.c: the disk as the grader meets it: a path's kind, folders, files compared and opened. */
+#include "grade_path.h"
 
 #include <dirent.h>
 #include <errno.h>
 #include <fcntl.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/stat.h>
 #include <unistd.h>
 
+#include "grade_base.h"
 #include "imgfile.h"
 
 /* Returns the kind of the file at path, links followed: S_IFDIR, S_IFREG...; 0 for none. */

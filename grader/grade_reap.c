@@ -1,10 +1,12 @@
 /* grade_reap.c: ending every process a run left below the grader, to which orphans come back (a subreaper). */
 #define _GNU_SOURCE /* usleep */
-#include "grade.h"
+#include "grade_reap.h"
 
 #include <dirent.h>
 #include <errno.h>
 #include <signal.h>
+#include <stdbool.h>
+#include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 #include <sys/wait.h>

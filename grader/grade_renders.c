@@ -1,12 +1,15 @@
 /* grade_renders.c: renders.txt read: each line's image, scene, judgement and a student's command line. */
-#include "grade.h"
+#include "grade_renders.h"
 
 #include <errno.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/stat.h>
 
 #include "array.h"
 #include "cli.h"
+#include "grade_base.h"
+#include "grade_path.h"
 #include "image.h"
 #include "lex.h"
 #include "part_options.h"

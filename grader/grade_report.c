@@ -1,9 +1,15 @@
 /* grade_report.c: the self-contained report.html, and with it grades.csv, each written whole. */
-#include "grade.h"
+#include "grade_report.h"
 
 #include <math.h>
 #include <string.h>
+#include <sys/stat.h>
 
+#include "grade_base.h"
+#include "grade_csv.h"
+#include "grade_part.h"
+#include "grade_run.h"
+#include "grade_verdict.h"
 #include "imgfile.h"
 #include "outfile.h"
 
@@ -104,7 +110,6 @@ static void put_picture(FILE *f, const char *path)
     if (in != NULL)
         fclose(in);
 }
-
 
 /* Writes the page's head, with a style rule a reference picture, each embedded once and
  * shown as a background beside every submission's image; the title block; and the

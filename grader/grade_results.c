@@ -1,8 +1,12 @@
 /* grade_results.c: a submission's results as words of a results file (a shard's, a worker's), written and read. */
-#include "grade.h"
+#include "grade_results.h"
 
 #include <stdlib.h>
 #include <string.h>
+
+#include "grade_base.h"
+#include "grade_path.h"
+#include "grade_verdict.h"
 
 /* Writes a text as one word of a results file: '=' and its bytes, '%' and the bytes up to
  * the space and DEL written %XX; a lone '-' for NULL. */

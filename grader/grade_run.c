@@ -1,5 +1,5 @@
 /* grade_run.c: a child in its own process group, under limits; how it ended, what it printed. */
-#include "grade.h"
+#include "grade_run.h"
 
 #include <ctype.h>
 #include <errno.h>
@@ -8,10 +8,15 @@
 #include <signal.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/stat.h>
 #include <sys/wait.h>
 #include <time.h>
 #include <unistd.h>
 
+#include "grade_base.h"
+#include "grade_child.h"
+#include "grade_contain.h"
+#include "grade_reap.h"
 #include "progress.h"
 #include "stop.h"
 #ifdef __linux__

@@ -1,14 +1,18 @@
 /* grade_sandbox.c: a student's build or run in namespaces of its own (bubblewrap), or the fallback's walls. */
 #define _GNU_SOURCE /* environ */
-#include "grade.h"
+#include "grade_sandbox.h"
 
 #include <errno.h>
 #include <ftw.h>
 #include <limits.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/stat.h>
 #include <sys/statvfs.h>
 #include <unistd.h>
+
+#include "grade_base.h"
+#include "grade_path.h"
 
 /* The containment in force: namespaces (bubblewrap found and working) or the fallback. */
 static bool namespaces;

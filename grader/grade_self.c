@@ -1,8 +1,12 @@
 /* grade_self.c: --self's lines for a student checking their own work, every byte safe for a terminal. */
-#include "grade.h"
+#include "grade_self.h"
 
 #include <string.h>
 #include <unistd.h>
+
+#include "grade_base.h"
+#include "grade_run.h"
+#include "grade_verdict.h"
 
 /* Returns text with every byte a terminal could take for a control written \xNN: C0
  * controls and DEL, C1 controls (U+0080 to U+009F in UTF-8) and bytes of no well-formed

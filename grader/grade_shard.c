@@ -1,11 +1,15 @@
 /* grade_shard.c: a class in slices (--shard K/N): a shard's slice, its shard.txt written and read back for merge. */
-#include "grade.h"
+#include "grade_shard.h"
 
 #include <limits.h>
 #include <stdint.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/stat.h>
 
+#include "grade_base.h"
+#include "grade_path.h"
+#include "grade_results.h"
 #include "outfile.h"
 
 /* Reads --shard K/N into g and checks what goes with it; false (reported) when it cannot. */

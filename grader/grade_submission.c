@@ -1,5 +1,5 @@
-/* grade_submission.c: the class's submissions listed, and each graded: its program built and run, or its images read. */
-#include "grade.h"
+/* grade_submission.c: the class listed; each submission graded: its program built and run, or its images read. */
+#include "grade_submission.h"
 
 #include <ctype.h>
 #include <errno.h>
@@ -9,8 +9,17 @@
 #include <stdlib.h>
 #include <string.h>
 #include <strings.h>
+#include <sys/stat.h>
 #include <unistd.h>
 
+#include "grade_base.h"
+#include "grade_build.h"
+#include "grade_contain.h"
+#include "grade_judge.h"
+#include "grade_path.h"
+#include "grade_run.h"
+#include "grade_sandbox.h"
+#include "grade_verdict.h"
 #include "stop.h"
 
 /* Grades render k of a submission of images: finds the image (judge_image_path) and judges it. */

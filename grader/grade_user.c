@@ -1,6 +1,6 @@
 /* grade_user.c: a student's user of its own (--run-as): found, become, its processes counted, limited and swept. */
 #define _GNU_SOURCE /* setgroups */
-#include "grade.h"
+#include "grade_user.h"
 
 #include <dirent.h>
 #include <fcntl.h>
@@ -14,6 +14,8 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include "grade_base.h"
+#include "grading.h"
 #include "progress.h"
 
 /* The processes a student's user may have at once: make, a compiler's few, a program's; a

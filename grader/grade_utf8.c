@@ -1,5 +1,5 @@
 /* grade_utf8.c: UTF-8 read a character at a time, every byte of no valid character told apart. */
-#include "grade.h"
+#include "grade_utf8.h"
 
 /* Reads the UTF-8 character that starts at s: returns its length in bytes and sets *code,
  * or returns 0 for a byte that starts no valid character (a stray continuation byte, a

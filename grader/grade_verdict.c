@@ -1,5 +1,5 @@
 /* grade_verdict.c: what became of a scene: each verdict's name and column; a verdict set with its reason. */
-#include "grade.h"
+#include "grade_verdict.h"
 
 #include <stdarg.h>
 

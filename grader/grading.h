@@ -1,14 +1,9 @@
-/* grade.h: the grader's one internal header: a class's renders, submissions and verdicts. */
-#ifndef RAYTRA_GRADE_H
-#define RAYTRA_GRADE_H
+/* grading.h: what a grading run knows (renders, submissions, verdicts), and how a child it ran ended. */
+#ifndef RAYTRA_GRADING_H
+#define RAYTRA_GRADING_H
 
 #include <stdbool.h>
-#include <stddef.h>
 #include <stdio.h>
-#include <sys/stat.h>
-#include <sys/types.h>
-
-#include "diag.h"
 
 /* What became of one scene of one submission; docs/grading.md says what each means. */
 typedef enum {
@@ -19,14 +14,6 @@ typedef enum {
 
 /* The summary's columns, into which the verdicts fall. */
 typedef enum { TALLY_PASS, TALLY_FAIL, TALLY_MISSING, TALLY_ERROR, TALLY_COUNT } Tally;
-
-/* A verdict's name in the report and the CSV ("WRONG SIZE"), and its column. */
-typedef struct {
-    const char *name;
-    Tally tally;
-} VerdictInfo;
-
-extern const VerdictInfo verdict_info[VERDICT_COUNT];
 
 /* imgdiff's figures for an image against its reference: its --machine lines. */
 typedef struct {
@@ -168,215 +155,7 @@ typedef struct {
     char *output;
 } RunResult;
 
-/* What a student's build or run may reach in the sandbox (namespaces): the folders it may
- * write, the files and folders it may read, beside the toolchain; and the bytes its folders
- * may hold (0: any), past which it is stopped, with either containment. */
-typedef struct {
-    const char *write[4]; /* NULL-ended */
-    char **read;          /* NULL-ended, or NULL */
-    long long disk_limit;
-} View;
-
 /* The exit status of a child that could not exec its program (as the shell's). */
 #define RUN_EXEC_FAILED 127
-
-/* The memory limit of imgdiff, which reads students' files: none under AddressSanitizer,
- * whose shadow memory no limit leaves room for. */
-#if defined(__SANITIZE_ADDRESS__)
-#define RUN_OWN_MEMORY(limit) ((void)(limit), 0LL)
-#else
-#define RUN_OWN_MEMORY(limit) (limit)
-#endif
-
-/* The grader's exit statuses: the report written (whatever the verdicts), trouble, a stop. */
-enum { EXIT_REPORTED = 0, EXIT_TROUBLE = 2, EXIT_INTERRUPTED = 130 };
-
-/* grade_base.c */
-void *grade_alloc(size_t size);
-char *grade_format(const char *fmt, ...) DIAG_PRINTF(1, 2);
-bool grade_fail(const char *fmt, ...) DIAG_PRINTF(1, 2);
-char *grade_size_text(long long bytes);
-
-/* grade_path.c */
-int path_kind(const char *path);
-bool path_make_folder(const char *path);
-const char *path_fresh_folder(const char *path, FILE *notes);
-char **path_list_folders(const char *folder, int *count);
-bool path_same_bytes(const char *a, const char *b);
-FILE *path_open_regular(const char *path, const char **kind);
-
-/* grade_out.c */
-bool out_prepare(Grading *g);
-
-/* grade_part.c */
-bool part_find_top(Grading *g);
-bool part_find(Grading *g, const char *part);
-bool part_render_hidden(Grading *g);
-bool part_show_references(Grading *g);
-void part_make_canaries(Grading *g);
-double part_points(const Grading *g, const Submission *s, double *max);
-
-/* grade_renders.c */
-bool renders_read(Grading *g);
-bool renders_read_hidden(Grading *g);
-
-/* grade_conf.c */
-bool conf_read(Grading *g);
-
-/* grade_verdict.c */
-void verdict_set(SceneResult *res, Verdict v, const char *fmt, ...) DIAG_PRINTF(3, 4);
-
-/* grade_judge.c */
-char *judge_image_path(const Grading *g, const Submission *s, int k);
-void judge_file(const Grading *g, const Submission *s, int k, const char *path,
-                const char *missing);
-
-/* grade_build.c */
-char *build_submission(const Grading *g, Submission *s);
-
-/* grade_submission.c */
-bool submission_list(Grading *g);
-bool submission_grade(const Grading *g, Submission *s, FILE *f);
-
-/* grade_user.c */
-/* A user: its ids. */
-typedef struct {
-    uid_t uid;
-    gid_t gid;
-} User;
-
-/* Seconds the keeper tries to end a student's processes before it calls them unkillable. */
-#define SWEEP_GIVE_UP 30
-
-bool user_find(const char *text, User *u);
-bool user_become(User u);
-int user_processes(uid_t uid, bool end);
-void user_limit_processes(void);
-pid_t user_sweep(User u);
-
-/* grade_reap.c */
-void contain_end_strays(const pid_t *keep, int keep_count);
-
-/* grade_sandbox.c */
-void sandbox_use(char *bwrap_path, bool closes);
-char **sandbox_wrap(char *const argv[], const char *dir, const View *view, bool own_user);
-char **sandbox_scene_files(const char *scene, const char *run_dir, char *also);
-void sandbox_environment(const char *dir);
-bool sandbox_over_disk(const View *view);
-
-/* grade_child.c */
-void child_setup(const char *dir, int out, long long memory_limit, double time_limit,
-                 bool student);
-
-/* grade_keeper.c */
-/* The most students' users, one a job (--jobs takes at most 64). */
-#define MAX_SLOTS 64
-
-/* A request to the keeper, and its answer. */
-enum { ASK_RUN = 1, ASK_KILL = 2, ASK_SHARE = 3 };
-typedef struct {
-    int ask, argc;
-    long long memory_limit;
-    double time_limit;
-    long asker, serial; /* the asking process and its count of runs, which the answer names */
-} Request;
-typedef struct {
-    int how; /* RUN_EXITED: status is a wait status; RUN_NOT_RUN: an errno; else not contained */
-    int status;
-    long asker, serial;
-} Answer;
-
-void keeper_main(const User *users, const int *sockets, int count, User grader_user,
-                 pid_t grader_pid);
-
-/* grade_contain.c */
-bool contain_start(const char *run_as, const char *grader_user, int jobs);
-bool contain_active(void);
-int contain_users(void);
-void contain_use_slot(int k);
-int contain_run(char *const argv[], const char *dir, int out, long long memory_limit,
-                double time_limit);
-void contain_kill(void);
-bool contain_answered(void);
-RunEnd contain_wait(int *status);
-bool contain_share(const char *path);
-
-/* grade_run.c */
-void run_init(void);
-RunResult run_program(char *const argv[], const char *dir, const char *log, double time_limit,
-                      long long memory_limit);
-RunResult run_student(char *const argv[], const char *dir, const char *log, double time_limit,
-                      long long memory_limit, const View *view);
-char *run_describe(const RunResult *r);
-char *run_command_line(char *const argv[], const char *dir);
-char *run_quote(const char *word);
-char *run_tail(const char *output);
-char *run_tail_relative(const char *output, const char *work);
-
-/* grade_containment.c */
-bool containment_choose(Grading *g);
-
-/* grade_jobs.c */
-bool jobs_grade_all(Grading *g);
-
-/* grade_results.c */
-/* The first line of a results file, with the version of its format. */
-#define RESULTS_MAGIC "grade-results 4"
-
-/* A results file being read, a line at a time, split into words. */
-typedef struct {
-    FILE *file;
-    const char *path;
-    int line;
-    char *text;
-    size_t size;
-    char *raw; /* the line as it was, before it was split */
-    char *word[64];
-    int count;
-    bool bad; /* a word was not as expected */
-} Reader;
-
-void results_put_text(FILE *f, const char *text);
-void results_put_submission(FILE *f, const Grading *g, const Submission *s);
-bool results_next_line(Reader *r);
-bool results_line_is(const Reader *r, const char *key, int count);
-char *results_get_text(Reader *r, int k);
-char *results_get_word(Reader *r, int k);
-double results_get_number(Reader *r, int k);
-bool results_get_submission(Reader *r, const Grading *g, Submission *s, const char *work,
-                            const char *work_name);
-char *results_read_submission(const Grading *g, Submission *s, const char *path);
-
-/* grade_shard.c */
-bool shard_parse(Grading *g);
-void shard_select(Grading *g);
-bool shard_write(const Grading *g);
-bool shard_read(Grading *g, const char *folder);
-
-/* grade_merge.c */
-int merge_main(int argc, char **argv);
-
-/* grade_utf8.c */
-int utf8_read(const char *text, unsigned long *code);
-
-/* grade_feedback.c */
-char *feedback_text(const Grading *g, const Submission *s, int k, bool build);
-
-/* grade_junit.c */
-bool junit_export(const Grading *g, const char *path);
-
-/* grade_gradescope.c */
-bool gradescope_export(const Grading *g, const char *path);
-
-/* grade_report.c */
-char *report_command(const Submission *s, const SceneResult *res);
-bool report_write(const Grading *g);
-bool report_write_whole(const char *path, const Grading *g, void (*write)(FILE *, const Grading *));
-
-/* grade_csv.c */
-void csv_write(FILE *f, const Grading *g);
-
-/* grade_self.c */
-int self_print(const Grading *g);
 
 #endif
