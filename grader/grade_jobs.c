@@ -133,10 +133,10 @@ static bool grade_in_workers(Grading *g)
         running--;
         /* What the worker's programs left (a worker killed by one) came to the grader: it
          * ends now, the other workers and theirs kept. */
-        contain_end_strays(live, g->jobs);
+        reap_strays(live, g->jobs);
         collect(g, k, status);
     }
-    contain_end_strays(NULL, 0);
+    reap_strays(NULL, 0);
     return !stop_requested();
 }
 

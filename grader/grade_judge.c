@@ -185,7 +185,7 @@ static void compare_image(const Grading *g, const Submission *s, int k, const ch
 /* Judges the file at path as the image of render k, with lstat first so that a FIFO or a
  * device is never opened: MISSING (saying `missing`), LINK, UNREADABLE, or compared. */
 void judge_file(const Grading *g, const Submission *s, int k, const char *path,
-                       const char *missing)
+                const char *missing)
 {
     SceneResult *res = &s->results[k];
     struct stat st, ref;

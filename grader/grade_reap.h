@@ -4,6 +4,6 @@
 
 #include <sys/types.h>
 
-void contain_end_strays(const pid_t *keep, int keep_count);
+void reap_strays(const pid_t *keep, int keep_count);
 
 #endif

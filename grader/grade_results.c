@@ -124,7 +124,7 @@ static char *get_path(Reader *r, int k, const char *work)
  * below the work folder `work`, its work folder is named below `work_name`. False (reported)
  * when the file is not as results_put_submission writes it. */
 bool results_get_submission(Reader *r, const Grading *g, Submission *s, const char *work,
-                           const char *work_name)
+                            const char *work_name)
 {
     if (!results_line_is(r, "sub", 8))
         return grade_fail("%s:%d: expected a submission", r->path, r->line);

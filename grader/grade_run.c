@@ -238,7 +238,7 @@ static RunResult run_child(char *const argv[], const char *dir, const char *log,
         kill(pid, SIGKILL);
         while (waitpid(pid, &status, 0) < 0 && errno == EINTR)
             continue;
-        contain_end_strays(NULL, 0);
+        reap_strays(NULL, 0);
     }
     if (r.end == RUN_EXITED && sandbox_over_disk(view))
         r.end = RUN_OVER_DISK;
