@@ -1,24 +1,33 @@
 /* grade.c: grades a class's submissions for one part of the course against its reference images. */
-#include "grade.h"
-
-#include <dirent.h>
-#include <errno.h>
-#include <fcntl.h>
-#include <limits.h>
 #include <math.h>
-#include <stdarg.h>
 #include <stdlib.h>
 #include <string.h>
-#include <sys/file.h>
+#include <sys/stat.h>
 #include <time.h>
 #include <unistd.h>
 
+#include "grade_base.h"
+#include "grade_conf.h"
+#include "grade_contain.h"
+#include "grade_containment.h"
+#include "grade_gradescope.h"
+#include "grade_jobs.h"
+#include "grade_junit.h"
+#include "grade_merge.h"
+#include "grade_out.h"
+#include "grade_part.h"
+#include "grade_path.h"
+#include "grade_renders.h"
+#include "grade_report.h"
+#include "grade_run.h"
+#include "grade_self.h"
+#include "grade_shard.h"
+#include "grade_submission.h"
+#include "grading.h"
 #include "imgdiff.h"
 #include "progress.h"
 #include "stop.h"
 #include "toolopt.h"
-
-enum { EXIT_REPORTED = 0, EXIT_TROUBLE = 2, EXIT_INTERRUPTED = 130 };
 
 /* What an option's value is, and so how it is read. */
 typedef enum { OPT_FLAG, OPT_TEXT, OPT_COUNT, OPT_SECONDS, OPT_BYTES } OptKind;
@@ -103,18 +112,6 @@ static void print_help(void)
            "grading could not be done; 130 when interrupted. See docs/grading.md.\n");
 }
 
-/* Prints "grade: " and a message made as printf makes it; returns false, to end a chain. */
-bool grade_fail(const char *fmt, ...)
-{
-    va_list ap;
-    va_start(ap, fmt);
-    fputs("grade: ", stderr);
-    vfprintf(stderr, fmt, ap);
-    fputc('\n', stderr);
-    va_end(ap);
-    return false;
-}
-
 /* Sets the field of the Grading `state` that option k sets from its value: seconds are a
  * number from 0; a memory limit is bytes, or a number followed by K, M or G (2^10, 2^20,
  * 2^30), 0 or at least 1 MiB (less is surely a slip). False (reported) for a bad value. */
@@ -156,243 +153,6 @@ static bool set_option(void *state, int k, const char *value)
     return true;
 }
 
-/* Returns zeroed memory that lasts until the exit (what the grader gathers serves the
- * report), each block chained to the one before so that all stay reachable; exits on none. */
-void *grade_alloc(size_t size)
-{
-    static void *last;
-    void **block = calloc(1, sizeof(max_align_t) + size);
-    if (block == NULL) {
-        grade_fail("out of memory");
-        exit(EXIT_TROUBLE);
-    }
-    *block = last;
-    last = block;
-    return (char *)block + sizeof(max_align_t);
-}
-
-/* Returns a new string made as printf makes it. */
-char *grade_format(const char *fmt, ...)
-{
-    va_list ap;
-    va_start(ap, fmt);
-    int len = vsnprintf(NULL, 0, fmt, ap);
-    va_end(ap);
-    char *s = grade_alloc((size_t)len + 1);
-    va_start(ap, fmt);
-    vsnprintf(s, (size_t)len + 1, fmt, ap);
-    va_end(ap);
-    return s;
-}
-
-/* Returns a memory limit in words: "2 GiB", "512 MiB", or "none" for 0. */
-char *grade_size_text(long long bytes)
-{
-    return bytes <= 0                  ? "none"
-           : bytes % (1LL << 30) == 0 ? grade_format("%lld GiB", bytes >> 30)
-                                      : grade_format("%lld MiB", bytes >> 20);
-}
-
-/* Returns the kind of the file at path, links followed: S_IFDIR, S_IFREG...; 0 for none. */
-int grade_kind(const char *path)
-{
-    struct stat st;
-    return stat(path, &st) == 0 ? (int)(st.st_mode & S_IFMT) : 0;
-}
-
-/* Makes the folder path, refusing anything already there (a link a student left). */
-bool grade_make_folder(const char *path)
-{
-    return mkdir(path, 0777) == 0 ||
-           grade_fail("cannot make the folder %s: %s", path, strerror(errno));
-}
-
-/* Makes the folder path anew for the grader's work. Anything already there (a folder or a
- * link that a student's program made) is moved aside, renamed, never followed, to a hidden
- * .moved-N-NAME beside it, told on `notes`. Returns NULL, or why the folder was not made. */
-const char *grade_fresh_folder(const char *path, FILE *notes)
-{
-    struct stat st;
-    const char *slash = strrchr(path, '/');
-    for (int n = 1; lstat(path, &st) == 0; n++) {
-        char *aside = grade_format("%.*s/.moved-%d-%s", (int)(slash - path), path, n, slash + 1);
-        if (n > 100)
-            return grade_format("%s is there already and cannot be moved aside", path);
-        if (lstat(aside, &st) == 0 || errno != ENOENT)
-            continue;
-        if (rename(path, aside) != 0)
-            return grade_format("cannot move %s aside: %s", path, strerror(errno));
-        fprintf(notes,
-                "grade: note: %s was there before grade made it (a program of the class made "
-                "it?): moved aside to %s\n",
-                path, aside);
-    }
-    return mkdir(path, 0777) == 0 ? NULL
-                                  : grade_format("cannot make %s: %s", path, strerror(errno));
-}
-
-/* Returns the names of the folders in `folder`, hidden ones left out, in strcmp's order;
- * sets *count. NULL (and errno) when the folder cannot be read. */
-char **grade_list_folders(const char *folder, int *count)
-{
-    struct dirent **entries;
-    int n = scandir(folder, &entries, NULL, alphasort);
-    char **names = n >= 0 ? grade_alloc(((size_t)n + 1) * sizeof *names) : NULL;
-    *count = 0;
-    for (int k = 0; k < n; k++) {
-        const char *name = entries[k]->d_name;
-        if (name[0] != '.' && grade_kind(grade_format("%s/%s", folder, name)) == S_IFDIR)
-            names[(*count)++] = grade_format("%s", name);
-        free(entries[k]);
-    }
-    if (n >= 0)
-        free(entries);
-    return names;
-}
-
-/* Returns why the output folder, at `out` (its real path), cannot serve: it is the
- * submissions folder, or inside a submission (which is copied to be built, and would copy
- * itself), or the submissions are inside its work folder (which is made anew); NULL when it
- * can. A folder of a class that is the output folder is not graded (submission_list). */
-static char *out_refusal(const Grading *g, const char *out)
-{
-    char subs[PATH_MAX];
-    if (realpath(g->submissions, subs) == NULL)
-        return grade_format("cannot find the folder %s: %s", g->submissions, strerror(errno));
-    size_t len = strlen(subs), out_len = strlen(out);
-    const char *rest = strncmp(out, subs, len) == 0 && (out[len] == '/' || len == 1)
-                           ? out + len + (len > 1)
-                           : NULL;
-    char *work = grade_format("%s/work", out);
-    if (strcmp(out, subs) == 0)
-        return grade_format("the output folder %s is the submissions folder: its work folder would "
-                            "be graded as a student's; choose an --out outside it",
-                            g->out);
-    if (rest != NULL && g->shard_n > 0)
-        return grade_format("the output folder %s of a shard is inside the class %s: the "
-                            "other shards would list it as a submission; choose an --out "
-                            "outside it",
-                            g->out, g->submissions);
-    if (rest != NULL && (g->self || strchr(rest, '/') != NULL))
-        return grade_format(
-            "the output folder %s is inside the submission %s, which grade copies "
-            "to build it; choose an --out outside it",
-            g->out, g->self ? g->submissions : grade_format("%.*s", (int)strcspn(rest, "/"), rest));
-    if (strncmp(subs, work, out_len + 5) == 0 &&
-        (subs[out_len + 5] == '/' || subs[out_len + 5] == 0))
-        return grade_format("the submissions folder %s is within %s, which grade makes anew; "
-                            "choose another --out",
-                            g->submissions, work);
-    return NULL;
-}
-
-/* Locks the output folder for this run: an exclusive flock on OUT/.grade-lock, held until
- * the grader exits (its descriptor stays open, closed in every child), so that a second run
- * on the same --out refuses rather than mixing its work with this one's; false (reported). */
-static bool lock_out(const Grading *g, const char *out)
-{
-    char *path = grade_format("%s/.grade-lock", out);
-    int fd = open(path, O_RDWR | O_CREAT | O_NOFOLLOW | O_NONBLOCK | O_CLOEXEC, 0666);
-    if (fd < 0)
-        return grade_fail("cannot open the lock file %s: %s", path, strerror(errno));
-    if (flock(fd, LOCK_EX | LOCK_NB) == 0)
-        return true;
-    int err = errno;
-    close(fd);
-    return err == EWOULDBLOCK
-               ? grade_fail("%s is in use: another grade is writing into it (it holds %s); wait "
-                            "for it to end, or choose another --out",
-                            g->out, path)
-               : grade_fail("cannot lock %s: %s", path, strerror(err));
-}
-
-/* Makes OUT (grading-PART by default), when it may serve, and locks it; makes OUT/work anew,
- * an absolute path as students' programs run elsewhere, removing only a work folder that an
- * earlier run marked. */
-bool grade_prepare_out(Grading *g)
-{
-    char real[PATH_MAX];
-    struct stat st;
-    g->out = g->out != NULL ? g->out : grade_format("grading-%s", g->part);
-    bool made = grade_kind(g->out) != S_IFDIR;
-    if ((made && !grade_make_folder(g->out)) || realpath(g->out, real) == NULL)
-        return false;
-    char *refusal = g->merging ? NULL : out_refusal(g, real);
-    if (refusal != NULL) {
-        if (made)
-            rmdir(g->out);
-        return grade_fail("%s", refusal);
-    }
-    g->work = grade_format("%s/work", real);
-    if (!lock_out(g, real))
-        return false;
-    /* A shard's results go before its work does: they would name pictures no longer there. */
-    if (g->shard_n > 0 && unlink(grade_format("%s/shard.txt", real)) != 0 && errno != ENOENT)
-        return grade_fail("cannot remove the shard's old results in %s: %s", g->out,
-                          strerror(errno));
-    /* lstat: a link at the work folder's path is not a work folder grade made. */
-    if (lstat(g->work, &st) == 0 &&
-        (!S_ISDIR(st.st_mode) || grade_kind(grade_format("%s/.made-by-grade", g->work)) == 0))
-        return grade_fail("%s exists and was not made by grade: choose another --out", g->work);
-    /* chmod first: a student's build may have left folders read-only; with --run-as, its
-     * users make their files in the work folder the grader's to remove. */
-    if (lstat(g->work, &st) == 0)
-        contain_release(g->work);
-    char *anew[] = {"sh", "-c",
-                    "chmod -R u+rwX -- \"$1\"; rm -rf -- \"$1\" && mkdir -- \"$1\" "
-                    "\"$1/references\" \"$1/canaries\" && chmod 700 -- \"$1/references\" && echo \"grade's work folder: each run of grade with this "
-                    "--out removes it and makes it anew.\" >\"$1/.made-by-grade\"",
-                    "sh", g->work, NULL};
-    if (!run_program(anew, NULL, NULL, 600, 0).ok)
-        return grade_fail("cannot make the work folder %s anew", g->work);
-    /* With --run-as, the students' users cross both to their folders, whatever the umask. */
-    return !contain_active() ||
-           ((stat(real, &st) == 0 && chmod(real, (st.st_mode & 07777) | 0111) == 0 &&
-             chmod(g->work, 0711) == 0) ||
-            grade_fail("cannot let the students' users cross %s: %s", real, strerror(errno)));
-}
-
-/* Has imgdiff compare each reference with itself before any work, which checks both the
- * image and the tolerances and makes the report's thumbnail; false (reported) on trouble. */
-static bool show_references(Grading *g)
-{
-    for (int k = 0; k < g->render_count; k++) {
-        Render *r = &g->renders[k];
-        char *log = grade_format("%s/references/%s.log", g->work, r->name);
-        r->reference_show = grade_format("%s/references/%s.png", g->work, r->name);
-        /* A Monte Carlo render's statistics judge raytra's own render, which ships beside. */
-        char *image =
-            r->statistical ? grade_format("%s/%s", g->references, r->image) : r->reference;
-        char *argv[] = {g->imgdiff, "-q", "--threshold", (char *)g->threshold, "--allow",
-                        (char *)g->allow, "--standard", (char *)g->standard, "--thumb",
-                        r->reference_show, "--", r->reference, image, NULL};
-        RunResult run = run_program(argv, NULL, log, 600, 0);
-        if (!run.ok) {
-            char *said = run_tail(run.output);
-            return !stop_requested() && grade_fail("%s", said ? said : "imgdiff could not run");
-        }
-    }
-    return true;
-}
-
-/* Finds the top of the repository, g->top, two folders above the grader's program
- * (grader/build/grade), and imgdiff in compare/'s folder of the same build; false (reported)
- * when it is not there. */
-static bool find_top(Grading *g)
-{
-    char exe[PATH_MAX] = "", real[PATH_MAX];
-    if (realpath("/proc/self/exe", exe) != NULL)
-        *strrchr(exe, '/') = '\0';
-    if (realpath(grade_format("%s/../../milestones", exe), real) == NULL ||
-        grade_kind(real) != S_IFDIR)
-        return grade_fail("cannot find the raytra repository: the grader must stay in "
-                          "grader/build/ of its checkout");
-    g->top = grade_format("%.*s", (int)(strrchr(real, '/') - real), real);
-    g->imgdiff = grade_format("%s/compare/%s/imgdiff", g->top, strrchr(exe, '/') + 1);
-    return access(g->imgdiff, X_OK) == 0 ||
-           grade_fail("no imgdiff at %s (make -C compare builds it)", g->imgdiff);
-}
-
 /* Runs the grader: exit status 0 when the report was written (with --self, 1 when a scene
  * did not pass), 2 when it could not be, 130 when interrupted. */
 int main(int argc, char **argv)
@@ -421,16 +181,16 @@ int main(int argc, char **argv)
     time_t now = time(NULL);
     strftime(g.started, sizeof g.started, "%Y-%m-%d %H:%M", localtime(&now));
     run_init();
-    bool ok = contain_start(g.run_as, g.grader_user, g.jobs) && sandbox_choose(&g) &&
-              find_top(&g) && part_find(&g, argv[optind]) && shard_parse(&g) &&
-              (grade_kind(g.submissions) == S_IFDIR ||
+    bool ok = contain_start(g.run_as, g.grader_user, g.jobs) && containment_choose(&g) &&
+              part_find_top(&g) && part_find(&g, argv[optind]) && shard_parse(&g) &&
+              (path_kind(g.submissions) == S_IFDIR ||
                grade_fail("no folder %s", g.submissions)) &&
-              part_read_renders(&g) && part_read_conf(&g) && grade_prepare_out(&g) &&
-              part_render_hidden(&g) && show_references(&g) &&
+              renders_read(&g) && conf_read(&g) && out_prepare(&g) &&
+              part_render_hidden(&g) && part_show_references(&g) &&
               (part_make_canaries(&g), submission_list(&g)) && (shard_select(&g), jobs_grade_all(&g)) &&
               (g.shard_n > 0 ? shard_write(&g) : report_write(&g)) &&
-              (g.junit == NULL || export_junit(&g, g.junit)) &&
-              (g.gradescope == NULL || export_gradescope(&g, g.gradescope));
+              (g.junit == NULL || junit_export(&g, g.junit)) &&
+              (g.gradescope == NULL || gradescope_export(&g, g.gradescope));
     if (stop_requested()) {
         grade_fail(g.shard_n > 0 ? "interrupted: the shard's results (shard.txt) were not "
                                    "written: grade the shard again"
@@ -439,5 +199,5 @@ int main(int argc, char **argv)
     }
     if (!ok)
         return EXIT_TROUBLE;
-    return g.self ? report_print_self(&g) : EXIT_REPORTED;
+    return g.self ? self_print(&g) : EXIT_REPORTED;
 }

@@ -1,5 +1,5 @@
 /* grade_jobs.c: grading the submissions N at a time, each in a worker process of its own. */
-#include "grade.h"
+#include "grade_jobs.h"
 
 #include <errno.h>
 #include <signal.h>
@@ -11,6 +11,12 @@
 #include <sys/prctl.h>
 #endif
 
+#include "grade_base.h"
+#include "grade_contain.h"
+#include "grade_reap.h"
+#include "grade_results.h"
+#include "grade_submission.h"
+#include "grade_verdict.h"
 #include "outfile.h"
 #include "stop.h"
 
@@ -46,10 +52,10 @@ static void work(Grading *g, int k, int slot)
     char *path = results_path(g, k);
     if (!outfile_open(&out, path, &err))
         _exit(WORKER_TROUBLE);
-    shard_put_submission(out.file, g, &g->subs[k]);
+    results_put_submission(out.file, g, &g->subs[k]);
     fputs("told", out.file);
     /* The worker's told text goes through the same escaping as the results. */
-    shard_put_text(out.file, told);
+    results_put_text(out.file, told);
     fputc('\n', out.file);
     _exit(outfile_commit(&out, &err) ? WORKER_DONE : WORKER_TROUBLE);
 }
@@ -61,7 +67,7 @@ static void collect(Grading *g, int k, int status)
     Submission *s = &g->subs[k];
     char *path = results_path(g, k);
     char *told = WIFEXITED(status) && WEXITSTATUS(status) == WORKER_DONE
-                     ? shard_read_submission(g, s, path)
+                     ? results_read_submission(g, s, path)
                      : NULL;
     unlink(path);
     if (told != NULL) {
@@ -127,10 +133,10 @@ static bool grade_in_workers(Grading *g)
         running--;
         /* What the worker's programs left (a worker killed by one) came to the grader: it
          * ends now, the other workers and theirs kept. */
-        contain_end_strays(live, g->jobs);
+        reap_strays(live, g->jobs);
         collect(g, k, status);
     }
-    contain_end_strays(NULL, 0);
+    reap_strays(NULL, 0);
     return !stop_requested();
 }
 

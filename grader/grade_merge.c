@@ -1,5 +1,5 @@
 /* grade_merge.c: grade merge: a class's shards checked against one another, made one report. */
-#include "grade.h"
+#include "grade_merge.h"
 
 #include <errno.h>
 #include <fcntl.h>
@@ -10,6 +10,13 @@
 #include <sys/file.h>
 #include <unistd.h>
 
+#include "grade_base.h"
+#include "grade_junit.h"
+#include "grade_out.h"
+#include "grade_report.h"
+#include "grade_run.h"
+#include "grade_shard.h"
+#include "grading.h"
 #include "toolopt.h"
 
 /* What grade merge was asked. */
@@ -197,7 +204,7 @@ int merge_main(int argc, char **argv)
             return 2;
         }
     run_init();
-    ok = grade_prepare_out(&g) && link_work(&g) && report_write(&g) &&
-         (g.junit == NULL || export_junit(&g, g.junit));
+    ok = out_prepare(&g) && link_work(&g) && report_write(&g) &&
+         (g.junit == NULL || junit_export(&g, g.junit));
     return ok ? 0 : 2;
 }

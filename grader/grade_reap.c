@@ -1,10 +1,12 @@
 /* grade_reap.c: ending every process a run left below the grader, to which orphans come back (a subreaper). */
 #define _GNU_SOURCE /* usleep */
-#include "grade.h"
+#include "grade_reap.h"
 
 #include <dirent.h>
 #include <errno.h>
 #include <signal.h>
+#include <stdbool.h>
+#include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 #include <sys/wait.h>
@@ -73,7 +75,7 @@ static void my_children(pid_t **list, size_t *count, size_t *room)
  * once none is left. Each process is stopped before its children are read, so that it
  * makes no child after and keeps those it has, and all are killed then; a child made while
  * its parent was being stopped comes back to this process, and is ended in the next round. */
-void contain_end_strays(const pid_t *keep, int keep_count)
+void reap_strays(const pid_t *keep, int keep_count)
 {
     size_t room = 256;
     pid_t *list = malloc(room * sizeof *list);

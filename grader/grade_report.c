@@ -1,10 +1,15 @@
-/* grade_report.c: the self-contained report.html and grades.csv, written whole; --self's lines. */
-#include "grade.h"
+/* grade_report.c: the self-contained report.html, and with it grades.csv, each written whole. */
+#include "grade_report.h"
 
 #include <math.h>
 #include <string.h>
-#include <unistd.h>
+#include <sys/stat.h>
 
+#include "grade_base.h"
+#include "grade_csv.h"
+#include "grade_part.h"
+#include "grade_run.h"
+#include "grade_verdict.h"
 #include "imgfile.h"
 #include "outfile.h"
 
@@ -13,14 +18,6 @@
 
 /* The largest picture embedded: thumbnails are far smaller; a larger file is a mistake. */
 #define EMBED_MAX_BYTES (8L << 20)
-
-/* Each verdict's name and column; in the order of Verdict. */
-const VerdictInfo verdict_info[VERDICT_COUNT] = {
-    {"PASS", TALLY_PASS},         {"FAIL", TALLY_FAIL},       {"WRONG SIZE", TALLY_FAIL},
-    {"LINK", TALLY_FAIL},         {"UNREADABLE", TALLY_FAIL}, {"MISSING", TALLY_MISSING},
-    {"ERROR", TALLY_ERROR},       {"CRASHED", TALLY_ERROR},   {"TIMEOUT", TALLY_ERROR},
-    {"OUT OF MEMORY", TALLY_ERROR}, {"BUILD FAILED", TALLY_ERROR},
-};
 
 /* The summary's class (and colour) for each tally. */
 static const char *const tally_class[TALLY_COUNT] = {"pass", "fail", "missing", "error"};
@@ -45,33 +42,6 @@ static char *html(const char *text)
         else
             *o++ = *t;
     }
-    return out;
-}
-
-/* Returns text with every byte a terminal could take for a control written \xNN: C0
- * controls and DEL, C1 controls (U+0080 to U+009F in UTF-8) and bytes of no well-formed
- * UTF-8 character (a lone 0x9B is CSI to an 8-bit terminal); what a student named, linked
- * to or printed goes through here on its way to a terminal. */
-static char *plain(const char *text)
-{
-    char *out = grade_alloc(4 * strlen(text) + 1), *o = out;
-    for (const unsigned char *t = (const unsigned char *)text; *t != '\0';) {
-        int len = *t < 0x80                 ? 1
-                  : *t >= 0xC2 && *t <= 0xDF ? 2
-                  : *t >= 0xE0 && *t <= 0xEF ? 3
-                  : *t >= 0xF0 && *t <= 0xF4 ? 4
-                                             : 0;
-        int n = 1;
-        while (n < len && (t[n] & 0xC0) == 0x80)
-            n++;
-        bool control = *t < 0x20 || *t == 0x7F || (t[0] == 0xC2 && t[1] < 0xA0);
-        if (len == 0 || n < len || control)
-            o += sprintf(o, "\\x%02x", *t++);
-        else
-            for (int k = 0; k < len; k++)
-                *o++ = (char)*t++;
-    }
-    *o = '\0';
     return out;
 }
 
@@ -140,7 +110,6 @@ static void put_picture(FILE *f, const char *path)
     if (in != NULL)
         fclose(in);
 }
-
 
 /* Writes the page's head, with a style rule a reference picture, each embedded once and
  * shown as a background beside every submission's image; the title block; and the
@@ -361,58 +330,6 @@ static void write_html(FILE *f, const Grading *g)
           f);
 }
 
-/* Returns text as a CSV field: quoted, its quotes doubled (RFC 4180), when it holds a
- * comma, a quote or a line break, or starts or ends with a space; a text that a spreadsheet
- * would take for a formula (=, +, -, @, a tab or a carriage return first) gets a quote '
- * first, and quotes around. */
-static char *csv(const char *text)
-{
-    size_t len = strlen(text);
-    bool formula = len > 0 && strchr("=+-@\t\r", text[0]) != NULL;
-    bool quote = formula || strpbrk(text, ",\"\r\n") != NULL ||
-                 (len > 0 && (text[0] == ' ' || text[len - 1] == ' '));
-    char *out = grade_alloc(2 * len + 4), *o = stpcpy(out, formula ? "\"'" : quote ? "\"" : "");
-    for (const char *t = text; *t != '\0'; t++) {
-        if (*t == '"')
-            *o++ = '"';
-        *o++ = *t;
-    }
-    strcpy(o, quote ? "\"" : "");
-    return out;
-}
-
-/* Writes the CSV: a header line, then one line a submission and scene; the figures, which
- * need no quoting but the box, are empty when no comparison was made; last, the points the
- * scene earned (grading.conf's, scaled to the part's). */
-static void write_csv(FILE *f, const Grading *g)
-{
-    fputs("submission,scene,verdict,max_diff_r,max_diff_g,max_diff_b,mean_abs_diff,rmse,"
-          "psnr_db,differing_pixels,differing_fraction,bbox,message,seconds,flag,points\n", f);
-    double all = 0, max = 0;
-    for (int k = 0; k < g->render_count; k++)
-        all += g->renders[k].points;
-    if (g->sub_count > 0)
-        part_points(g, &g->subs[0], &max);
-    double scale = all > 0 && max > 0 ? max / all : 1;
-    for (int i = 0; i < g->sub_count; i++)
-        for (int k = 0; k < g->render_count; k++) {
-            const SceneResult *res = &g->subs[i].results[k];
-            const Figures *fig = &res->figures;
-            /* glibc prints an infinite PSNR as "inf" */
-            char *figures = !res->compared ? ",,,,,,,,," : grade_format(
-                "%.6g,%.6g,%.6g,%.6g,%.6g,%.2f,%ld,%.6g,%s,", fig->max[0], fig->max[1],
-                fig->max[2], fig->mean, fig->rmse, fig->psnr, fig->differing,
-                (double)fig->differing / fig->pixels,
-                fig->differing == 0 ? "" : grade_format("\"(%d,%d)-(%d,%d)\"", fig->box[0],
-                                                        fig->box[1], fig->box[2], fig->box[3]));
-            fprintf(f, "%s,%s,%s,%s%s,%s,%s,%.6g\n", csv(g->subs[i].name),
-                    csv(g->renders[k].name), verdict_info[res->verdict].name, figures,
-                    csv(res->message), res->seconds > 0 ? grade_format("%.3f", res->seconds) : "",
-                    res->copy ? "copy" : "",
-                    res->verdict == VERDICT_PASS ? g->renders[k].points * scale : 0);
-        }
-}
-
 /* Writes the file at path with write, through a temporary renamed onto it so that it
  * appears only complete (outfile_commit fails on a write error too); false (reported) on
  * any failure. */
@@ -431,32 +348,8 @@ bool report_write(const Grading *g)
 {
     char *table = grade_format("%s/grades.csv", g->out);
     char *page = grade_format("%s/report.html", g->out);
-    if (!report_write_whole(table, g, write_csv) || !report_write_whole(page, g, write_html))
+    if (!report_write_whole(table, g, csv_write) || !report_write_whole(page, g, write_html))
         return false;
     fprintf(g->progress, "grade: wrote %s and %s\n", page, table);
     return true;
-}
-
-/* Prints, for a student checking their own work, each scene's verdict and reason, the heat
- * map to look at when it did not pass, and the command line to run again when the program
- * failed (crashed, timed out...); returns the exit status: 0 when every scene passes, 1
- * otherwise. */
-int report_print_self(const Grading *g)
-{
-    const Submission *s = &g->subs[0];
-    for (int k = 0; k < g->render_count; k++) {
-        const SceneResult *res = &s->results[k];
-        char *heat = grade_format("%s/%s.heat.png", s->work, g->renders[k].name);
-        printf("%-12s %s: %s\n", verdict_info[res->verdict].name, plain(g->renders[k].name),
-               plain(res->message));
-        if (res->verdict != VERDICT_PASS && access(heat, F_OK) == 0)
-            printf("%12s heat map: %s\n", "", plain(heat));
-        if (res->command != NULL && verdict_info[res->verdict].tally == TALLY_ERROR)
-            printf("%12s command: %s\n", "",
-                   plain(grade_format("cd %s && %s", run_quote(grade_format("%s/run", s->work)),
-                                      res->command)));
-    }
-    printf("%d of %d scenes pass; the report: %s/report.html\n", s->tally[TALLY_PASS],
-           g->render_count, plain(g->out));
-    return s->tally[TALLY_PASS] == g->render_count ? 0 : 1;
 }

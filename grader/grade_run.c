@@ -1,27 +1,27 @@
 /* grade_run.c: a child in its own process group, under limits; how it ended, what it printed. */
-#include "grade.h"
+#include "grade_run.h"
 
 #include <ctype.h>
-#include <dirent.h>
 #include <errno.h>
 #include <fcntl.h>
 #include <poll.h>
 #include <signal.h>
 #include <stdlib.h>
 #include <string.h>
-#include <sys/resource.h>
+#include <sys/stat.h>
 #include <sys/wait.h>
 #include <time.h>
 #include <unistd.h>
 
+#include "grade_base.h"
+#include "grade_child.h"
+#include "grade_contain.h"
+#include "grade_reap.h"
 #include "progress.h"
 #include "stop.h"
 #ifdef __linux__
 #include <sys/prctl.h>
 #endif
-
-/* The largest file a child may write: an image, or whatever else it writes in its folder. */
-#define FILE_LIMIT (1LL << 30)
 
 /* What the grader keeps of a child's output, read through a pipe: the first and the last
  * KEEP_BYTES; what lies between is counted, never stored, and a line says how much was cut. */
@@ -65,66 +65,6 @@ static void wait_for_signal(double seconds)
 {
     struct timespec t = {(time_t)seconds, (long)((seconds - (double)(time_t)seconds) * 1e9)};
     sigtimedwait(&sigchld, NULL, &t);
-}
-
-/* Prepares a new child: a session of its own (no controlling terminal to push input into),
- * the signals as they were (those caught go back to their defaults at exec), stdin from
- * /dev/null, stdout and stderr to the pipe `out`, the limits, the folder (NULL: the
- * grader's); a student's build or run also gets the sandbox's clean environment and a limit
- * on CPU time, the time limit on every core; exits with RUN_EXEC_FAILED when it cannot. */
-void run_child_setup(const char *dir, int out, long long memory_limit, double time_limit,
-                     bool student)
-{
-    setsid();
-#ifdef __linux__
-    /* Should the grader itself be killed, the child dies with it rather than run on. */
-    prctl(PR_SET_PDEATHSIG, SIGKILL, 0, 0, 0);
-#endif
-    signal(SIGPIPE, SIG_DFL);
-    sigset_t none;
-    sigemptyset(&none);
-    sigprocmask(SIG_SETMASK, &none, NULL);
-    int in = open("/dev/null", O_RDONLY);
-    if (in < 0 || dup2(in, 0) < 0 || dup2(out, 1) < 0 || dup2(out, 2) < 0)
-        _exit(RUN_EXEC_FAILED);
-    /* The child keeps neither the grader's files (the pipe's reading end, the output
-     * folder's lock) nor the jobserver pipes of a make that runs the grader: every
-     * descriptor above stderr is closed. */
-    DIR *fds = opendir("/proc/self/fd");
-    for (struct dirent *e; fds != NULL && (e = readdir(fds)) != NULL;)
-        if (atoi(e->d_name) > 2 && atoi(e->d_name) != dirfd(fds))
-            close(atoi(e->d_name));
-    if (fds == NULL || closedir(fds) != 0)
-        _exit(RUN_EXEC_FAILED);
-    /* Before the limits, which leave a grader built with AddressSanitizer no room to allocate. */
-    if (student)
-        sandbox_environment(dir);
-    /* Soft and hard, so that the child cannot raise them again; should the grader's own hard
-     * limit be lower, setrlimit fails and that one stays. */
-    setrlimit(RLIMIT_CORE, &(struct rlimit){0, 0});
-    setrlimit(RLIMIT_FSIZE, &(struct rlimit){FILE_LIMIT, FILE_LIMIT});
-    contain_limit_processes();
-    if (memory_limit > 0)
-        setrlimit(RLIMIT_AS, &(struct rlimit){(rlim_t)memory_limit, (rlim_t)memory_limit});
-    rlim_t cpu = (rlim_t)(time_limit * (double)sysconf(_SC_NPROCESSORS_ONLN)) + 5;
-    if (student && time_limit > 0)
-        setrlimit(RLIMIT_CPU, &(struct rlimit){cpu, cpu + 5});
-    /* What a student's program writes, its group (the grader's, with --run-as) reads; it
-     * runs at a lower priority than the grader, whose sweeps outrun a loop of forks. */
-    if (student) {
-        umask(027);
-        setpriority(PRIO_PROCESS, 0, 10);
-    }
-    /* make hands its flags and jobserver to sub-makes through these: a student's make is
-     * not a sub-make of the one that may be running the grader. */
-    static const char *const make_vars[] = {"MAKEFLAGS", "MFLAGS",    "GNUMAKEFLAGS",
-                                            "MAKELEVEL", "MAKEFILES", "MAKEOVERRIDES"};
-    for (size_t k = 0; k < sizeof make_vars / sizeof make_vars[0]; k++)
-        unsetenv(make_vars[k]);
-    if (dir != NULL && chdir(dir) != 0) {
-        grade_fail("cannot enter '%s': %s", dir, strerror(errno));
-        _exit(RUN_EXEC_FAILED);
-    }
 }
 
 /* Adds n bytes of output to the capture: to the head until it is full, then to the ring. */
@@ -221,7 +161,7 @@ static bool run_ended(pid_t pid)
                           info.si_pid != 0;
 }
 
-/* Runs argv (a program found on PATH) in a child as run_child_setup prepares it, with at
+/* Runs argv (a program found on PATH) in a child as child_setup prepares it, with at
  * most time_limit seconds and memory_limit bytes (0: no limit), killing it at the limit or
  * on a stop request; a student's (view not NULL) in the sandbox (sandbox_wrap), also
  * killed past its disk limit; then reaps it and ends everything it left behind: as the
@@ -231,8 +171,8 @@ static bool run_ended(pid_t pid)
 static RunResult run_child(char *const argv[], const char *dir, const char *log,
                            double time_limit, long long memory_limit, const View *view)
 {
-    bool as_student = view != NULL;
-    char **run = as_student ? sandbox_wrap(argv, dir, view) : (char **)argv;
+    bool as_student = view != NULL, kept = as_student && contain_active();
+    char **run = as_student ? sandbox_wrap(argv, dir, view, kept) : (char **)argv;
     /* In namespaces, bubblewrap enters dir itself, inside. */
     const char *enter = run != argv ? NULL : dir;
     static Capture capture;
@@ -245,11 +185,10 @@ static RunResult run_child(char *const argv[], const char *dir, const char *log,
     fcntl(fds[0], F_SETFD, FD_CLOEXEC);
     fcntl(fds[0], F_SETFL, O_NONBLOCK);
     double start = clock_now();
-    bool kept = as_student && contain_active();
     int keeper = kept ? contain_run(run, enter, fds[1], memory_limit, time_limit) : -1;
     pid_t pid = kept ? 0 : fork();
     if (pid == 0 && !kept) {
-        run_child_setup(enter, fds[1], memory_limit, time_limit, as_student);
+        child_setup(enter, fds[1], memory_limit, time_limit, as_student);
         execvp(run[0], run);
         grade_fail("cannot run '%s': %s", run[0], strerror(errno));
         _exit(RUN_EXEC_FAILED);
@@ -299,7 +238,7 @@ static RunResult run_child(char *const argv[], const char *dir, const char *log,
         kill(pid, SIGKILL);
         while (waitpid(pid, &status, 0) < 0 && errno == EINTR)
             continue;
-        contain_end_strays(NULL, 0);
+        reap_strays(NULL, 0);
     }
     if (r.end == RUN_EXITED && sandbox_over_disk(view))
         r.end = RUN_OVER_DISK;
@@ -417,4 +356,19 @@ char *run_tail(const char *output)
     }
     *t = '\0';
     return n > 0 ? text : NULL;
+}
+
+/* Returns the end of a program's output (run_tail) with the path of the work folder `work`
+ * written "work" (as in a compiler's -I flags, or a program naming its folder), so that
+ * what the report shows does not depend on where the work folder is: a shard's, merged. */
+char *run_tail_relative(const char *output, const char *work)
+{
+    size_t len = strlen(work);
+    char *text = grade_alloc(strlen(output) + 1), *t = text;
+    for (const char *p = output; *p != '\0';)
+        if (strncmp(p, work, len) == 0)
+            t = stpcpy(t, "work"), p += len;
+        else
+            *t++ = *p++;
+    return run_tail(text);
 }

@@ -1,14 +1,18 @@
 /* grade_sandbox.c: a student's build or run in namespaces of its own (bubblewrap), or the fallback's walls. */
 #define _GNU_SOURCE /* environ */
-#include "grade.h"
+#include "grade_sandbox.h"
 
 #include <errno.h>
 #include <ftw.h>
 #include <limits.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/stat.h>
 #include <sys/statvfs.h>
 #include <unistd.h>
+
+#include "grade_base.h"
+#include "grade_path.h"
 
 /* The containment in force: namespaces (bubblewrap found and working) or the fallback. */
 static bool namespaces;
@@ -25,74 +29,20 @@ static const char *const toolchain[] = {"/usr", "/bin", "/sbin", "/lib", "/lib32
 /* The free space below which a student's run is stopped, so that the report can be written. */
 #define DISK_RESERVE (256LL << 20)
 
-/* Returns the path of program `name` on PATH, or NULL. */
-static char *find_on_path(const char *name)
+/* Puts students' builds and runs in namespaces of bubblewrap, the program at bwrap_path
+ * (closes: it has --disable-userns), or with NULL in the fallback's walls. */
+void sandbox_use(char *bwrap_path, bool closes)
 {
-    const char *path = getenv("PATH");
-    char *copy = grade_format("%s", path != NULL ? path : "/usr/bin:/bin"), *save = NULL;
-    for (char *dir = strtok_r(copy, ":", &save); dir != NULL; dir = strtok_r(NULL, ":", &save)) {
-        char *candidate = grade_format("%s/%s", dir, name);
-        if (access(candidate, X_OK) == 0)
-            return candidate;
-    }
-    return NULL;
-}
-
-/* Chooses the containment that --sandbox asks for (auto, namespaces or fallback): namespaces
- * when bubblewrap is installed and a sandbox of its starts (tried as a student's build would
- * be, through run_student), else the fallback, unless namespaces were asked for; sets
- * g->sandbox to the choice in words (grading tells it). False (reported) when the choice
- * cannot be had. */
-bool sandbox_choose(Grading *g)
-{
-    const char *asked = g->sandbox != NULL ? g->sandbox : "auto";
-    if (strcmp(asked, "auto") != 0 && strcmp(asked, "namespaces") != 0 &&
-        strcmp(asked, "fallback") != 0)
-        return grade_fail("--sandbox takes auto, namespaces or fallback, got '%s'", asked);
-    char *why = "asked for with --sandbox fallback";
-    if (strcmp(asked, "fallback") != 0) {
-        bwrap = find_on_path("bwrap");
-        why = "bubblewrap (bwrap) is not installed";
-    }
-    if (bwrap != NULL) {
-        char *version[] = {bwrap, "--version", NULL};
-        int major = 0, minor = 0;
-        sscanf(run_program(version, NULL, NULL, 60, 0).output, "bubblewrap %d.%d", &major, &minor);
-        closes_userns = major > 0 || minor >= 8;
-        namespaces = true;
-        char *probe[] = {"true", NULL};
-        RunResult r = run_student(probe, NULL, NULL, 60, 0, &(View){{NULL}, NULL, 0});
-        namespaces = r.ok;
-        char *said = run_tail(r.output);
-        why = r.ok ? NULL
-                   : grade_format("bubblewrap cannot make its namespaces here: %s%s%s",
-                                  run_describe(&r), said != NULL ? ": " : "",
-                                  said != NULL ? said : "");
-    }
-    if (!namespaces && strcmp(asked, "namespaces") == 0)
-        return grade_fail("--sandbox namespaces: %s", why);
-    const char *user = contain_active() ? "a user of their own (--run-as)"
-                       : geteuid() == 0 ? "root without capabilities (--run-as gives them a "
-                                          "user of their own)"
-                                        : "your user";
-    g->sandbox = namespaces
-                     ? grade_format("namespaces (bubblewrap): each build and run in PID, IPC, "
-                                    "mount, network and UTS namespaces of its own, seeing "
-                                    "only its folders, the toolchain and its scene, as %s%s",
-                                    user, closes_userns ? "" : " (bubblewrap before 0.8: "
-                                                               "user namespaces open inside)")
-                     : grade_format("fallback (%s): each build and run in a session of its "
-                                    "own, a clean environment, under rlimits, %s",
-                                    why, contain_active() ? "as a user of its own (--run-as)"
-                                                          : "as your user: nothing stands "
-                                                            "between a program and your files");
-    return true;
+    bwrap = bwrap_path;
+    closes_userns = closes;
+    namespaces = bwrap_path != NULL;
 }
 
 /* Returns argv, run in folder dir (NULL: /), as the sandbox runs it: inside bubblewrap,
  * which sees view's folders writable, its reads read-only, the toolchain read-only, and
- * nothing else, without capabilities; with the fallback, argv itself. */
-char **sandbox_wrap(char *const argv[], const char *dir, const View *view)
+ * nothing else, without capabilities, and as a user of its own when own_user (--run-as);
+ * with the fallback, argv itself. */
+char **sandbox_wrap(char *const argv[], const char *dir, const View *view, bool own_user)
 {
     if (!namespaces)
         return (char **)argv;
@@ -113,7 +63,7 @@ char **sandbox_wrap(char *const argv[], const char *dir, const View *view)
     if (closes_userns)
         w[n++] = "--disable-userns";
     /* Root's uid, kept outside the namespace, is not shown inside: the program is nobody. */
-    if (geteuid() == 0 && !contain_active()) {
+    if (geteuid() == 0 && !own_user) {
         static char *const nobody[] = {"--uid", "65534", "--gid", "65534", NULL};
         for (char *const *o = nobody; *o != NULL; o++)
             w[n++] = *o;
@@ -189,7 +139,7 @@ bool sandbox_over_disk(const View *view)
 static char *real_file(const char *path)
 {
     char real[PATH_MAX];
-    return realpath(path, real) != NULL && grade_kind(real) == S_IFREG
+    return realpath(path, real) != NULL && path_kind(real) == S_IFREG
                ? grade_format("%s", real)
                : NULL;
 }

@@ -1,14 +1,9 @@
-/* grade.h: the grader's one internal header: a class's renders, submissions and verdicts. */
-#ifndef RAYTRA_GRADE_H
-#define RAYTRA_GRADE_H
+/* grading.h: what a grading run knows (renders, submissions, verdicts), and how a child it ran ended. */
+#ifndef RAYTRA_GRADING_H
+#define RAYTRA_GRADING_H
 
 #include <stdbool.h>
-#include <stddef.h>
 #include <stdio.h>
-#include <sys/stat.h>
-#include <sys/types.h>
-
-#include "diag.h"
 
 /* What became of one scene of one submission; docs/grading.md says what each means. */
 typedef enum {
@@ -19,14 +14,6 @@ typedef enum {
 
 /* The summary's columns, into which the verdicts fall. */
 typedef enum { TALLY_PASS, TALLY_FAIL, TALLY_MISSING, TALLY_ERROR, TALLY_COUNT } Tally;
-
-/* A verdict's name in the report and the CSV ("WRONG SIZE"), and its column. */
-typedef struct {
-    const char *name;
-    Tally tally;
-} VerdictInfo;
-
-extern const VerdictInfo verdict_info[VERDICT_COUNT];
 
 /* imgdiff's figures for an image against its reference: its --machine lines. */
 typedef struct {
@@ -168,108 +155,7 @@ typedef struct {
     char *output;
 } RunResult;
 
-/* What a student's build or run may reach in the sandbox (namespaces): the folders it may
- * write, the files and folders it may read, beside the toolchain; and the bytes its folders
- * may hold (0: any), past which it is stopped, with either containment. */
-typedef struct {
-    const char *write[4]; /* NULL-ended */
-    char **read;          /* NULL-ended, or NULL */
-    long long disk_limit;
-} View;
-
 /* The exit status of a child that could not exec its program (as the shell's). */
 #define RUN_EXEC_FAILED 127
-
-/* The memory limit of imgdiff, which reads students' files: none under AddressSanitizer,
- * whose shadow memory no limit leaves room for. */
-#if defined(__SANITIZE_ADDRESS__)
-#define RUN_OWN_MEMORY(limit) ((void)(limit), 0LL)
-#else
-#define RUN_OWN_MEMORY(limit) (limit)
-#endif
-
-/* grade.c */
-void *grade_alloc(size_t size);
-char *grade_format(const char *fmt, ...) DIAG_PRINTF(1, 2);
-bool grade_fail(const char *fmt, ...) DIAG_PRINTF(1, 2);
-char *grade_size_text(long long bytes);
-int grade_kind(const char *path);
-bool grade_make_folder(const char *path);
-const char *grade_fresh_folder(const char *path, FILE *notes);
-char **grade_list_folders(const char *folder, int *count);
-bool grade_prepare_out(Grading *g);
-
-/* grade_part.c */
-bool part_find(Grading *g, const char *part);
-bool part_read_renders(Grading *g);
-bool part_read_conf(Grading *g);
-bool part_render_hidden(Grading *g);
-void part_make_canaries(Grading *g);
-double part_points(const Grading *g, const Submission *s, double *max);
-
-/* grade_submission.c */
-bool submission_list(Grading *g);
-bool submission_grade(const Grading *g, Submission *s, FILE *f);
-
-/* grade_run.c */
-void run_init(void);
-RunResult run_program(char *const argv[], const char *dir, const char *log, double time_limit,
-                      long long memory_limit);
-RunResult run_student(char *const argv[], const char *dir, const char *log, double time_limit,
-                      long long memory_limit, const View *view);
-void run_child_setup(const char *dir, int out, long long memory_limit, double time_limit,
-                     bool student);
-char *run_describe(const RunResult *r);
-char *run_command_line(char *const argv[], const char *dir);
-char *run_quote(const char *word);
-char *run_tail(const char *output);
-
-/* grade_contain.c */
-bool contain_start(const char *run_as, const char *grader_user, int jobs);
-bool contain_active(void);
-void contain_use_slot(int k);
-int contain_run(char *const argv[], const char *dir, int out, long long memory_limit,
-                double time_limit);
-void contain_kill(void);
-bool contain_answered(void);
-RunEnd contain_wait(int *status);
-void contain_limit_processes(void);
-void contain_release(const char *folder);
-bool contain_share(const char *path);
-
-/* grade_reap.c */
-void contain_end_strays(const pid_t *keep, int keep_count);
-
-/* grade_sandbox.c */
-bool sandbox_choose(Grading *g);
-char **sandbox_wrap(char *const argv[], const char *dir, const View *view);
-char **sandbox_scene_files(const char *scene, const char *run_dir, char *also);
-void sandbox_environment(const char *dir);
-bool sandbox_over_disk(const View *view);
-
-/* grade_jobs.c */
-bool jobs_grade_all(Grading *g);
-
-/* grade_shard.c */
-bool shard_parse(Grading *g);
-void shard_select(Grading *g);
-void shard_put_text(FILE *f, const char *text);
-void shard_put_submission(FILE *f, const Grading *g, const Submission *s);
-char *shard_read_submission(const Grading *g, Submission *s, const char *path);
-bool shard_write(const Grading *g);
-bool shard_read(Grading *g, const char *folder);
-
-/* grade_merge.c */
-int merge_main(int argc, char **argv);
-
-/* grade_export.c */
-bool export_junit(const Grading *g, const char *path);
-bool export_gradescope(const Grading *g, const char *path);
-
-/* grade_report.c */
-char *report_command(const Submission *s, const SceneResult *res);
-bool report_write(const Grading *g);
-bool report_write_whole(const char *path, const Grading *g, void (*write)(FILE *, const Grading *));
-int report_print_self(const Grading *g);
 
 #endif

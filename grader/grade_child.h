@@ -1,0 +1,10 @@
+/* grade_child.h: a new child made ready to exec. */
+#ifndef RAYTRA_GRADE_CHILD_H
+#define RAYTRA_GRADE_CHILD_H
+
+#include <stdbool.h>
+
+void child_setup(const char *dir, int out, long long memory_limit, double time_limit,
+                 bool student);
+
+#endif

@@ -1,0 +1,11 @@
+/* grade_csv.h: grades.csv: a line a submission and scene. */
+#ifndef RAYTRA_GRADE_CSV_H
+#define RAYTRA_GRADE_CSV_H
+
+#include <stdio.h>
+
+#include "grading.h"
+
+void csv_write(FILE *f, const Grading *g);
+
+#endif

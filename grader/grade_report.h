@@ -1,0 +1,14 @@
+/* grade_report.h: report.html and grades.csv, each written whole. */
+#ifndef RAYTRA_GRADE_REPORT_H
+#define RAYTRA_GRADE_REPORT_H
+
+#include <stdbool.h>
+#include <stdio.h>
+
+#include "grading.h"
+
+char *report_command(const Submission *s, const SceneResult *res);
+bool report_write(const Grading *g);
+bool report_write_whole(const char *path, const Grading *g, void (*write)(FILE *, const Grading *));
+
+#endif
