@@ -7,6 +7,7 @@
 #include <unistd.h>
 
 #include "grade_base.h"
+#include "grade_cgroup.h"
 #include "grade_conf.h"
 #include "grade_contain.h"
 #include "grade_containment.h"
@@ -181,6 +182,7 @@ int main(int argc, char **argv)
     time_t now = time(NULL);
     strftime(g.started, sizeof g.started, "%Y-%m-%d %H:%M", localtime(&now));
     run_init();
+    cgroup_start();
     bool ok = contain_start(g.run_as, g.grader_user, g.jobs) && containment_choose(&g) &&
               part_find_top(&g) && part_find(&g, argv[optind]) && shard_parse(&g) &&
               (path_kind(g.submissions) == S_IFDIR ||
@@ -191,6 +193,7 @@ int main(int argc, char **argv)
               (g.shard_n > 0 ? shard_write(&g) : report_write(&g)) &&
               (g.junit == NULL || junit_export(&g, g.junit)) &&
               (g.gradescope == NULL || gradescope_export(&g, g.gradescope));
+    cgroup_finish();
     if (stop_requested()) {
         grade_fail(g.shard_n > 0 ? "interrupted: the shard's results (shard.txt) were not "
                                    "written: grade the shard again"

@@ -1,7 +1,6 @@
 /* grade_cgroup.c: a cgroup v2 a student's run, where the grader may make them: limits on the whole run, and its end in one write. */
 #define _GNU_SOURCE /* O_DIRECTORY, usleep */
 #include "grade_cgroup.h"
-#include "grade.h"
 
 #include <errno.h>
 #include <fcntl.h>
@@ -9,6 +8,8 @@
 #include <string.h>
 #include <sys/stat.h>
 #include <unistd.h>
+
+#include "grading.h"
 
 /* The processes a run may have at once in its cgroup: make, a compiler's few, a program's. */
 #define CGROUP_PROCESSES 256
@@ -20,6 +21,7 @@
  * controllers of memory and processes are enabled below it. */
 static int grader_dir = -1;
 static char grader_path[512];
+static pid_t maker; /* the process that made it, which alone removes it */
 static bool limits_memory, limits_processes;
 
 /* Writes text to the file name in the folder dir; false when it cannot. */
@@ -72,6 +74,7 @@ bool cgroup_start(void)
     if (mkdir(grader_path, 0755) != 0)
         return false;
     grader_dir = open(grader_path, O_RDONLY | O_DIRECTORY | O_CLOEXEC);
+    maker = getpid();
     /* Each controller alone, so that one the system lacks leaves the other on. */
     limits_memory = grader_dir >= 0 && put(grader_dir, "cgroup.subtree_control", "+memory");
     limits_processes = grader_dir >= 0 && put(grader_dir, "cgroup.subtree_control", "+pids");
@@ -124,13 +127,20 @@ void cgroup_enter(RunCgroup g)
         _exit(RUN_EXEC_FAILED);
 }
 
+/* Kills every process of the run's cgroup g at once, without waiting (cgroup_run_end waits). */
+void cgroup_run_kill(RunCgroup g)
+{
+    if (g.dir >= 0)
+        put(g.dir, "cgroup.kill", "1");
+}
+
 /* Ends every process of the run's cgroup g at once (cgroup.kill: a fork that races it
  * loses), waits until none is left, and removes the cgroup; nothing without one. */
 void cgroup_run_end(RunCgroup *g)
 {
     if (g->dir < 0)
         return;
-    put(g->dir, "cgroup.kill", "1");
+    cgroup_run_kill(*g);
     for (int k = 0; !empty(g->dir) && k < CGROUP_EMPTY_WAIT * 1000; k++)
         usleep(1000);
     close(g->dir);
@@ -138,11 +148,16 @@ void cgroup_run_end(RunCgroup *g)
     unlinkat(grader_dir, g->name, AT_REMOVEDIR);
 }
 
-/* Removes the grader's cgroup, once every run's is gone. */
+/* Removes the grader's cgroup, once every run's is gone, in the process that made it (the
+ * keeper with --run-as; its child, the grader, only lets it go). */
 void cgroup_finish(void)
 {
-    if (grader_dir < 0)
+    if (grader_dir < 0 || getpid() != maker) {
+        if (grader_dir >= 0)
+            close(grader_dir);
+        grader_dir = -1;
         return;
+    }
     close(grader_dir);
     grader_dir = -1;
     rmdir(grader_path);

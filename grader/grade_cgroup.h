@@ -14,6 +14,7 @@ bool cgroup_start(void);
 const char *cgroup_describe(void);
 RunCgroup cgroup_run_open(long long memory_limit);
 void cgroup_enter(RunCgroup g);
+void cgroup_run_kill(RunCgroup g);
 void cgroup_run_end(RunCgroup *g);
 void cgroup_finish(void);
 

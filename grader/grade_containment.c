@@ -6,6 +6,7 @@
 #include <unistd.h>
 
 #include "grade_base.h"
+#include "grade_cgroup.h"
 #include "grade_contain.h"
 #include "grade_run.h"
 #include "grade_sandbox.h"
@@ -62,16 +63,22 @@ bool containment_choose(Grading *g)
                        : geteuid() == 0 ? "root without capabilities (--run-as gives them a "
                                           "user of their own)"
                                         : "your user";
+    /* The limits: rlimits always, and a cgroup v2 a run where the grader may make them. */
+    const char *cgroups = cgroup_describe();
+    char *limits = grade_format("; limits: rlimits%s%s", cgroups[0] != '\0' ? " and " : "",
+                                cgroups[0] != '\0' ? cgroups : " (no cgroup v2 to write in here)");
     g->sandbox = namespaces
                      ? grade_format("namespaces (bubblewrap): each build and run in PID, IPC, "
                                     "mount, network and UTS namespaces of its own, seeing "
-                                    "only its folders, the toolchain and its scene, as %s%s",
+                                    "only its folders, the toolchain and its scene, as %s%s%s",
                                     user, closes_userns ? "" : " (bubblewrap before 0.8: "
-                                                               "user namespaces open inside)")
+                                                               "user namespaces open inside)",
+                                    limits)
                      : grade_format("fallback (%s): each build and run in a session of its "
-                                    "own, a clean environment, under rlimits, %s",
+                                    "own, a clean environment, %s%s",
                                     why, contain_active() ? "as a user of its own (--run-as)"
                                                           : "as your user: nothing stands "
-                                                            "between a program and your files");
+                                                            "between a program and your files",
+                                    limits);
     return true;
 }

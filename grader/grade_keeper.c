@@ -15,6 +15,7 @@
 #include <unistd.h>
 
 #include "grade_base.h"
+#include "grade_cgroup.h"
 #include "grade_child.h"
 #include "grading.h"
 
@@ -31,6 +32,7 @@ typedef struct {
     char *next_text;      /* its words, and its output's descriptor */
     size_t next_len;
     int next_out;
+    RunCgroup cgroup;     /* the run's cgroup v2, where there is one */
     bool swept_once;      /* the last sweep, after the grader ended, was started */
     bool unkillable;      /* a sweep gave up */
 } Slot;
@@ -54,9 +56,11 @@ static void wake(int sig)
     (void)sig;
 }
 
-/* In the keeper: starts the sweep that ends every process of the slot's user (user_sweep). */
+/* In the keeper: ends the run's cgroup, where it has one (every process at once), and starts
+ * the sweep that ends every process of the slot's user (user_sweep). */
 static void sweep_start(Slot *s)
 {
+    cgroup_run_kill(s->cgroup);
     s->sweeper = user_sweep(s->user);
 }
 
@@ -69,10 +73,13 @@ static void keeper_spawn(Slot *s, const Request *q, char *text, size_t len, int 
     for (int k = 0; argv != NULL && k < q->argc && p < text + len; k++, p += strlen(p) + 1)
         argv[k] = p;
     int err = argv == NULL || p > text + len || argv[q->argc - 1] == NULL ? EINVAL : 0;
+    if (err == 0)
+        s->cgroup = cgroup_run_open(q->memory_limit);
     if (err == 0 && (s->child = fork()) == 0) {
         signal(SIGINT, SIG_DFL);
         signal(SIGTERM, SIG_DFL);
         signal(SIGHUP, SIG_DFL);
+        cgroup_enter(s->cgroup);
         if (!user_become(s->user))
             _exit(RUN_EXEC_FAILED);
         child_setup(dir[0] != '\0' ? dir : NULL, out, q->memory_limit, q->time_limit, true);
@@ -85,6 +92,7 @@ static void keeper_spawn(Slot *s, const Request *q, char *text, size_t len, int 
     s->asked = *q;
     if (err != 0) {
         s->child = 0;
+        cgroup_run_end(&s->cgroup);
         Answer a = {RUN_NOT_RUN, err, q->asker, q->serial};
         send(s->socket, &a, sizeof a, MSG_NOSIGNAL);
         return;
@@ -174,6 +182,7 @@ static bool keeper_reaped(Slot *slots, pid_t p, int st)
                 sweep_start(s);
         } else if (p == s->sweeper) {
             s->sweeper = 0;
+            cgroup_run_end(&s->cgroup);
             s->unkillable |= !WIFEXITED(st) || WEXITSTATUS(st) != 0;
         }
         if (s->child == -1 && s->sweeper == 0 && s->answer_due) {
@@ -202,7 +211,7 @@ void keeper_main(const User *users, const int *sockets, int count, User grader_u
 {
     static Slot slots[MAX_SLOTS];
     for (int k = 0; k < count; k++)
-        slots[k] = (Slot){.user = users[k], .socket = sockets[k]};
+        slots[k] = (Slot){.user = users[k], .socket = sockets[k], .cgroup = {-1, ""}};
     slot_count = count;
     grader = grader_user;
     forward_to = grader_pid;
@@ -245,6 +254,7 @@ void keeper_main(const User *users, const int *sockets, int count, User grader_u
                 if (fds[k].revents != 0)
                     keeper_read(&slots[k]);
     }
+    cgroup_finish();
     bool unkillable = false;
     for (int k = 0; k < slot_count; k++)
         unkillable |= slots[k].unkillable;

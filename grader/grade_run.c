@@ -14,6 +14,7 @@
 #include <unistd.h>
 
 #include "grade_base.h"
+#include "grade_cgroup.h"
 #include "grade_child.h"
 #include "grade_contain.h"
 #include "grade_reap.h"
@@ -186,8 +187,12 @@ static RunResult run_child(char *const argv[], const char *dir, const char *log,
     fcntl(fds[0], F_SETFL, O_NONBLOCK);
     double start = clock_now();
     int keeper = kept ? contain_run(run, enter, fds[1], memory_limit, time_limit) : -1;
+    /* A student's run has a cgroup of its own where there may be one (the keeper makes
+     * those of --run-as): its processes' memory together, and its end in one write. */
+    RunCgroup group = as_student && !kept ? cgroup_run_open(memory_limit) : (RunCgroup){-1, ""};
     pid_t pid = kept ? 0 : fork();
     if (pid == 0 && !kept) {
+        cgroup_enter(group);
         child_setup(enter, fds[1], memory_limit, time_limit, as_student);
         execvp(run[0], run);
         grade_fail("cannot run '%s': %s", run[0], strerror(errno));
@@ -196,6 +201,7 @@ static RunResult run_child(char *const argv[], const char *dir, const char *log,
     int err = errno, fd = fds[0];
     close(fds[1]);
     if (pid < 0 || (kept && keeper < 0)) {
+        cgroup_run_end(&group);
         close(fd);
         return (RunResult){.end = RUN_NOT_RUN, .status = err, .output = ""};
     }
@@ -238,6 +244,7 @@ static RunResult run_child(char *const argv[], const char *dir, const char *log,
         kill(pid, SIGKILL);
         while (waitpid(pid, &status, 0) < 0 && errno == EINTR)
             continue;
+        cgroup_run_end(&group);
         reap_strays(NULL, 0);
     }
     if (r.end == RUN_EXITED && sandbox_over_disk(view))
