@@ -1,5 +1,5 @@
 # Makefile: builds, tests and demonstrates raytra: the library, every part of the course, and
-# the instructor's wings (compare/, grader/, book/).
+# the instructor's wings (compare/, grader/, platforms/, book/).
 #
 #   make             build everything
 #   make test        run every test (unit tests, reference images, docs, layout)
@@ -31,7 +31,7 @@
 #   make statistics-figure  draw the z-score heat maps grader/docs/statistics.md shows
 #   make check-bvh-variants  part 1.4's grading: correct BVHs unlike raytra's pass every scene,
 #                    wrong ones fail, saying why (tests/bvh-variants, a few minutes)
-#   make check-slurm  grade a made-up class through grader/slurm/grade-slurm on a Slurm cluster
+#   make check-slurm  grade a made-up class through platforms/slurm/grade-slurm on a Slurm cluster
 #                    of one node it starts (as root; installs slurm-wlm and munge, or skips)
 #   make gradescope PART=1.3 [OUT=file.zip]  write the part's Gradescope autograder, by
 #                    default out/gradescope-<part>.zip (grader/docs/gradescope.md);
@@ -98,7 +98,7 @@ test-others:
 	+@$(SUBMAKE) -C compare test
 	+@$(SUBMAKE) -C book test
 	+@for part in $(PARTS); do $(SUBMAKE) -C milestones/$$part test || exit 1; done
-	+@$(SUBMAKE) -C grader/mistakes
+	+@$(SUBMAKE) -C book/mistakes
 	+@$(SUBMAKE) check-docs check-slides check-figures check-links check-exercises check-layout check-course \
 	            check-demo check-chromium
 	+@$(SUBMAKE) check-starter-chapter check-help check-install
@@ -170,7 +170,7 @@ DOCTABLES := BUILD=$(BUILD) RAYTRA_PROGRAM=$(if $(filter 1,$(SANITIZE)),$(BUILD)
              book/doctables.sh
 check-docs:
 	+@$(SUBMAKE) all
-	+@$(SUBMAKE) -C grader/mistakes
+	+@$(SUBMAKE) -C book/mistakes
 	+@$(SUBMAKE) -C book docsnip
 	@$(DOCSNIP) --root . --check $(CHAPTERS) && echo "check-docs: every excerpt matches the source"
 	@$(DOCTABLES) --check
@@ -220,7 +220,7 @@ check-slides:
 
 docs:
 	+@$(SUBMAKE) all
-	+@$(SUBMAKE) -C grader/mistakes
+	+@$(SUBMAKE) -C book/mistakes
 	+@$(SUBMAKE) -C book docsnip
 	@$(DOCSNIP) --root . --update $(CHAPTERS)
 	@$(DOCTABLES) --update
@@ -246,8 +246,8 @@ demo: all
 
 # The gallery of common mistakes: part 1.3 with one function broken at a time.
 mistakes: all
-	+@$(SUBMAKE) -C grader/mistakes
-	@grader/mistakes/gallery.sh
+	+@$(SUBMAKE) -C book/mistakes
+	@book/mistakes/gallery.sh
 
 # Monte Carlo renders judged by statistics (grader/docs/statistics.md): right programs
 # (raytra and other generators and schemes) with MC_SEEDS seeds of their own each pass,
@@ -287,7 +287,7 @@ check-slurm:
 	$(DEPS_STEP)
 	+@$(SUBMAKE) -C grader SANITIZE=0
 	+@$(SUBMAKE) -C milestones/1.1-spheres-red SANITIZE=0
-	@grader/tests/slurm.sh milestones/1.1-spheres-red/raytra
+	@platforms/tests/slurm.sh milestones/1.1-spheres-red/raytra
 
 # A part's Gradescope autograder: a zip with setup.sh and run_autograder at its root.
 # PART is one word, as for a starter; OUT is quoted.
@@ -296,13 +296,13 @@ gradescope:
 	@if [ $(words $(PART)) -ne 1 ]; then echo "make gradescope: PART is one part (PART=1.3)," \
 	    "got '$(PART)'" >&2; exit 2; fi
 	@common/deps.sh gradescope
-	@grader/gradescope/pack.sh '$(PART)' $(if $(OUT),'$(subst ','\'',$(OUT))')
+	@platforms/gradescope/pack.sh '$(PART)' $(if $(OUT),'$(subst ','\'',$(OUT))')
 
 # The autograder of part 1.3 unpacked, set up and run as Gradescope would, on a correct, a
-# buggy, an empty and a hostile submission (grader/tests/gradescope.sh); not part of make test.
+# buggy, an empty and a hostile submission (platforms/tests/gradescope.sh); not part of make test.
 check-gradescope:
 	@common/deps.sh gradescope-test
-	@grader/tests/gradescope.sh
+	@platforms/tests/gradescope.sh
 
 # Hostile submissions, each of a way out of its folder: contained by grader/grade (as a user,
 # and as root with --run-as) and by run_autograder, in bubblewrap's namespaces and in the
@@ -363,7 +363,7 @@ clean:
 	+@$(SUBMAKE) -C grader clean
 	+@$(SUBMAKE) -C book clean
 	+@$(SUBMAKE) -C bench clean
-	+@$(SUBMAKE) -C grader/mistakes clean
+	+@$(SUBMAKE) -C book/mistakes clean
 	+@$(SUBMAKE) -C tests/mc-variants clean
 	+@$(SUBMAKE) -C tests/bvh-variants clean
 	+@for part in $(PARTS); do $(SUBMAKE) -C milestones/$$part clean; done

@@ -103,7 +103,7 @@ reading_load() {
 build=${BUILD:-build}
 program=${RAYTRA_PROGRAM:-raytra}
 built() {
-    [ -x "$1" ] || { echo "doctables: no $1: build it first (make; make -C grader/mistakes)" >&2; exit 1; }
+    [ -x "$1" ] || { echo "doctables: no $1: build it first (make; make -C book/mistakes)" >&2; exit 1; }
 }
 
 # raytra's --trace-pixel on a scene: the command and the tree. Arguments: PART OPTIONS...
@@ -131,7 +131,7 @@ pick() {
 # its lines in $tmp/check.out, imgdiff's report in $tmp/check/out/check/phong-sweep.diff.txt.
 starter_check() {
     [ -f "$tmp/check.out" ] && return
-    mistake=grader/mistakes/$build/raytra-specular-behind
+    mistake=book/mistakes/$build/raytra-specular-behind
     built "$mistake"
     built "compare/$build/imgdiff"
     mkdir -p "$tmp/check/part/references" "$tmp/check/tests" || exit 1

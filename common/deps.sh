@@ -14,7 +14,7 @@
 #          (headless);
 #   bench  needs, in addition to build, Embree 3 for the benchmark's baseline;
 #   gradescope  needs, in addition to build, zip, to pack a Gradescope autograder;
-#   gradescope-test  needs, in addition, unzip and jq, with which grader/tests/gradescope.sh
+#   gradescope-test  needs, in addition, unzip and jq, with which platforms/tests/gradescope.sh
 #          unpacks the autograder and reads the results.json it writes;
 #   chromium  prints the path of the Chromium to run and installs nothing: $CHROMIUM
 #          when set (a path, or a name on PATH), else the first of chromium,

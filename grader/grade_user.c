@@ -35,7 +35,7 @@ bool user_find(const char *text, User *u)
     }
     struct passwd *pw = getpwnam(text);
     if (pw == NULL)
-        return grade_fail("there is no user '%s' (grader/gradescope/setup.sh makes raytra-student "
+        return grade_fail("there is no user '%s' (platforms/gradescope/setup.sh makes raytra-student "
                           "and raytra-grader)",
                           text);
     *u = (User){pw->pw_uid, pw->pw_gid};

@@ -5,7 +5,7 @@
 #
 # Makes a Debian 11 (bullseye) root with debootstrap, from Debian's packages, once: it is
 # kept in $RAYTRA_ROOTS (default /var/tmp/raytra-roots) under a name made of what decides
-# its packages (common/deps.sh, grader/gradescope/setup.sh and this script's $base), so that a later
+# its packages (common/deps.sh, platforms/gradescope/setup.sh and this script's $base), so that a later
 # run starts at once and a change to the packages makes a new root. Into it go `make`
 # (the README asks for it) and git (make gradescope packs the files git tracks), then
 # everything else as the README and setup.sh install it: by common/deps.sh, run by make,
@@ -16,7 +16,7 @@
 # cloned into the root, and there: `make` builds everything, `make -C tests test` runs
 # the Check suites of common/ and the tools (OpenEXR's C++ API writes their test files),
 # every part's Check suites are built and part 1.3's run (the others render for minutes,
-# and need nothing of Debian 11 that 1.3's do not), and grader/tests/gradescope.sh packs part
+# and need nothing of Debian 11 that 1.3's do not), and platforms/tests/gradescope.sh packs part
 # 1.3's Gradescope autograder, builds it with its setup.sh, and runs run_autograder on a
 # correct and a buggy submission, checking results.json field by field. /proc and /dev
 # are mounted in the root while it runs and unmounted at the end, whatever happens.
@@ -37,7 +37,7 @@ roots=${RAYTRA_ROOTS:-/var/tmp/raytra-roots}
 mirror=${DEBIAN_MIRROR:-http://deb.debian.org/debian}
 # What the root gets before raytra's own scripts install the rest.
 base="bullseye minbase make git"
-key=$({ echo "$base"; cat "$top/common/deps.sh" "$top/grader/gradescope/setup.sh"; } |
+key=$({ echo "$base"; cat "$top/common/deps.sh" "$top/platforms/gradescope/setup.sh"; } |
     sha256sum | cut -c 1-12)
 root=$roots/bullseye-$key
 start=$(date +%s)
@@ -104,7 +104,7 @@ step() { # NAME COMMAND
 step build 'make -j2'
 in_root "$root" 'pkg-config --modversion OpenEXR' | sed 's/^/debian11.sh: OpenEXR /'
 step unit-tests 'make -C tests test && for part in milestones/*/; do make -C $part test-programs || exit 1; done && make -C milestones/1.3-shadows-mirror unit-test'
-step gradescope 'common/deps.sh gradescope-test && sh grader/tests/gradescope.sh correct buggy'
+step gradescope 'common/deps.sh gradescope-test && sh platforms/tests/gradescope.sh correct buggy'
 grep -h '^gradescope.sh: ' "$root/raytra/gradescope.log" | sed 's/^/  /'
 
 unmount

@@ -10,8 +10,8 @@ failures=0 count=0
 parts=milestones/*/raytra
 [ "$build" = build ] || parts="milestones/*/$build/raytra"
 for tool in $parts compare/$build/imgdiff compare/$build/mcstats grader/grade \
-            book/*.sh compare/*.sh common/deps.sh grader/gradescope/* grader/slurm/grade-slurm \
-            grader/mistakes/gallery.sh; do
+            book/*.sh compare/*.sh common/deps.sh platforms/gradescope/* platforms/slurm/grade-slurm \
+            book/mistakes/gallery.sh; do
     count=$((count + 1))
     case $tool in *.sh | */setup.sh | */run_autograder) run="sh $tool" ;; *) run=$tool ;; esac
     if ! out=$($run --help 2>&1 </dev/null); then

@@ -403,7 +403,7 @@ parts() {
         mkdir -p "$src/grader/build" "$src/compare/build" "$src/milestones/$part" "$ag/results" || exit 2
         cp "$grade" "$src/grader/build/" && cp "$imgdiff" "$src/compare/build/" &&
             cp -R "$refs" "$src/milestones/$part/" && cp -R "$top/scenes" "$src/" &&
-            cp "$top/grader/gradescope/setup.sh" "$top/grader/gradescope/run_autograder" "$src/" &&
+            cp "$top/platforms/gradescope/setup.sh" "$top/platforms/gradescope/run_autograder" "$src/" &&
             printf 'PART=%s\nBUDGET=240\nBUILD_TIME_LIMIT=60\n' "$part" >"$src/gradescope.conf" ||
             exit 2
         echo "SECRET-$$-root-only" >"$tmp/secret" && chmod 600 "$tmp/secret"

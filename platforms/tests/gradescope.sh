@@ -1,7 +1,7 @@
 #!/bin/sh
 # gradescope.sh: tests part 1.3's Gradescope autograder, run as Gradescope runs it, field by field.
 #
-# Usage: grader/tests/gradescope.sh [SUBMISSION...]   (make check-gradescope; needs zip, unzip
+# Usage: platforms/tests/gradescope.sh [SUBMISSION...]   (make check-gradescope; needs zip, unzip
 #        and jq, which common/deps.sh gradescope-test installs)
 #   SUBMISSION  run only these of correct, buggy, empty, unbuilt, none, hostile, cut-short
 #               (tests/debian11.sh runs correct and buggy); by default every one

@@ -3,14 +3,14 @@
 #
 # Usage: setup.sh [--build-only | --users]
 # Gradescope runs it once, as root, when it builds the autograder's image, from the zip
-# that grader/gradescope/pack.sh writes, unpacked in /autograder/source. It installs make
+# that platforms/gradescope/pack.sh writes, unpacked in /autograder/source. It installs make
 # and what common/deps.sh names for a build (gcc, pkg-config, libpng-dev, libopenexr-dev,
 # bubblewrap, the grader's sandbox) when they are missing, builds grader/build/grade and
 # imgdiff as grader/grade does, and,
 # as root, makes two users who own nothing: raytra-student, who runs students' builds and
 # programs, and raytra-grader, who runs the grader (run_autograder); and leaves the files
 # readable by all and writable by root alone. --build-only stops after the build: what
-# grader/tests/gradescope.sh runs; --users only makes the users.
+# platforms/tests/gradescope.sh runs; --users only makes the users.
 case ${1:-} in -h | --help) sed -n '2,/^[^#]/s/^# \{0,1\}//p' "$0"; exit 0 ;; esac
 set -u
 here=$(cd "$(dirname "$0")" && pwd) || exit 1

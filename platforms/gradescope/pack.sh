@@ -1,7 +1,7 @@
 #!/bin/sh
 # pack.sh: writes a part's Gradescope autograder: a zip, setup.sh and run_autograder at its root.
 #
-# Usage: grader/gradescope/pack.sh PART [ZIP]   (make gradescope PART=1.3 [OUT=ZIP])
+# Usage: platforms/gradescope/pack.sh PART [ZIP]   (make gradescope PART=1.3 [OUT=ZIP])
 #   PART  one part: 1.3, 1.3-shadows-mirror or milestones/1.3-shadows-mirror
 #   ZIP   the file to write; default out/gradescope-<part>.zip at the top
 #
@@ -64,7 +64,7 @@ mkdir "$stage/root" || exit 2
 while IFS= read -r file; do
     mkdir -p "$stage/root/$(dirname "$file")" && cp -p "$top/$file" "$stage/root/$file" || exit 2
 done <"$stage/files"
-cp "$top/grader/gradescope/setup.sh" "$top/grader/gradescope/run_autograder" "$stage/root/" || exit 2
+cp "$top/platforms/gradescope/setup.sh" "$top/platforms/gradescope/run_autograder" "$stage/root/" || exit 2
 
 # The instructor's controls, and the hidden scenes with their references, rendered now.
 conf=${GRADING_CONF:-$top/milestones/$part/references/grading.conf}
@@ -103,7 +103,7 @@ if [ -n "$hidden" ]; then
     done <"$hidden/renders.txt"
 fi
 {
-    echo "# gradescope.conf: what run_autograder grades, written by grader/gradescope/pack.sh."
+    echo "# gradescope.conf: what run_autograder grades, written by platforms/gradescope/pack.sh."
     echo "PART=$part"
     echo "BUDGET=$budget"
     echo "BUILD_TIME_LIMIT=$build_limit"
@@ -130,5 +130,5 @@ Next steps (grader/docs/gradescope.md):
        sh /tmp/ag/source/setup.sh --build-only
        cp -R YOUR-SOLUTION /tmp/ag/submission
        AUTOGRADER_ROOT=/tmp/ag /tmp/ag/source/run_autograder && cat /tmp/ag/results/results.json
-     (make check-gradescope, grader/tests/gradescope.sh, does this with part 1.3.)
+     (make check-gradescope, platforms/tests/gradescope.sh, does this with part 1.3.)
 EOF

@@ -1,8 +1,8 @@
 #!/bin/sh
-# slurm.sh: grades a made-up class through grader/slurm/grade-slurm on a Slurm cluster of one
+# slurm.sh: grades a made-up class through platforms/slurm/grade-slurm on a Slurm cluster of one
 # node started here, and checks that its report is the one grader/grade writes on this machine.
 #
-# Usage: grader/tests/slurm.sh RAYTRA   (make check-slurm runs it)
+# Usage: platforms/tests/slurm.sh RAYTRA   (make check-slurm runs it)
 #   RAYTRA  part 1.1's program: it renders the class's images and plays a correct student
 #
 # First grade-slurm's refusals and its --dry-run, which need no cluster. Then, as root, with
@@ -18,7 +18,7 @@ set -u
 case $1 in /*) raytra=$1 ;; *) raytra=$(pwd)/$1 ;; esac
 top=$(cd "$(dirname "$0")/../.." && pwd)
 refs=$top/milestones/1.1-spheres-red/references
-grade_slurm=$top/grader/slurm/grade-slurm
+grade_slurm=$top/platforms/slurm/grade-slurm
 tmp=$(mktemp -d)
 daemons=""
 trap '[ -z "$daemons" ] || stop_cluster; [ -n "${KEEP:-}" ] || rm -rf "$tmp"' EXIT
@@ -175,7 +175,7 @@ start_cluster() {
     port=$((20000 + $$ % 20000))
     while port_busy "$port" || port_busy $((port + 1)); do port=$((port + 2)); done
     cat >"$c/slurm.conf" <<EOF
-# A cluster of one node, for grader/tests/slurm.sh, everything of it under $c.
+# A cluster of one node, for platforms/tests/slurm.sh, everything of it under $c.
 ClusterName=raytra$$
 SlurmctldHost=localhost
 SlurmctldPort=$port

@@ -1,10 +1,10 @@
 #!/bin/sh
 # gallery.sh: renders the gallery of common mistakes and writes docs/mistakes.md (make mistakes).
 #
-# Usage: grader/mistakes/gallery.sh   (make mistakes: builds the variants first)
+# Usage: book/mistakes/gallery.sh   (make mistakes: builds the variants first)
 #
 # Each mistake is rendered by part 1.3's raytra with one option (shadow acne), or by a
-# variant of it with one function wrapped (grader/mistakes/mistakes.c), next to the
+# variant of it with one function wrapped (book/mistakes/mistakes.c), next to the
 # right image; imgdiff draws the heat map of the differences, and --trace-pixel tells
 # what happened at one telling pixel. Nothing here is drawn or written by hand.
 case ${1:-} in -h | --help) sed -n '2,/^[^#]/s/^# \{0,1\}//p' "$0"; exit 0 ;; esac
@@ -12,7 +12,7 @@ set -eu
 top=$(cd "$(dirname "$0")/../.." && pwd)
 cd "$top"
 right=milestones/1.3-shadows-mirror/raytra
-variants=grader/mistakes/build
+variants=book/mistakes/build
 imgdiff=compare/build/imgdiff
 figures=docs/figures/mistakes
 doc=docs/mistakes.md
@@ -28,10 +28,10 @@ where they agree; blue, purple, red, yellow to white as the difference grows),
 what `raytra --trace-pixel` prints at a pixel that tells (its column and row
 from the top-left), and the fix.
 
-Every picture is made by `make mistakes` (grader/mistakes/gallery.sh), which also
+Every picture is made by `make mistakes` (book/mistakes/gallery.sh), which also
 writes this page: the mistakes are a part of raytra (1.3 unless said) with one
 option (`--ray-offset 0`) or with one function replaced by a wrong one
-(grader/mistakes/mistakes.c, linked in its place with the linker's `--wrap`).
+(book/mistakes/mistakes.c, linked in its place with the linker's `--wrap`).
 [docs/debugging.md](debugging.md) explains `--trace-pixel` and `--view`.
 EOF
 
