@@ -5,10 +5,12 @@
 # Each table stands in its doc between  <!-- generated: NAME -->  and  <!-- end generated -->:
 #   marked-functions  docs/starters.md: the functions each part's students write, from
 #                     the starter markers (book/marked.sh list)
+#   student-reads     docs/1.*.md: what a student reads to write the part's functions,
+#                     from the code (book/studentreads.sh)
 #   reading-load      docs/architecture.md: each part's own lines, code and comments, the
 #                     lines of the earlier parts it uses (its Makefile's USES), and the
 #                     lines of its student's path: the definitions its chapter's table
-#                     between <!-- student-path --> and <!-- end student-path --> names
+#                     "student-reads" names
 #   output NAME       what a tool prints, from a real run on the repository's own files
 #                     (the outputs below): the block stands as generated, fences included
 # A block may stand indented, inside a list item: its lines get the marker's indent.
@@ -60,10 +62,11 @@ count_lines() {
 }
 
 # Prints the number of lines on the student's path of chapter doc, or - when it has none:
-# the rows of its table | `FILE` | `WHOLE` ... | `CONTRACT` ... |.
+# the rows of its table "What a student reads" | `FILE` | `WHOLE` ... | `CONTRACT` ... |
+# (book/studentreads.sh makes it).
 student_path() {
-    grep -q '^<!-- student-path -->$' "$1" || { echo -; return; }
-    sed -n '/^<!-- student-path -->$/,/^<!-- end student-path -->$/p' "$1" | grep '^| `' |
+    grep -q '^<!-- generated: student-reads -->$' "$1" || { echo -; return; }
+    sed -n '/^<!-- generated: student-reads -->$/,/^<!-- end generated -->$/p' "$1" | grep '^| `' |
         while IFS='|' read -r _ file whole contract _; do
             file=$(echo "$file" | tr -d '` ')
             names=$(echo "$whole" | tr -d '`')
@@ -202,6 +205,13 @@ put() {
 }
 
 marked_functions >"$tmp/marked" || exit 1
+# Each chapter's table "What a student reads", from the code, before the reading load counts it.
+for doc in docs/1.*.md; do
+    grep -q '^<!-- generated: student-reads -->$' "$doc" || continue
+    part=$(basename "$doc" .md)
+    sh book/studentreads.sh "$part" >"$tmp/reads" || exit 1
+    put "$doc" student-reads "$tmp/reads"
+done
 reading_load >"$tmp/load" || exit 1
 put docs/starters.md marked-functions "$tmp/marked"
 put docs/architecture.md reading-load "$tmp/load"

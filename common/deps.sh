@@ -105,6 +105,12 @@ fi
 if [ $need_check = yes ] && ! $pkg_config --exists check 2>/dev/null; then
     need Check check check-devel check
 fi
+# The chapters' tables "What a student reads" are made from the code by universal-ctags
+# (book/studentreads.sh); a starter, which has them made, needs none.
+if [ $need_check = yes ] && [ -f "$(dirname "$0")/../book/studentreads.sh" ] &&
+    ! ctags --version 2>/dev/null | grep -q 'Universal Ctags'; then
+    need universal-ctags universal-ctags ctags universal-ctags
+fi
 if [ $need_check = yes ] && ! command -v "${CXX:-c++}" >/dev/null 2>&1; then
     need "a C++ compiler" g++ gcc-c++ -
 fi
