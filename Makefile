@@ -38,6 +38,10 @@
 #                    GRADING_CONF=FILE, HIDDEN=DIR: points, visibility, hidden scenes
 #   make check-gradescope  that autograder, unpacked and run on a correct, a buggy and an
 #                    empty submission of part 1.3 (a few minutes)
+#   make check-platforms  GitHub Classroom's, PrairieLearn's and CodeGrade's formats, converted
+#                    from a tiny class's results, each valid in its platform's format
+#                    (platforms/tests/formats.sh; installs jq, zip, unzip, xmllint and
+#                    python3-jsonschema when missing; CI)
 #   make check-contain  hostile submissions (processes left behind, a terminal's input,
 #                    classmates' folders, a full disk, shared memory, copied references...)
 #                    graded by grader/grade and run_autograder in both sandboxes, namespaces
@@ -66,7 +70,7 @@ FUZZ_SECONDS ?= 1800
         check-robust check-fuzz-regressions check-bad-input check-interrupt check-nonfinite \
         check-course-render check-renders valgrind fuzz fuzz-run bench mistakes starter check-starter check-starter-chapter check-starters \
         check-exercises check-statistics calibrate-statistics check-bvh-variants statistics-figure gradescope \
-        check-gradescope check-slurm check-contain check-debian11 install uninstall check-help check-install
+        check-gradescope check-platforms check-slurm check-contain check-debian11 install uninstall check-help check-install
 
 # Each folder is built by its own Makefile once what it links is built: common/ first, then
 # compare/, the grader, the book's scripts and the parts (each after the parts it USES),
@@ -303,6 +307,14 @@ gradescope:
 check-gradescope:
 	@common/deps.sh gradescope-test
 	@platforms/tests/gradescope.sh
+
+# The converters of platforms/ (GitHub Classroom, PrairieLearn, CodeGrade) on a tiny class of
+# part 1.1: each output valid against its platform's published format (grader/docs/platforms.md).
+check-platforms:
+	$(DEPS_STEP)
+	@common/deps.sh platforms-test
+	+@$(SUBMAKE) -C grader SANITIZE=0
+	@platforms/tests/formats.sh grader/build/grade
 
 # Hostile submissions, each of a way out of its folder: contained by grader/grade (as a user,
 # and as root with --run-as) and by run_autograder, in bubblewrap's namespaces and in the

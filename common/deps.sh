@@ -1,7 +1,7 @@
 #!/bin/sh
 # deps.sh: makes sure the packages raytra builds with are installed, or names the command that installs them.
 #
-# Usage: common/deps.sh [build|test|bench|gradescope|gradescope-test|chromium]
+# Usage: common/deps.sh [build|test|bench|gradescope|gradescope-test|platforms-test|chromium]
 #   build  needs a C compiler with its C library's headers, pkg-config, and the headers
 #          of libpng and zlib; in raytra's repository (not in a student's starter, whose
 #          parts only write images) also bubblewrap (bwrap) on Linux, the grader's
@@ -16,6 +16,9 @@
 #   gradescope  needs, in addition to build, zip, to pack a Gradescope autograder;
 #   gradescope-test  needs, in addition, unzip and jq, with which platforms/tests/gradescope.sh
 #          unpacks the autograder and reads the results.json it writes;
+#   platforms-test  needs, in addition to build, jq, zip, unzip, xmllint and a python3
+#          with jsonschema, with which platforms/tests/formats.sh converts and validates
+#          the platforms' formats;
 #   chromium  prints the path of the Chromium to run and installs nothing: $CHROMIUM
 #          when set (a path, or a name on PATH), else the first of chromium,
 #          chromium-browser, google-chrome and google-chrome-stable on PATH; fails when
@@ -41,9 +44,10 @@ find_chromium() {
     return 1
 }
 case ${1:-build} in
--h | --help) sed -n '2,26s/^# \{0,1\}//p' "$0"; exit 0 ;;
-build | test | bench | gradescope | gradescope-test | chromium) ;;
-*) echo "deps.sh: no need '$1': build, test, bench, gradescope, gradescope-test or chromium" >&2
+-h | --help) sed -n '2,30s/^# \{0,1\}//p' "$0"; exit 0 ;;
+build | test | bench | gradescope | gradescope-test | platforms-test | chromium) ;;
+*) echo "deps.sh: no need '$1': build, test, bench, gradescope, gradescope-test, platforms-test" \
+       "or chromium" >&2
    exit 2 ;;
 esac
 if [ "${1:-}" = chromium ]; then
@@ -72,6 +76,16 @@ esac
 if [ "${1:-build}" = gradescope-test ]; then
     command -v unzip >/dev/null 2>&1 || need unzip unzip unzip -
     command -v jq >/dev/null 2>&1 || need jq jq jq jq
+fi
+# What platforms/tests/formats.sh converts and validates with.
+if [ "${1:-build}" = platforms-test ]; then
+    command -v jq >/dev/null 2>&1 || need jq jq jq jq
+    command -v zip >/dev/null 2>&1 || need zip zip zip zip
+    command -v unzip >/dev/null 2>&1 || need unzip unzip unzip -
+    command -v xmllint >/dev/null 2>&1 || need xmllint libxml2-utils libxml2 libxml2
+    /usr/bin/python3 -c 'import jsonschema' 2>/dev/null ||
+        python3 -c 'import jsonschema' 2>/dev/null ||
+        need "python3's jsonschema" python3-jsonschema python3-jsonschema -
 fi
 # The compiler and pkg-config the Makefiles run ($(CC), $(PKG_CONFIG), passed on by them): the
 # first word, so that CC="ccache gcc" is looked for as ccache.

@@ -11,6 +11,7 @@ parts=milestones/*/raytra
 [ "$build" = build ] || parts="milestones/*/$build/raytra"
 for tool in $parts compare/$build/imgdiff compare/$build/mcstats grader/grade \
             book/*.sh compare/*.sh common/deps.sh platforms/gradescope/* platforms/slurm/grade-slurm \
+            platforms/github-classroom/*.sh platforms/prairielearn/*.sh platforms/codegrade/*.sh \
             book/mistakes/gallery.sh; do
     count=$((count + 1))
     case $tool in *.sh | */setup.sh | */run_autograder) run="sh $tool" ;; *) run=$tool ;; esac
