@@ -22,8 +22,10 @@ bool strata_sampling_from_name(const char *name, Sampling *sampling)
 /* starter: todo */
 /* Sets (u, v) to sample k of n x n in the unit square [0,1)^2. Jittered: the square is cut
  * into n x n sub-squares, k counting them row by row, and the point is uniform within
- * sub-square k, so that the n^2 points cover the square evenly. Random: uniform over the
- * whole square, whatever k, so that points may clump and leave holes. */
+ * sub-square k, so that the n^2 points cover the square evenly. Correlated places the
+ * point as jittered does (which light stratum goes with which pixel stratum is the
+ * caller's: sum_samples pairs them through a shuffle). Random: uniform over the whole
+ * square, whatever k, so that points may clump and leave holes. */
 void strata_point(Sampling sampling, Rng *rng, int k, int n, double *u, double *v)
 {
     double ru = rng_uniform(rng), rv = rng_uniform(rng);
