@@ -1,13 +1,49 @@
 /* test_bvh.c: the BVH's invariants, and its answers equal to brute force for random rays. */
+#include <stdarg.h>
 #include <stdint.h>
 #include <stdio.h>
 #include <stdlib.h>
+#include <time.h>
 
 #include "accel.h"
 #include "bvh.h"
 #include "camera.h"
 #include "testing.h"
 #include "world.h"
+
+/* Returns the time in seconds on a clock that only goes forward. */
+static double seconds_now(void)
+{
+    struct timespec ts;
+    clock_gettime(CLOCK_MONOTONIC, &ts);
+    return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
+}
+
+/* When the last progress line was printed: the long steps print one every 2 s or so,
+ * so that a student does not take a long test for a hung one. */
+static double progress_last;
+
+/* Prints "test_bvh: " and what the long step now starting does, on the standard error,
+ * which shows it at once. */
+static void progress(const char *format, ...)
+{
+    va_list args;
+    va_start(args, format);
+    fputs("test_bvh: ", stderr);
+    vfprintf(stderr, format, args);
+    fputs("...\n", stderr);
+    va_end(args);
+    progress_last = seconds_now();
+}
+
+/* Prints how far a long loop is, done of total things, if 2 s have passed since the last line. */
+static void progress_tick(long done, long total, const char *things)
+{
+    if (seconds_now() - progress_last < 2)
+        return;
+    fprintf(stderr, "test_bvh:   %ld of %ld %s\n", done, total, things);
+    progress_last = seconds_now();
+}
 
 /* A small deterministic random generator (xorshift64*), so that failures repeat. */
 static uint64_t rng_state = 0x9E3779B97F4A7C15u;
@@ -549,11 +585,14 @@ static bool same_as_brute_force(const Bvh *bvh, Ray r, double tmin, double tmax,
  * half in any direction; tmax is random for half of them. */
 static void compare_with_brute_force(const Scene *scene, int count, double lo, double hi)
 {
+    progress("comparing %d random rays with brute force over %d spheres and %d triangles", count,
+             scene->sphere_count, scene->triangle_count);
     Bvh bvh;
     ck_assert(bvh_build(&bvh, scene));
     Box all = bvh.box;
     int hits = 0;
     for (int k = 0; k < count; k++) {
+        progress_tick(k, count, "rays");
         Vec3 o = rnd_point(lo, hi), target = vec3_add(all.lo, vec3(rnd() * (all.hi.x - all.lo.x),
                                                                    rnd() * (all.hi.y - all.lo.y),
                                                                    rnd() * (all.hi.z - all.lo.z)));
@@ -573,21 +612,40 @@ static void compare_with_brute_force(const Scene *scene, int count, double lo, d
     bvh_free(&bvh);
 }
 
+/* Loads the scene file at path into scene, without its warnings (a triangle without area
+ * skipped), which are not the test's news. */
+static void load_scene_file(Scene *scene, const char *path)
+{
+    FILE *quiet = fopen("/dev/null", "w");
+    SceneLoadOptions opts = {.messages = quiet};
+    bool loaded = scene_load(scene, path, &opts);
+    if (quiet != NULL)
+        fclose(quiet);
+    ck_assert_msg(loaded, "cannot read %s", path);
+}
+
+/* Loads scene file name of scenes/ into scene. */
+static void load_scene(Scene *scene, const char *name)
+{
+    char path[600];
+    snprintf(path, sizeof path, "%s/scenes/%s", TOP_DIR, name);
+    load_scene_file(scene, path);
+}
+
 /* Loads scene file name (in scenes/) and compares, for every step-th pixel, its camera
  * ray and a shadow ray from what it hits towards the first light with brute force. */
 static void compare_pixels(const char *name, int step)
 {
-    char path[600];
-    snprintf(path, sizeof path, "%s/scenes/%s", TOP_DIR, name);
+    progress("comparing the pixels of scenes/%s with brute force", name);
     Scene scene;
-    SceneLoadOptions opts = {0};
-    ck_assert_msg(scene_load(&scene, path, &opts), "cannot read %s", path);
+    load_scene(&scene, name);
     Bvh bvh;
     ck_assert(bvh_build(&bvh, &scene));
     Camera camera = camera_make(&scene.camera);
     int nx = scene.camera.nx, ny = scene.camera.ny;
     for (int row = 0; row < ny; row += step)
         for (int i = 0; i < nx; i += step) {
+            progress_tick(row, ny, "rows");
             /* Pixel (i, row), row counted from the top as --trace-pixel counts it. */
             Ray r = camera_ray(&camera, i + 0.5, ny - 1 - row + 0.5);
             char why[400];
@@ -697,10 +755,12 @@ START_TEST(modes_0_and_3_as_brute_force)
     Scene scene;
     random_scene(&scene, 500, 0.1, 20, 3);
     for (AccelMode mode = ACCEL_BOXED; mode <= ACCEL_BVH; mode += 3) {
+        progress("comparing mode %d with brute force for 20000 random rays", mode);
         Accel accel;
         ck_assert(accel_build(&accel, &scene, mode));
         Surfaces s = accel_surfaces(&accel);
         for (int k = 0; k < 20000; k++) {
+            progress_tick(k, 20000, "rays");
             Ray r = ray(rnd_point(-0.2, 1.2), rnd_dir());
             Hit want, got;
             char a[160], b[160];
@@ -726,21 +786,34 @@ START_TEST(modes_0_and_3_as_brute_force)
 }
 END_TEST
 
-START_TEST(bunny_as_brute_force)
+/* Loads mesh name.obj of ../shared/meshes, the course's big meshes, which a starter does
+ * not have, into scene (through a scene file written here); false, saying that test
+ * skips it, when the mesh is not there. */
+static bool load_shared_mesh(Scene *scene, const char *name, const char *test)
 {
-    const char *mesh = TOP_DIR "/../shared/meshes/bunny.obj";
+    char mesh[600], file[100];
+    snprintf(mesh, sizeof mesh, "%s/../shared/meshes/%s.obj", TOP_DIR, name);
     FILE *probe = fopen(mesh, "r");
     if (probe == NULL) {
-        printf("bunny_as_brute_force: SKIPPED: %s does not exist\n", mesh);
-        return;
+        printf("%s: SKIPPED %s: %s does not exist\n", test, name, mesh);
+        return false;
     }
     fclose(probe);
-    FILE *f = fopen("bunny.scn", "w");
+    snprintf(file, sizeof file, "%s.scn", name);
+    FILE *f = fopen(file, "w");
+    ck_assert_msg(f != NULL, "cannot write %s in the test's folder", file);
     fprintf(f, "c 0 0.1 0.5  0 0 -1  35  35 35  10 10\nm 1 1 1 0 0 0 1 0 0 0\nw %s\n", mesh);
     fclose(f);
+    progress("loading %s", mesh);
+    load_scene_file(scene, file);
+    return true;
+}
+
+START_TEST(bunny_as_brute_force)
+{
     Scene scene;
-    SceneLoadOptions opts = {0};
-    ck_assert(scene_load(&scene, "bunny.scn", &opts));
+    if (!load_shared_mesh(&scene, "bunny", "bunny_as_brute_force"))
+        return;
     ck_assert_int_gt(scene.triangle_count, 60000);
     /* The bunny fills about [-0.1, 0.06] x [0.03, 0.19] x [-0.06, 0.06]: rays from
      * around and inside it; brute force costs 70 000 tests a ray, so only a few thousand. */
