@@ -19,8 +19,9 @@ static double seconds_now(void)
     return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
 }
 
-/* When the last progress line was printed: the long steps print one every 2 s or so,
- * so that a student does not take a long test for a hung one. */
+/* When the last progress line was printed, or 0 before the first call in this test's
+ * process: the long steps print one every 2 s or so, so that a student does not take a
+ * long test for a hung one. */
 static double progress_last;
 
 /* Prints "test_bvh: " and what the long step now starting does, on the standard error,
@@ -36,9 +37,12 @@ static void progress(const char *format, ...)
     progress_last = seconds_now();
 }
 
-/* Prints how far a long loop is, done of total things, if 2 s have passed since the last line. */
+/* Prints how far a long loop is, done of total things, if 2 s have passed since the last
+ * line (or since the first call, in a test that has printed none). */
 static void progress_tick(long done, long total, const char *things)
 {
+    if (progress_last == 0)
+        progress_last = seconds_now();
     if (seconds_now() - progress_last < 2)
         return;
     fprintf(stderr, "test_bvh:   %ld of %ld %s\n", done, total, things);
@@ -187,7 +191,7 @@ typedef struct {
     const Bvh *bvh;
     int *leaf_of;  /* for each surface: the leaf it is in, or -1 */
     int *named_by; /* for each node: the reference to it (see ref_name), or -2 before */
-    int nodes, leaves, depth;
+    int nodes, leaves, depth, found; /* found: the primitives of the leaves walked */
     char wrong[900];
 } Walk;
 
@@ -222,6 +226,7 @@ static bool walk_leaf(Walk *w, BvhRef ref, Box box, int who)
     char self[60], whose[80], name[100], inner[160], outer[160];
     ref_name(who, self, sizeof self, whose, sizeof whose);
     int leaf = w->leaves++;
+    progress_tick(w->found, bvh->prim_count, "primitives found in their leaves");
     if (ref.count > BVH_MAX_LEAF || ref.index + (uint64_t)ref.count > (uint64_t)bvh->prim_count) {
         snprintf(w->wrong, sizeof w->wrong,
                  "leaf %d (%s) holds prims[%u] to prims[%u], but a leaf "
@@ -252,6 +257,7 @@ static bool walk_leaf(Walk *w, BvhRef ref, Box box, int who)
             return false;
         }
         w->leaf_of[p] = leaf;
+        w->found++;
         Box padded = reference_box(scene, p, true);
         if (box_contains(box, padded))
             continue;
@@ -295,9 +301,9 @@ static bool walk_node(Walk *w, BvhRef ref, Box box, int who, int depth)
     if (who < 0 && bvh->node_count == 0) {
         snprintf(w->wrong, sizeof w->wrong,
                  "the root has a count of 0, so it names node %u, but build_node made no node "
-                 "(bvh->node_count is 0): is build_node written? A leaf has a count of 1 to "
-                 "BVH_MAX_LEAF; %s",
-                 ref.index, empty_leaf);
+                 "(bvh->node_count is 0): is build_node written yet? A leaf's count is 1 to "
+                 "BVH_MAX_LEAF, never 0",
+                 ref.index);
         return false;
     }
     if (ref.index >= (uint32_t)bvh->node_count) {
@@ -364,6 +370,7 @@ static void check_invariants(const Scene *scene, const char *what)
     Bvh bvh;
     ck_assert_msg(bvh_build(&bvh, scene), "bvh_build failed");
     int n = scene->sphere_count + scene->triangle_count;
+    progress_tick(0, n, "primitives found in their leaves"); /* the build done, if it was long */
     int all = n + scene->plane_count;
     char counts[80];
     snprintf(counts, sizeof counts, "%d sphere%s, %d triangle%s", scene->sphere_count,
@@ -834,6 +841,7 @@ START_TEST(node_hit_is_box_hit)
     const double scales[] = {1e-3, 1, 1e3, 1e6};
     long met = 0;
     for (int k = 0; k < 100000; k++) {
+        progress_tick(k, 100000, "pairs of boxes");
         double scale = scales[k % 4];
         Box box[2] = {rnd_box(scale), rnd_box(scale)};
         BvhNode node;
