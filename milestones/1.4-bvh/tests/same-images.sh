@@ -21,7 +21,8 @@ tmp=$(mktemp -d)
 # runs, it says how far they are (from $tmp/now, which compare keeps up to date), so that
 # no render, however long, looks like a hang.
 (while sleep 3 >/dev/null 2>&1 && kill -0 $$ 2>/dev/null; do
-    [ -f "$tmp/now" ] && echo "same-images:   $(cat "$tmp/now")"
+    # Empty for a moment while compare writes it.
+    now=$(cat "$tmp/now" 2>/dev/null) && [ -n "$now" ] && echo "same-images:   $now"
 done) &
 heartbeat=$!
 trap 'kill $heartbeat 2>/dev/null; rm -rf "$tmp"' EXIT
