@@ -17,13 +17,22 @@ new=$1 old=$2
 top=$(cd "$(dirname "$0")/../../.." && pwd)
 corpus=$top/../shared/course-scenes
 tmp=$(mktemp -d)
-trap 'rm -rf "$tmp"' EXIT
+# A heartbeat beside the renders, which take half a minute: every 3 s, while this script
+# runs, it says how far they are (from $tmp/now, which compare keeps up to date), so that
+# no render, however long, looks like a hang.
+(while sleep 3 >/dev/null 2>&1 && kill -0 $$ 2>/dev/null; do
+    # Empty for a moment while compare writes it.
+    now=$(cat "$tmp/now" 2>/dev/null) && [ -n "$now" ] && echo "same-images:   $now"
+done) &
+heartbeat=$!
+trap 'kill $heartbeat 2>/dev/null; rm -rf "$tmp"' EXIT
 trap 'exit 130' INT TERM
 
 count=0 failed=0 skipped=0
 # Renders scene ($1, a path) with the extra options $2 by both parts and compares.
 compare() {
     scene=$1 options=$2
+    echo "$count checks so far; now ${scene#"$top"/}" >"$tmp/now"
     # shellcheck disable=SC2086 # options are words by design
     if ! "$old" -q -j 2 "$scene" "$tmp/old.pfm" $options 2>"$tmp/err"; then
         # A mesh missing from the corpus: part 1.3 cannot render it either.
@@ -60,12 +69,14 @@ for bad in 4 7 x 1.5; do
 done
 
 for part in 1.1-spheres-red 1.2-shading 1.3-shadows-mirror; do
+    echo "same-images: the reference scenes of part ${part%%-*}, in modes 0 and 3 against part 1.3..."
     while read -r image scene options; do
         case $image in '' | '#'*) continue ;; esac
         compare "$top/$scene" "$options"
     done <"$top/milestones/$part/references/renders.txt"
 done
 if [ -d "$corpus" ]; then
+    echo "same-images: the course's scenes, in modes 0 and 3 against part 1.3..."
     for scene in $(cd "$corpus" && find . \( -name '*.scn' -o -name '*.txt' \) | sort); do
         scene=${scene#./}
         case $scene in fall2016*) convention=fall2016 ;; *) convention=lecture ;; esac

@@ -1,13 +1,53 @@
 /* test_bvh.c: the BVH's invariants, and its answers equal to brute force for random rays. */
+#include <stdarg.h>
 #include <stdint.h>
 #include <stdio.h>
 #include <stdlib.h>
+#include <time.h>
 
 #include "accel.h"
 #include "bvh.h"
 #include "camera.h"
 #include "testing.h"
 #include "world.h"
+
+/* Returns the time in seconds on a clock that only goes forward. */
+static double seconds_now(void)
+{
+    struct timespec ts;
+    clock_gettime(CLOCK_MONOTONIC, &ts);
+    return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
+}
+
+/* When the last progress line was printed, or 0 before the first call in this test's
+ * process: the long steps print one every 2 s or so, so that a student does not take a
+ * long test for a hung one. */
+static double progress_last;
+
+/* Prints "test_bvh: " and what the long step now starting does, on the standard error,
+ * which shows it at once. */
+static void progress(const char *format, ...)
+{
+    va_list args;
+    va_start(args, format);
+    fputs("test_bvh: ", stderr);
+    vfprintf(stderr, format, args);
+    fputs("...\n", stderr);
+    va_end(args);
+    progress_last = seconds_now();
+}
+
+/* Prints how far a long loop is, done of total things, if 2 s have passed since the last
+ * line (or since the first call, in a test that has printed none). */
+static void progress_tick(long done, long total, const char *things)
+{
+    if (progress_last == 0)
+        progress_last = seconds_now();
+    if (seconds_now() - progress_last < 2)
+        return;
+    fprintf(stderr, "test_bvh:   %ld of %ld %s\n", done, total, things);
+    progress_last = seconds_now();
+}
 
 /* A small deterministic random generator (xorshift64*), so that failures repeat. */
 static uint64_t rng_state = 0x9E3779B97F4A7C15u;
@@ -108,6 +148,12 @@ static const char *surface_name(const Scene *scene, int s, char *buf, size_t siz
     return buf;
 }
 
+/* Returns the ending of a count of n things: "" for one, "s" for more or none. */
+static const char *plural(int n)
+{
+    return n == 1 ? "" : "s";
+}
+
 /* Tells whether box inner lies inside box outer (faces may touch). */
 static bool box_contains(Box outer, Box inner)
 {
@@ -115,13 +161,54 @@ static bool box_contains(Box outer, Box inner)
            inner.hi.x <= outer.hi.x && inner.hi.y <= outer.hi.y && inner.hi.z <= outer.hi.z;
 }
 
+/* Writes box b into buf as [(lo) to (hi)], with digits enough to show box_pad's margin. */
+static const char *box_text(Box b, char *buf, size_t size)
+{
+    snprintf(buf, size, "[(%.9g, %.9g, %.9g) to (%.9g, %.9g, %.9g)]", b.lo.x, b.lo.y, b.lo.z,
+             b.hi.x, b.hi.y, b.hi.z);
+    return buf;
+}
+
+/* Returns the box of sphere or triangle s of scene as box.c's contract has it, worked out
+ * here rather than asked of box_of_surface, so that a leaf is held to the box its
+ * primitive should have: the least and greatest coordinates, grown by box_pad if padded. */
+static Box reference_box(const Scene *scene, int s, bool padded)
+{
+    Box b;
+    if (s < scene->sphere_count) {
+        const Sphere *sphere = &scene->spheres[s];
+        Vec3 r = vec3(sphere->radius, sphere->radius, sphere->radius);
+        b = (Box){vec3_sub(sphere->center, r), vec3_add(sphere->center, r)};
+    } else {
+        Triangle t = scene_triangle(scene, s - scene->sphere_count - scene->plane_count);
+        b = box_add_point(box_add_point((Box){*t.a, *t.a}, *t.b), *t.c);
+    }
+    return padded ? box_pad(b) : b;
+}
+
 /* What walking a hierarchy found, and the first thing wrong with it, in words. */
 typedef struct {
     const Bvh *bvh;
-    int *leaf_of; /* for each surface: the leaf it is in, or -1 */
-    int nodes, leaves, depth;
-    char wrong[400];
+    int *leaf_of;  /* for each surface: the leaf it is in, or -1 */
+    int *named_by; /* for each node: the reference to it (see ref_name), or -2 before */
+    int nodes, leaves, depth, found; /* found: the primitives of the leaves walked */
+    char wrong[900];
 } Walk;
+
+/* Writes into buf the name of reference who: -1 the root (bvh->root), 2 p + k child k of
+ * node p; and into box_buf, if not NULL, the name of the box it has there. */
+static const char *ref_name(int who, char *buf, size_t size, char *box_buf, size_t box_size)
+{
+    if (who < 0)
+        snprintf(buf, size, "the root");
+    else
+        snprintf(buf, size, "node %d's child %d", who / 2, who % 2);
+    if (box_buf != NULL && who < 0)
+        snprintf(box_buf, box_size, "the root's box (bvh->box)");
+    else if (box_buf != NULL)
+        snprintf(box_buf, box_size, "node %d's box of its child %d", who / 2, who % 2);
+    return buf;
+}
 
 /* Returns the box of child k of node. */
 static Box node_box(const BvhNode *node, int k)
@@ -130,104 +217,188 @@ static Box node_box(const BvhNode *node, int k)
                  vec3(node->bound[1][0][k], node->bound[1][1][k], node->bound[1][2][k])};
 }
 
-/* Checks the subtree at ref, whose box (named whose) is box, at depth, recursively;
- * false, with w->wrong said, at the first thing wrong. */
-static bool walk(Walk *w, BvhRef ref, Box box, const char *whose, int depth)
+/* Checks the leaf ref, named by who, whose box is box: its run of prims, each primitive
+ * once in the whole tree and inside the box, padded; false, with w->wrong said, if not. */
+static bool walk_leaf(Walk *w, BvhRef ref, Box box, int who)
 {
     const Bvh *bvh = w->bvh;
     const Scene *scene = bvh->scene;
-    char name[100];
-    if (depth > w->depth)
-        w->depth = depth;
-    if (depth >= BVH_MAX_DEPTH) {
+    char self[60], whose[80], name[100], inner[160], outer[160];
+    ref_name(who, self, sizeof self, whose, sizeof whose);
+    int leaf = w->leaves++;
+    progress_tick(w->found, bvh->prim_count, "primitives found in their leaves");
+    if (ref.count > BVH_MAX_LEAF || ref.index + (uint64_t)ref.count > (uint64_t)bvh->prim_count) {
         snprintf(w->wrong, sizeof w->wrong,
-                 "the tree is %d levels deep or more (BVH_MAX_DEPTH): "
-                 "do two nodes name each other as children?",
-                 BVH_MAX_DEPTH);
+                 "leaf %d (%s) holds prims[%u] to prims[%u], but a leaf "
+                 "holds at most BVH_MAX_LEAF (%d) of the %d entries",
+                 leaf, self, ref.index, ref.index + ref.count - 1, BVH_MAX_LEAF, bvh->prim_count);
         return false;
     }
-    if (ref.count > 0) {
-        int leaf = w->leaves++;
-        if (ref.count > BVH_MAX_LEAF ||
-            ref.index + (uint64_t)ref.count > (uint64_t)bvh->prim_count) {
+    for (uint32_t k = ref.index; k < ref.index + ref.count; k++) {
+        int p = bvh->prims[k];
+        bool plane = p >= scene->sphere_count && p < scene->sphere_count + scene->plane_count;
+        surface_name(scene, p, name, sizeof name);
+        if (plane || p < 0 ||
+            p >= scene->sphere_count + scene->plane_count + scene->triangle_count) {
             snprintf(w->wrong, sizeof w->wrong,
-                     "leaf %d holds prims[%u] to prims[%u], but a leaf "
-                     "holds at most BVH_MAX_LEAF (%d) of the %d entries",
-                     leaf, ref.index, ref.index + ref.count - 1, BVH_MAX_LEAF, bvh->prim_count);
+                     "leaf %d (%s) holds %s: a leaf holds spheres and triangles only", leaf, self,
+                     name);
             return false;
         }
-        for (uint32_t k = ref.index; k < ref.index + ref.count; k++) {
-            int p = bvh->prims[k];
-            bool plane = p >= scene->sphere_count && p < scene->sphere_count + scene->plane_count;
-            surface_name(scene, p, name, sizeof name);
-            if (plane || p < 0 ||
-                p >= scene->sphere_count + scene->plane_count + scene->triangle_count) {
-                snprintf(w->wrong, sizeof w->wrong,
-                         "leaf %d holds %s: a leaf holds spheres and "
-                         "triangles only",
-                         leaf, name);
-                return false;
-            }
-            if (w->leaf_of[p] >= 0) {
-                if (w->leaf_of[p] == leaf)
-                    snprintf(w->wrong, sizeof w->wrong, "leaf %d holds %s twice", leaf, name);
-                else
-                    snprintf(w->wrong, sizeof w->wrong,
-                             "%s is in leaf %d and in leaf %d: every "
-                             "primitive belongs in one leaf",
-                             name, w->leaf_of[p], leaf);
-                return false;
-            }
-            w->leaf_of[p] = leaf;
-            if (!box_contains(box, box_of_surface(scene, p))) {
-                snprintf(w->wrong, sizeof w->wrong, "%s does not hold %s, which is in leaf %d",
-                         whose, name, leaf);
-                return false;
-            }
+        if (w->leaf_of[p] >= 0) {
+            if (w->leaf_of[p] == leaf)
+                snprintf(w->wrong, sizeof w->wrong, "leaf %d (%s) holds %s twice", leaf, self,
+                         name);
+            else
+                snprintf(
+                    w->wrong, sizeof w->wrong,
+                    "%s is in leaf %d and in leaf %d (%s): every primitive belongs in one leaf",
+                    name, w->leaf_of[p], leaf, self);
+            return false;
         }
-        return true;
-    }
-    if ((int)ref.index >= bvh->node_count || (int)ref.index < 0) {
-        snprintf(w->wrong, sizeof w->wrong,
-                 "node %u is in the tree (below %s), but the build "
-                 "made %d nodes",
-                 ref.index, whose, bvh->node_count);
+        w->leaf_of[p] = leaf;
+        w->found++;
+        Box padded = reference_box(scene, p, true);
+        if (box_contains(box, padded))
+            continue;
+        if (box_contains(box, reference_box(scene, p, false)))
+            snprintf(w->wrong, sizeof w->wrong,
+                     "leaf %d (%s) holds %s, whose box, grown by box_pad's margin (2^-20 of its "
+                     "largest coordinate, on every side), is %s; the leaf's box, %s, %s, holds "
+                     "the %s but not the margin: box_of_sphere and box_of_triangle must grow "
+                     "every surface's box by box_pad, or a ray through a corner may miss the box "
+                     "yet hit the surface",
+                     leaf, self, name, box_text(padded, inner, sizeof inner), whose,
+                     box_text(box, outer, sizeof outer),
+                     p < scene->sphere_count ? "sphere" : "triangle");
+        else
+            snprintf(w->wrong, sizeof w->wrong,
+                     "%s, %s, does not hold %s, whose box is %s, though the leaf (leaf %d) holds "
+                     "it: a leaf's box must hold its primitives' boxes; build_node returns in "
+                     "*box_out the union of its primitives' boxes (bvh->boxes), not of their "
+                     "centroids",
+                     whose, box_text(box, outer, sizeof outer), name,
+                     box_text(padded, inner, sizeof inner), leaf);
         return false;
     }
-    const BvhNode *node = &bvh->nodes[ref.index];
+    return true;
+}
+
+static bool walk(Walk *w, BvhRef ref, Box box, int who, int depth);
+
+/* Checks the interior node that ref, named by who, names, and its subtree (box is the box
+ * it has there): a node that exists, named once, whose box holds its children's boxes;
+ * false, with w->wrong said, at the first thing wrong. */
+static bool walk_node(Walk *w, BvhRef ref, Box box, int who, int depth)
+{
+    const Bvh *bvh = w->bvh;
+    char self[60], whose[80], other[60], inner[160], outer[160];
+    ref_name(who, self, sizeof self, whose, sizeof whose);
+    /* A reference of count 0 names a node, so a leaf of 0 primitives poses as one. */
+    const char *empty_leaf = "is it a leaf of 0 primitives, whose count of 0 makes it a node's "
+                             "reference? build_node must never build a subtree over no "
+                             "primitives (a split that leaves one side empty)";
+    if (who < 0 && bvh->node_count == 0) {
+        snprintf(w->wrong, sizeof w->wrong,
+                 "the root has a count of 0, so it names node %u, but build_node made no node "
+                 "(bvh->node_count is 0): is build_node written yet? A leaf's count is 1 to "
+                 "BVH_MAX_LEAF, never 0",
+                 ref.index);
+        return false;
+    }
+    if (ref.index >= (uint32_t)bvh->node_count) {
+        snprintf(w->wrong, sizeof w->wrong,
+                 "%s has a count of 0, so it names node %u, but build_node made only nodes 0 to "
+                 "%d: %s",
+                 self, ref.index, bvh->node_count - 1, empty_leaf);
+        return false;
+    }
+    if (w->named_by[ref.index] != -2) {
+        snprintf(w->wrong, sizeof w->wrong,
+                 "%s and %s both name node %u, but a node has one parent: %s; or else a node "
+                 "names itself or a node above it",
+                 ref_name(w->named_by[ref.index], other, sizeof other, NULL, 0), self, ref.index,
+                 empty_leaf);
+        return false;
+    }
+    w->named_by[ref.index] = who;
     w->nodes++;
+    const BvhNode *node = &bvh->nodes[ref.index];
     for (int c = 0; c < 2; c++) {
         Box child = node_box(node, c);
-        char child_whose[100];
-        snprintf(child_whose, sizeof child_whose, "node %u's box of its child %d", ref.index, c);
         if (!box_contains(box, child)) {
-            snprintf(w->wrong, sizeof w->wrong, "%s does not lie inside %s", child_whose, whose);
+            snprintf(w->wrong, sizeof w->wrong,
+                     "node %u's box of its child %d, %s, does not lie inside %s, %s, the box of "
+                     "node %u itself: a node's box must hold its children's boxes; build_node "
+                     "returns in *box_out the union of all its primitives' boxes",
+                     ref.index, c, box_text(child, inner, sizeof inner), whose,
+                     box_text(box, outer, sizeof outer), ref.index);
             return false;
         }
-        if (!walk(w, node->child[c], child, child_whose, depth + 1))
+        if (!walk(w, node->child[c], child, 2 * (int)ref.index + c, depth + 1))
             return false;
     }
     return true;
 }
 
-/* Builds the BVH of scene and checks every invariant of its structure: every sphere and
- * triangle in exactly one leaf, inside every box above it. */
-static void check_invariants(const Scene *scene)
+/* Checks the subtree at ref, named by who, whose box is box, at depth (the root's 0):
+ * no deeper than BVH_MAX_DEPTH, then as a leaf or a node; false, with w->wrong said, at
+ * the first thing wrong. */
+static bool walk(Walk *w, BvhRef ref, Box box, int who, int depth)
+{
+    char self[60];
+    if (depth > w->depth)
+        w->depth = depth;
+    if (depth > BVH_MAX_DEPTH) {
+        snprintf(w->wrong, sizeof w->wrong,
+                 "%s lies %d levels below the root: the tree is deeper than BVH_MAX_DEPTH (%d), "
+                 "the cap bvh_traverse's stack of BVH_MAX_DEPTH subtrees relies on; below some "
+                 "depth (bvh.c: SAH_MAX_DEPTH, each child one level below its node) build_node "
+                 "must stop asking bvh_split and halve its primitives as they lie",
+                 ref_name(who, self, sizeof self, NULL, 0), depth, BVH_MAX_DEPTH);
+        return false;
+    }
+    return ref.count > 0 ? walk_leaf(w, ref, box, who) : walk_node(w, ref, box, who, depth);
+}
+
+/* Builds the BVH of scene, which what names, and checks every invariant of its structure:
+ * no more nodes than a tree over its primitives can have, no empty leaf, no node named
+ * twice, no deeper than BVH_MAX_DEPTH, every sphere and triangle in exactly one leaf,
+ * inside every box above it; and what the build counted is what is there. */
+static void check_invariants(const Scene *scene, const char *what)
 {
     Bvh bvh;
     ck_assert_msg(bvh_build(&bvh, scene), "bvh_build failed");
     int n = scene->sphere_count + scene->triangle_count;
+    progress_tick(0, n, "primitives found in their leaves"); /* the build done, if it was long */
     int all = n + scene->plane_count;
+    char counts[80];
+    snprintf(counts, sizeof counts, "%d sphere%s, %d triangle%s", scene->sphere_count,
+             plural(scene->sphere_count), scene->triangle_count, plural(scene->triangle_count));
     ck_assert_int_eq(bvh.prim_count, n);
     if (n == 0) {
-        ck_assert_int_eq(bvh.node_count, 0);
+        ck_assert_msg(bvh.node_count == 0,
+                      "the BVH of %s, which has no sphere or triangle, has %d nodes, not 0", what,
+                      bvh.node_count);
         bvh_free(&bvh);
         return;
     }
-    Walk w = {.bvh = &bvh, .leaf_of = malloc((size_t)all * sizeof(int))};
+    /* Checked first: more nodes than that have been written past the end of bvh->nodes. */
+    ck_assert_msg(bvh.node_count <= n - 1,
+                  "the BVH of %s (%s): build_node made %d interior node%s for n = %d: with their "
+                  "leaves, more than the 2n - 1 = %d nodes a tree over n primitives can have (n "
+                  "leaves at most, and one interior node fewer), and more than bvh_build's array "
+                  "of n - 1 nodes holds: does build_node take a node's entry before it knows it "
+                  "will split (a leaf takes none), or make leaves of 0 primitives?",
+                  what, counts, bvh.node_count, plural(bvh.node_count), n, 2 * n - 1);
+    Walk w = {.bvh = &bvh,
+              .leaf_of = malloc((size_t)all * sizeof(int)),
+              .named_by = malloc((size_t)(bvh.node_count > 0 ? bvh.node_count : 1) * sizeof(int))};
     for (int p = 0; p < all; p++)
         w.leaf_of[p] = -1;
-    bool ok = walk(&w, bvh.root, bvh.box, "the root's box", 0);
+    for (int k = 0; k < bvh.node_count; k++)
+        w.named_by[k] = -2;
+    bool ok = walk(&w, bvh.root, bvh.box, -1, 0);
     char name[100];
     for (int p = 0; ok && p < all; p++)
         if (w.leaf_of[p] < 0 &&
@@ -237,14 +408,23 @@ static void check_invariants(const Scene *scene)
             ok = false;
         }
     free(w.leaf_of);
-    ck_assert_msg(ok, "build_node (bvh_split): the BVH of %d spheres and %d triangles: %s", scene->sphere_count,
-                  scene->triangle_count, w.wrong);
+    free(w.named_by);
+    ck_assert_msg(ok, "the BVH of %s (%s): %s", what, counts, w.wrong);
     /* What the build counted is what is there; a binary tree of L leaves has L - 1 nodes. */
-    ck_assert_msg(w.nodes == bvh.node_count && w.depth == bvh.depth,
-                  "build_node counted %d nodes and %d levels; the tree has %d and %d",
-                  bvh.node_count, bvh.depth, w.nodes, w.depth);
-    ck_assert_msg(w.nodes == w.leaves - 1, "build_node: %d leaves, but %d interior nodes, not %d",
-                  w.leaves, w.nodes, w.leaves - 1);
+    ck_assert_msg(w.nodes == bvh.node_count,
+                  "the BVH of %s: build_node took %d entries of bvh->nodes, but %d nodes are in "
+                  "the tree: %s",
+                  what, bvh.node_count, w.nodes,
+                  bvh.node_count > w.nodes
+                      ? "a leaf takes no entry; a node takes one once it knows it will split"
+                      : "bvh->node_count must count every node made");
+    ck_assert_msg(w.depth == bvh.depth,
+                  "the BVH of %s: build_node keeps %d as the deepest depth (bvh->depth), but the "
+                  "tree goes %d levels below the root",
+                  what, bvh.depth, w.depth);
+    ck_assert_msg(w.nodes == w.leaves - 1,
+                  "the BVH of %s: %d leaves, but %d interior nodes, not %d", what, w.leaves,
+                  w.nodes, w.leaves - 1);
     bvh_free(&bvh);
 }
 
@@ -254,7 +434,7 @@ START_TEST(invariants_of_random_soups)
     for (size_t k = 0; k < sizeof sizes / sizeof sizes[0]; k++) {
         Scene scene;
         random_scene(&scene, sizes[k], 0.05, sizes[k] / 10, 0);
-        check_invariants(&scene);
+        check_invariants(&scene, "a random soup");
         scene_free(&scene);
     }
 }
@@ -267,27 +447,27 @@ START_TEST(invariants_of_degenerate_sets)
     random_scene(&scene, 500, 0.05, 0, 0);
     for (int k = 1; k < 500; k++)
         scene.triangles[k] = scene.triangles[0];
-    check_invariants(&scene);
+    check_invariants(&scene, "500 copies of one triangle");
     /* Triangles without area, all on one line. */
     for (int k = 0; k < 500; k++)
         set_triangle(&scene, k, vec3(k, 0, 0), vec3(k + 1, 0, 0), vec3(k + 2, 0, 0), 0);
-    check_invariants(&scene);
+    check_invariants(&scene, "500 triangles without area on one line");
     /* Points: triangles whose three corners coincide, some at the same place. */
     for (int k = 0; k < 500; k++) {
         Vec3 p = vec3(k % 7, 0, 0);
         set_triangle(&scene, k, p, p, p, 0);
     }
-    check_invariants(&scene);
+    check_invariants(&scene, "500 triangles shrunk to points at 7 places");
     /* Depth: sizes doubling, each triangle twice as far as the last, a chain for the SAH. */
     for (int k = 0; k < 500; k++) {
         double x = ldexp(1, k % 60);
         set_triangle(&scene, k, vec3(x, 0, 0), vec3(x, 1, 0), vec3(x, 0, 1), 0);
     }
-    check_invariants(&scene);
+    check_invariants(&scene, "500 triangles at x = 2^(k mod 60)");
     scene_free(&scene);
     /* Planes only: no primitive in the hierarchy at all. */
     random_scene(&scene, 0, 0.05, 0, 3);
-    check_invariants(&scene);
+    check_invariants(&scene, "3 planes alone");
     scene_free(&scene);
 }
 END_TEST
@@ -549,11 +729,14 @@ static bool same_as_brute_force(const Bvh *bvh, Ray r, double tmin, double tmax,
  * half in any direction; tmax is random for half of them. */
 static void compare_with_brute_force(const Scene *scene, int count, double lo, double hi)
 {
+    progress("comparing %d random rays with brute force over %d spheres and %d triangles", count,
+             scene->sphere_count, scene->triangle_count);
     Bvh bvh;
     ck_assert(bvh_build(&bvh, scene));
     Box all = bvh.box;
     int hits = 0;
     for (int k = 0; k < count; k++) {
+        progress_tick(k, count, "rays");
         Vec3 o = rnd_point(lo, hi), target = vec3_add(all.lo, vec3(rnd() * (all.hi.x - all.lo.x),
                                                                    rnd() * (all.hi.y - all.lo.y),
                                                                    rnd() * (all.hi.z - all.lo.z)));
@@ -573,21 +756,40 @@ static void compare_with_brute_force(const Scene *scene, int count, double lo, d
     bvh_free(&bvh);
 }
 
+/* Loads the scene file at path into scene, without its warnings (a triangle without area
+ * skipped), which are not the test's news. */
+static void load_scene_file(Scene *scene, const char *path)
+{
+    FILE *quiet = fopen("/dev/null", "w");
+    SceneLoadOptions opts = {.messages = quiet};
+    bool loaded = scene_load(scene, path, &opts);
+    if (quiet != NULL)
+        fclose(quiet);
+    ck_assert_msg(loaded, "cannot read %s", path);
+}
+
+/* Loads scene file name of scenes/ into scene. */
+static void load_scene(Scene *scene, const char *name)
+{
+    char path[600];
+    snprintf(path, sizeof path, "%s/scenes/%s", TOP_DIR, name);
+    load_scene_file(scene, path);
+}
+
 /* Loads scene file name (in scenes/) and compares, for every step-th pixel, its camera
  * ray and a shadow ray from what it hits towards the first light with brute force. */
 static void compare_pixels(const char *name, int step)
 {
-    char path[600];
-    snprintf(path, sizeof path, "%s/scenes/%s", TOP_DIR, name);
+    progress("comparing the pixels of scenes/%s with brute force", name);
     Scene scene;
-    SceneLoadOptions opts = {0};
-    ck_assert_msg(scene_load(&scene, path, &opts), "cannot read %s", path);
+    load_scene(&scene, name);
     Bvh bvh;
     ck_assert(bvh_build(&bvh, &scene));
     Camera camera = camera_make(&scene.camera);
     int nx = scene.camera.nx, ny = scene.camera.ny;
     for (int row = 0; row < ny; row += step)
         for (int i = 0; i < nx; i += step) {
+            progress_tick(row, ny, "rows");
             /* Pixel (i, row), row counted from the top as --trace-pixel counts it. */
             Ray r = camera_ray(&camera, i + 0.5, ny - 1 - row + 0.5);
             char why[400];
@@ -639,6 +841,7 @@ START_TEST(node_hit_is_box_hit)
     const double scales[] = {1e-3, 1, 1e3, 1e6};
     long met = 0;
     for (int k = 0; k < 100000; k++) {
+        progress_tick(k, 100000, "pairs of boxes");
         double scale = scales[k % 4];
         Box box[2] = {rnd_box(scale), rnd_box(scale)};
         BvhNode node;
@@ -697,10 +900,12 @@ START_TEST(modes_0_and_3_as_brute_force)
     Scene scene;
     random_scene(&scene, 500, 0.1, 20, 3);
     for (AccelMode mode = ACCEL_BOXED; mode <= ACCEL_BVH; mode += 3) {
+        progress("comparing mode %d with brute force for 20000 random rays", mode);
         Accel accel;
         ck_assert(accel_build(&accel, &scene, mode));
         Surfaces s = accel_surfaces(&accel);
         for (int k = 0; k < 20000; k++) {
+            progress_tick(k, 20000, "rays");
             Ray r = ray(rnd_point(-0.2, 1.2), rnd_dir());
             Hit want, got;
             char a[160], b[160];
@@ -726,25 +931,105 @@ START_TEST(modes_0_and_3_as_brute_force)
 }
 END_TEST
 
-START_TEST(bunny_as_brute_force)
+/* Loads mesh name.obj of ../shared/meshes, the course's big meshes, which a starter does
+ * not have, into scene (through a scene file written here); false, saying that test
+ * skips it, when the mesh is not there. */
+static bool load_shared_mesh(Scene *scene, const char *name, const char *test)
 {
-    const char *mesh = TOP_DIR "/../shared/meshes/bunny.obj";
+    char mesh[600], file[100];
+    snprintf(mesh, sizeof mesh, "%s/../shared/meshes/%s.obj", TOP_DIR, name);
     FILE *probe = fopen(mesh, "r");
     if (probe == NULL) {
-        printf("bunny_as_brute_force: SKIPPED: %s does not exist\n", mesh);
-        return;
+        printf("%s: SKIPPED %s: %s does not exist\n", test, name, mesh);
+        return false;
     }
     fclose(probe);
-    FILE *f = fopen("bunny.scn", "w");
+    snprintf(file, sizeof file, "%s.scn", name);
+    FILE *f = fopen(file, "w");
+    ck_assert_msg(f != NULL, "cannot write %s in the test's folder", file);
     fprintf(f, "c 0 0.1 0.5  0 0 -1  35  35 35  10 10\nm 1 1 1 0 0 0 1 0 0 0\nw %s\n", mesh);
     fclose(f);
+    progress("loading %s", mesh);
+    load_scene_file(scene, file);
+    return true;
+}
+
+START_TEST(bunny_as_brute_force)
+{
     Scene scene;
-    SceneLoadOptions opts = {0};
-    ck_assert(scene_load(&scene, "bunny.scn", &opts));
+    if (!load_shared_mesh(&scene, "bunny", "bunny_as_brute_force"))
+        return;
     ck_assert_int_gt(scene.triangle_count, 60000);
     /* The bunny fills about [-0.1, 0.06] x [0.03, 0.19] x [-0.06, 0.06]: rays from
      * around and inside it; brute force costs 70 000 tests a ray, so only a few thousand. */
     compare_with_brute_force(&scene, 3000, -0.12, 0.2);
+    scene_free(&scene);
+}
+END_TEST
+
+/* The BVH of every scene whose geometry the course's checks draw, and of the bunny and
+ * Crytek's Sponza when ../shared/meshes has them: every invariant of check_invariants. */
+START_TEST(invariants_of_real_scenes)
+{
+    const char *names[] = {"demo.scn",           "demo-tour.scn",           "bvh-torus.scn",
+                           "bvh-ties.scn",       "degenerate-geometry.scn", "glass-mesh.scn",
+                           "glass-prism-tir.scn"};
+    for (size_t k = 0; k < sizeof names / sizeof names[0]; k++) {
+        char what[100];
+        snprintf(what, sizeof what, "scenes/%s", names[k]);
+        Scene scene;
+        load_scene(&scene, names[k]);
+        check_invariants(&scene, what);
+        scene_free(&scene);
+    }
+    const char *meshes[] = {"bunny", "sponza"};
+    for (size_t k = 0; k < sizeof meshes / sizeof meshes[0]; k++) {
+        Scene scene;
+        if (!load_shared_mesh(&scene, meshes[k], "invariants_of_real_scenes"))
+            continue;
+        char what[100];
+        snprintf(what, sizeof what, "the mesh %s.obj", meshes[k]);
+        progress("building and checking the BVH over %s (%d triangles)", meshes[k],
+                 scene.triangle_count);
+        check_invariants(&scene, what);
+        scene_free(&scene);
+    }
+}
+END_TEST
+
+/* Triangle k at x = 4^k, 0.3 * 4^k wide: of the SAH's 16 bins on x, the first holds every
+ * triangle but the last one or two, so each split peels off one or two, and the SAH alone
+ * would build a chain 86 levels deep (150 triangles: much beyond 4^170 the triangle test's
+ * products overflow). The build must stop at BVH_MAX_DEPTH, and a ray straight down onto
+ * each triangle must still find it. */
+START_TEST(depth_capped_on_a_chain)
+{
+    enum { COUNT = 150 };
+    Scene scene;
+    random_scene(&scene, COUNT, 0.05, 0, 0);
+    for (int k = 0; k < COUNT; k++) {
+        double x = ldexp(1, 2 * k), w = 0.3 * x;
+        set_triangle(&scene, k, vec3(x, 0, 0), vec3(x + w, 0, 0), vec3(x, w, 0), 0);
+    }
+    const char *what = "150 triangles along x, each 4 times as far out and as wide as the last";
+    check_invariants(&scene, what);
+    Bvh bvh;
+    ck_assert(bvh_build(&bvh, &scene));
+    for (int k = 0; k < COUNT; k++) {
+        double x = ldexp(1, 2 * k), w = 0.3 * x;
+        Ray r = ray(vec3(x + 0.1 * w, 0.1 * w, x), vec3(0, 0, -1));
+        char why[400], a[160];
+        Hit hit;
+        bool found, same = same_as_brute_force(&bvh, r, 0, INFINITY, &found, &hit, why, sizeof why);
+        ck_assert_msg(same,
+                      "the BVH of %s, %d levels deep: the ray straight down onto triangle %d: %s",
+                      what, bvh.depth, k, why);
+        ck_assert_msg(found && hit.index == k,
+                      "the ray straight down onto triangle %d finds %s, even by brute force: the "
+                      "test's own mistake",
+                      k, found_name(&scene, found, &hit, a, sizeof a));
+    }
+    bvh_free(&bvh);
     scene_free(&scene);
 }
 END_TEST
@@ -757,6 +1042,8 @@ static Suite *bvh_suite(void)
     tcase_set_timeout(tc, 300);
     tcase_add_test(tc, invariants_of_random_soups);
     tcase_add_test(tc, invariants_of_degenerate_sets);
+    tcase_add_test(tc, invariants_of_real_scenes);
+    tcase_add_test(tc, depth_capped_on_a_chain);
     tcase_add_test(tc, tests_counted_for_the_box_tests_view);
     tcase_add_test(tc, splits_by_the_sah);
     tcase_add_test(tc, traverse_nearer_first_and_stops);

@@ -6,14 +6,36 @@
 #include "image.h"
 #include "testing.h"
 
-/* Renders the scene file at path with the part's program and arguments into img (PFM). */
+/* Renders the scene file at path with the part's program and arguments into img (PFM);
+ * fails, in words, when raytra fails or says that a pixel came out NaN or infinite (it
+ * writes such a pixel magenta, which no statistic would see for what it is). */
 static void render(const char *path, const char *arguments, Image *img)
 {
-    char command[2048];
-    snprintf(command, sizeof command, "'%s' -q '%s' out.pfm %s", RAYTRA, path, arguments);
-    ck_assert_int_eq(system(command), 0);
+    char command[2048], said[2048] = "";
+    snprintf(command, sizeof command, "'%s' -q '%s' out.pfm %s 2>render.log", RAYTRA, path,
+             arguments);
+    int status = system(command);
+    FILE *log = fopen("render.log", "r");
+    if (log != NULL) {
+        said[fread(said, 1, sizeof said - 1, log)] = '\0';
+        fclose(log);
+    }
+    ck_assert_msg(status == 0, "raytra fails (wait status %d) to render %s with %s:\n%s", status,
+                  path, arguments, said);
+    const char *nonfinite = strstr(said, "came out NaN or infinite"), *first;
+    int x = 0, y = 0;
+    if (nonfinite != NULL && (first = strstr(nonfinite, "the first is at column ")) != NULL)
+        sscanf(first, "the first is at column %d, row %d", &x, &y);
+    ck_assert_msg(nonfinite == NULL,
+                  "rendering %s with %s, raytra says that pixels %.*s: a pixel is the mean of its "
+                  "P x P rays (montecarlo_pixel, 1/P^2 each), each lit by S x S shadow rays of "
+                  "1/S^2 of the light (area_incident); does something divide by 0? "
+                  "--trace-pixel %d,%d shows the first one's rays",
+                  path, arguments, (int)strcspn(nonfinite ? nonfinite : "", ".\n"),
+                  nonfinite ? nonfinite : "", x, y);
     Error err;
-    ck_assert_msg(image_read_pfm(img, "out.pfm", &err), "%s", err.text);
+    ck_assert_msg(image_read_pfm(img, "out.pfm", &err), "cannot read the render of %s: %s", path,
+                  err.text);
 }
 
 /* The edge of the anti-aliasing test, in pixel coordinates: y = a + b x. */
@@ -73,19 +95,32 @@ START_TEST(an_edge_converges_to_the_covered_fraction)
         for (int j = 0; j < 40; j++)
             for (int i = 0; i < 40; i++) {
                 double want = covered(i, j), got = image_get(&img, i, 39 - j).r;
-                if (want == 0 || want == 1)
-                    ck_assert_double_eq_tol(got, want, 1e-12); /* all in or all out */
+                if (want == 0 || want == 1) /* all in or all out */
+                    ck_assert_msg(fabs(got - want) < 1e-12,
+                                  "pixel %d,%d lies all %s the triangle, yet at P = %d it is "
+                                  "%.17g, not %g: every ray of a pixel goes through a point of "
+                                  "the pixel (montecarlo_point), and the pixel is their mean "
+                                  "(montecarlo_pixel)",
+                                  i, 39 - j, want == 1 ? "inside" : "outside", p, got, want);
                 else
                     error += fabs(got - want), crossed++;
             }
         error /= crossed;
         fprintf(stderr, "P = %2d: mean error %.4f over the %d pixels on the edge\n", p, error,
                 crossed);
-        ck_assert(error < 0.7 * previous);
+        ck_assert_msg(error < 0.7 * previous,
+                      "at P = %d the mean error of the %d pixels on the edge is %.4f, not below "
+                      "0.7 of P = %d's %.4f: more rays a pixel must measure the fraction it "
+                      "covers better, montecarlo_point putting ray k at a random point of "
+                      "sub-square k, and montecarlo_pixel averaging them",
+                      p, crossed, error, p / 2, previous);
         previous = error;
         image_free(&img);
     }
-    ck_assert(previous < 0.01);
+    ck_assert_msg(previous < 0.01,
+                  "at P = 16 the mean error of the pixels on the edge is %.4f, not under 0.01: "
+                  "256 jittered rays a pixel measure the fraction it covers to about 0.005",
+                  previous);
 }
 END_TEST
 /* end excerpt: antialiasing-test */
@@ -96,7 +131,7 @@ static void write_soft_shadow(const char *out, const char *light)
     char path[512], line[512];
     snprintf(path, sizeof path, "%s/scenes/soft-shadow.scn", TOP_DIR);
     FILE *in = fopen(path, "r"), *f = fopen(out, "w");
-    ck_assert(in != NULL && f != NULL);
+    ck_assert_msg(in != NULL && f != NULL, "cannot read %s, or cannot write %s", path, out);
     while (fgets(line, sizeof line, in) != NULL)
         fputs(strncmp(line, "l s", 3) == 0 ? light : line, f);
     fclose(in);
@@ -122,8 +157,17 @@ START_TEST(a_tiny_square_light_is_a_point_light)
                 worst = fmax(worst, d);
         }
     /* Only a pixel whose shadow ray grazes a sphere may tell the two apart. */
-    ck_assert_msg(off <= n / 1000, "%d of %d pixels differ", off, n);
-    ck_assert(worst < 1e-4);
+    ck_assert_msg(off <= n / 1000,
+                  "%d of the %d pixels of soft-shadow.scn (1 3 --scale 0.5) lit by a square light "
+                  "0.0001 wide differ by more than 1e-4 from the scene lit by a point light at its "
+                  "centre, more than 1 in 1000: a tiny square light lights as a point light, each "
+                  "of its S x S shadow rays a point light of 1/S^2 of its colour (area_incident) "
+                  "at a point of the square (area_point)",
+                  off, n);
+    ck_assert_msg(worst < 1e-4,
+                  "the pixels of soft-shadow.scn lit by a tiny square light that agree with the "
+                  "point light's agree only to %g, not under 1e-4",
+                  worst);
     image_free(&tiny);
     image_free(&point);
 }
@@ -165,8 +209,20 @@ START_TEST(correlated_strata_make_less_noise)
            correlated = noise("correlated");
     fprintf(stderr, "mean pixel variance at 4 1: random %.3g, jittered %.3g, correlated %.3g\n",
             random, jittered, correlated);
-    ck_assert(jittered < random);
-    ck_assert(correlated < 0.7 * jittered);
+    ck_assert_msg(jittered < random,
+                  "at 4 1 (16 rays a pixel, one shadow ray each), the mean variance of a pixel of "
+                  "soft-shadow.scn over 12 seeds is %.3g with --sampling jittered, not below "
+                  "random's %.3g: one ray in each of the pixel's 4 x 4 sub-squares "
+                  "(montecarlo_point, strata_point's jittered mode) must make less noise than "
+                  "rays anywhere in it",
+                  jittered, random);
+    ck_assert_msg(correlated < 0.7 * jittered,
+                  "at 4 1, correlated strata give soft-shadow.scn a mean pixel variance of %.3g, "
+                  "not below 0.7 of jittered's %.3g: with S = 1, montecarlo_light_point must put "
+                  "a sample's shadow ray, jittered, in the light stratum the sample carries "
+                  "(sample->stratum of sample->strata_side x sample->strata_side), so that the "
+                  "pixel's 16 shadow rays cover the light once each",
+                  correlated, jittered);
 }
 END_TEST
 
@@ -179,8 +235,15 @@ START_TEST(the_same_seed_gives_the_same_image_and_another_seed_another)
     render(path, "2 2 --scale 0.25 --seed 5 -j 2", &b);
     render(path, "2 2 --scale 0.25 --seed 6 -j 2", &c);
     size_t bytes = sizeof *a.pixels * 3 * (size_t)(a.width * a.height);
-    ck_assert_int_eq(memcmp(a.pixels, b.pixels, bytes), 0);
-    ck_assert_int_ne(memcmp(a.pixels, c.pixels, bytes), 0);
+    ck_assert_msg(memcmp(a.pixels, b.pixels, bytes) == 0,
+                  "soft-shadow.scn at 2 2 --seed 5 renders otherwise on 1 and on 2 threads: a "
+                  "pixel's random numbers must come from (seed, pixel, sample) alone, so "
+                  "montecarlo_point and montecarlo_light_point draw them from the Rng they are "
+                  "given, never from a generator of their own");
+    ck_assert_msg(memcmp(a.pixels, c.pixels, bytes) != 0,
+                  "soft-shadow.scn at 2 2 renders the same with --seed 5 and --seed 6: the "
+                  "points of the rays and of the shadow rays must be drawn from the Rng they are "
+                  "given (montecarlo_point, montecarlo_light_point, strata_point)");
     image_free(&a);
     image_free(&b);
     image_free(&c);
