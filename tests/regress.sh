@@ -28,8 +28,22 @@ top=$(cd "$(dirname "$0")/.." && pwd)
 list=$refdir/renders.txt
 [ -f "$list" ] || { echo "regress.sh: no $list" >&2; exit 2; }
 tmp=$(mktemp -d)
-trap 'rm -rf "$tmp"' EXIT
+beat=
+trap 'rm -rf "$tmp"; [ -z "$beat" ] || kill "$beat" 2>/dev/null' EXIT
 trap 'exit 130' INT TERM
+
+# Runs a command; while it runs, says every 5 s how long the render of $image has taken,
+# so that a long one (minutes under the sanitizers) is not a silent one.
+beating() {
+    (begun=$(date +%s); while sleep 5; do echo "     ... $image: $(($(date +%s) - begun)) s"; done) &
+    beat=$!
+    "$@"
+    status=$?
+    kill "$beat" 2>/dev/null
+    wait "$beat" 2>/dev/null
+    beat=
+    return $status
+}
 
 failed=0
 count=0
@@ -45,7 +59,7 @@ while read -r image scene options; do
     two=$tmp/two-$image
     one=$tmp/one-$image
     # shellcheck disable=SC2086 # options are words by design
-    if ! "$raytra" -q -j 2 "$top/$scene" "$two" $options 2>"$tmp/err"; then
+    if ! beating "$raytra" -q -j 2 "$top/$scene" "$two" $options 2>"$tmp/err"; then
         echo "FAIL $image: raytra failed on $scene:"
         sed 's/^/    /' "$tmp/err"
         failed=$((failed + 1))
@@ -74,7 +88,7 @@ while read -r image scene options; do
         continue
     fi
     # shellcheck disable=SC2086
-    "$raytra" -q -j 1 "$top/$scene" "$one" $options 2>/dev/null
+    beating "$raytra" -q -j 1 "$top/$scene" "$one" $options 2>/dev/null
     if ! cmp -s "$one" "$two"; then
         echo "FAIL $image: 1 and 2 threads give different files"
         failed=$((failed + 1))
