@@ -401,7 +401,7 @@ find "$tmp/milestones" "$tmp/docs" -name '*.md' 2>/dev/null | while read -r md; 
             else if (url != "")
                 done = done (link ~ /^!/ ? "!" : "") "[" text "](" url "/" path substr(target, length(file) + 1) ")"
             else
-                done = done (text == path ? "" : text " (") "`" path "` in raytra'"'"'s repository" (text == path ? "" : ")") ", not in this starter"
+                done = done (text == path ? "`" path "` (" : text " (`" path "`, ") "in raytra'"'"'s repository, not in this starter)"
         }
         print done line
     }' "$md" >"$md.new" && mv "$md.new" "$md" || exit 2
