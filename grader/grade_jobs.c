@@ -152,7 +152,7 @@ static bool grade_in_workers(Grading *g, Eta *eta)
     return !stop_requested();
 }
 
-/* Grades every submission of g (a shard's slice with --shard),
+/* Grades every submission of g (a shard's slice with --shard, those named with --only),
  * --jobs at a time, telling the progress on g->progress, a line a submission that ends with
  * how many are done, the time elapsed and an ETA; false when interrupted. */
 bool jobs_grade_all(Grading *g)
@@ -162,6 +162,8 @@ bool jobs_grade_all(Grading *g)
             g->render_count == 1 ? "" : "s", g->sub_count, g->sub_count == 1 ? "" : "s");
     if (g->shard_n > 0)
         fprintf(f, " (shard %d of %d of a class of %d)", g->shard_k, g->shard_n, g->member_count);
+    if (g->only != NULL)
+        fprintf(f, " (regraded with --only, of a class of %d)", g->member_count);
     fprintf(f, g->jobs > 1 ? ", %d at a time\n" : "\n", g->jobs);
     fprintf(f, "grade: sandbox: %s\n", g->sandbox);
     if (g->illustrations != NULL)
