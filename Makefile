@@ -255,13 +255,15 @@ mistakes: all
 
 # Monte Carlo renders judged by statistics (grader/docs/statistics.md): right programs
 # (raytra and other generators and schemes) with MC_SEEDS seeds of their own each pass,
-# each variant of part 1.6 (tests/mc-variants) passes or fails as it should.
+# each variant of part 1.6 (tests/mc-variants) passes or fails as it should; first,
+# calibrate.sh's progress lines, with stand-ins for the programs (progress.sh).
 MC_PART := milestones/1.6-monte-carlo
 MC_SEEDS ?= 2
 check-statistics:
 	$(DEPS_STEP)
 	+@$(SUBMAKE) all
 	+@$(SUBMAKE) -C tests/mc-variants
+	@sh tests/mc-variants/progress.sh
 	@tests/mc-variants/calibrate.sh $(call program,1.6-monte-carlo) tests/mc-variants/$(BUILD) \
 	    $(MC_PART)/references $(MC_SEEDS)
 	@tests/mc-variants/run.sh $(call program,1.6-monte-carlo) tests/mc-variants/$(BUILD) \

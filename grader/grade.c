@@ -18,6 +18,7 @@
 #include "grade_out.h"
 #include "grade_part.h"
 #include "grade_path.h"
+#include "grade_regrade.h"
 #include "grade_renders.h"
 #include "grade_report.h"
 #include "grade_run.h"
@@ -71,6 +72,9 @@ static const GradeOption options[] = {
     {{"shard", 0, "K/N", "grade only the K-th of N slices of the class and\n"
       "write its results for grade merge (default --out:\ngrading-PART-shard-K-of-N)", NULL},
      OPT_TEXT, offsetof(Grading, shard)},
+    {{"only", 0, "NAMES", "regrade only the submissions NAMES (comma-\n"
+      "separated) into the class graded in --out before:\nthe others' results are kept, "
+      "the report rewritten", NULL}, OPT_TEXT, offsetof(Grading, only)},
     {{"run-as", 0, "USERS", "as root: run students' builds and programs as\n"
       "USERS (names or uids, one a job, comma-separated),\n"
       "users of their own whose every process is ended", NULL}, OPT_TEXT,
@@ -99,6 +103,7 @@ static void print_help(void)
 {
     printf("Usage: grade [options] PART SUBMISSIONS\n"
            "       grade --self [options] PART FOLDER\n"
+           "       grade --only NAME[,NAME...] --out OUT [options] PART SUBMISSIONS\n"
            "       grade merge [--out DIR] [--junit FILE] [-q] SHARD...\n"
            "Grades every submission in the folder SUBMISSIONS against the reference images\n"
            "of PART (1.1-spheres-red, 1.1, or a part's folder) and writes a report\n"
@@ -107,7 +112,8 @@ static void print_help(void)
            "with a Makefile whose make, run in a copy, builds raytra beside it, run as\n"
            "  raytra SCENE OUTPUT [arguments]\n"
            "for every scene, in a scratch folder, under the limits below. grade merge\n"
-           "writes one report of the folders of the shards of a class (--shard).\n\nOptions:\n");
+           "writes one report of the folders of the shards of a class (--shard); --only\n"
+           "grades some students again into the class's grading in OUT.\n\nOptions:\n");
     toolopt_print(stdout, options, sizeof options[0], OPTION_COUNT);
     printf("\nExit status: 0 when the report was written, whatever the verdicts; 2 when\n"
            "grading could not be done; 130 when interrupted. See docs/grading.md.\n");
@@ -158,7 +164,7 @@ static bool set_option(void *state, int k, const char *value)
  * did not pass), 2 when it could not be, 130 when interrupted. */
 int main(int argc, char **argv)
 {
-    static Grading g;
+    static Grading g, earlier; /* earlier: OUT's grading of the class, for --only */
     if (argc > 1 && strcmp(argv[1], "merge") == 0)
         return merge_main(argc - 1, argv + 1);
     for (int k = 0; k < OPTION_COUNT; k++)
@@ -185,19 +191,28 @@ int main(int argc, char **argv)
     cgroup_start();
     bool ok = contain_start(g.run_as, g.grader_user, g.jobs) && containment_choose(&g) &&
               part_find_top(&g) && part_find(&g, argv[optind]) && shard_parse(&g) &&
+              regrade_parse(&g) &&
               (path_kind(g.submissions) == S_IFDIR ||
                grade_fail("no folder %s", g.submissions)) &&
               renders_read(&g) && conf_read(&g) && out_prepare(&g) &&
+              regrade_read(&g, &earlier) &&
               part_render_hidden(&g) && part_show_references(&g) &&
-              (part_make_canaries(&g), submission_list(&g)) && (shard_select(&g), jobs_grade_all(&g)) &&
+              (part_make_canaries(&g), submission_list(&g)) &&
+              (shard_select(&g), regrade_select(&g, &earlier)) && jobs_grade_all(&g) &&
+              regrade_gather(&g, &earlier) &&
               (g.shard_n > 0 ? shard_write(&g) : report_write(&g)) &&
+              /* A class's results, for a later --only: OUT/results.txt. */
+              (g.shard_n > 0 || g.self || (shard_write(&g) && regrade_finish(&g))) &&
               (g.junit == NULL || junit_export(&g, g.junit)) &&
               (g.gradescope == NULL || gradescope_export(&g, g.gradescope));
     cgroup_finish();
     if (stop_requested()) {
         grade_fail(g.shard_n > 0 ? "interrupted: the shard's results (shard.txt) were not "
                                    "written: grade the shard again"
-                                 : "interrupted: no report written");
+                   : g.only != NULL ? "interrupted: the report and results in the output "
+                                      "folder are still the earlier grading's; the next "
+                                      "--only into it regrades these students again"
+                                    : "interrupted: no report written");
         return EXIT_INTERRUPTED;
     }
     if (!ok)

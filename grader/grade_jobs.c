@@ -13,11 +13,13 @@
 
 #include "grade_base.h"
 #include "grade_contain.h"
+#include "grade_eta.h"
 #include "grade_reap.h"
 #include "grade_results.h"
 #include "grade_submission.h"
 #include "grade_verdict.h"
 #include "outfile.h"
+#include "progress.h"
 #include "stop.h"
 
 /* Exit statuses of a worker: its results written, or a stop asked for. */
@@ -60,9 +62,10 @@ static void work(Grading *g, int k, int slot)
     _exit(outfile_commit(&out, &err) ? WORKER_DONE : WORKER_TROUBLE);
 }
 
-/* Takes in what worker k handed over, and tells its progress; a worker that ended without
- * its results gets every scene an ERROR saying so. */
-static void collect(Grading *g, int k, int status)
+/* Takes in what worker k handed over, and tells its progress, the line ended with `end`
+ * (how far the class is); a worker that ended without its results gets every scene an
+ * ERROR saying so. */
+static void collect(Grading *g, int k, int status, const char *end)
 {
     Submission *s = &g->subs[k];
     char *path = results_path(g, k);
@@ -71,7 +74,7 @@ static void collect(Grading *g, int k, int status)
                      : NULL;
     unlink(path);
     if (told != NULL) {
-        fputs(told, g->progress);
+        fprintf(g->progress, "%s%s\n", told, end);
         return;
     }
     if (stop_requested())
@@ -80,8 +83,8 @@ static void collect(Grading *g, int k, int status)
                 : WEXITSTATUS(status) == WORKER_DONE
                     ? "what it wrote could not be read"
                     : grade_format("its exit status was %d", WEXITSTATUS(status));
-    fprintf(g->progress, "grading %s: the grader's worker ended without its results (%s)\n",
-            s->name, why);
+    fprintf(g->progress, "grading %s: the grader's worker ended without its results (%s)%s\n",
+            s->name, why, end);
     s->results = grade_alloc((size_t)g->render_count * sizeof *s->results);
     memset(s->tally, 0, sizeof s->tally);
     for (int r = 0; r < g->render_count; r++) {
@@ -93,18 +96,22 @@ static void collect(Grading *g, int k, int status)
 }
 
 /* Grades the submissions in worker processes, g->jobs at a time; each worker forks from the
- * grader with all it knows, and hands its results back through a file. False when
- * interrupted. */
-static bool grade_in_workers(Grading *g)
+ * grader with all it knows, and hands its results back through a file; `eta` counts them
+ * done. False when interrupted. */
+static bool grade_in_workers(Grading *g, Eta *eta)
 {
     pid_t *pid = grade_alloc((size_t)g->sub_count * sizeof *pid);
     pid_t *live = grade_alloc((size_t)g->jobs * sizeof *live); /* the workers, by job */
     int *job = grade_alloc((size_t)g->sub_count * sizeof *job);
-    int next = 0, running = 0;
+    double *began = grade_alloc((size_t)g->sub_count * sizeof *began);
+    double *running = grade_alloc((size_t)g->jobs * sizeof *running);
+    int next = 0, running_count = 0;
     bool told_stop = false;
-    while (next < g->sub_count || running > 0) {
-        for (; running < g->jobs && next < g->sub_count && !stop_requested(); next++, running++) {
+    while (next < g->sub_count || running_count > 0) {
+        for (; running_count < g->jobs && next < g->sub_count && !stop_requested();
+             next++, running_count++) {
             fflush(NULL);
+            began[next] = clock_now();
             for (job[next] = 0; live[job[next]] != 0;)
                 job[next]++;
             if ((pid[next] = fork()) == 0)
@@ -130,18 +137,24 @@ static bool grade_in_workers(Grading *g)
             continue;
         pid[k] = 0;
         live[job[k]] = 0;
-        running--;
+        running_count--;
         /* What the worker's programs left (a worker killed by one) came to the grader: it
          * ends now, the other workers and theirs kept. */
         reap_strays(live, g->jobs);
-        collect(g, k, status);
+        /* How far the class is: the ETA counts what the workers still running have done. */
+        int n = 0;
+        for (int w = 0; w < next; w++)
+            if (pid[w] > 0)
+                running[n++] = began[w];
+        collect(g, k, status, eta_done(eta, clock_now() - began[k], running, n));
     }
     reap_strays(NULL, 0);
     return !stop_requested();
 }
 
-/* Grades every submission of g (a shard's slice with --shard), --jobs at a time, telling
- * the progress on g->progress; false when interrupted. */
+/* Grades every submission of g (a shard's slice with --shard, those named with --only),
+ * --jobs at a time, telling the progress on g->progress, a line a submission that ends with
+ * how many are done, the time elapsed and an ETA; false when interrupted. */
 bool jobs_grade_all(Grading *g)
 {
     FILE *f = g->progress;
@@ -149,14 +162,22 @@ bool jobs_grade_all(Grading *g)
             g->render_count == 1 ? "" : "s", g->sub_count, g->sub_count == 1 ? "" : "s");
     if (g->shard_n > 0)
         fprintf(f, " (shard %d of %d of a class of %d)", g->shard_k, g->shard_n, g->member_count);
+    if (g->only != NULL)
+        fprintf(f, " (regraded with --only, of a class of %d)", g->member_count);
     fprintf(f, g->jobs > 1 ? ", %d at a time\n" : "\n", g->jobs);
     fprintf(f, "grade: sandbox: %s\n", g->sandbox);
     if (g->illustrations != NULL)
         fprintf(f, "grade: not graded (illustrations): %s\n", g->illustrations);
+    Eta eta;
+    eta_start(&eta, g->sub_count, g->jobs);
     if (g->jobs > 1 && g->sub_count > 1)
-        return grade_in_workers(g);
-    for (int k = 0; k < g->sub_count; k++)
+        return grade_in_workers(g, &eta);
+    for (int k = 0; k < g->sub_count; k++) {
+        double began = clock_now();
         if (!submission_grade(g, &g->subs[k], f))
             return false;
+        /* --self's one submission needs no count. */
+        fprintf(f, "%s\n", g->self ? "" : eta_done(&eta, clock_now() - began, NULL, 0));
+    }
     return true;
 }

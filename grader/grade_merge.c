@@ -46,9 +46,9 @@ static bool set_option(void *state, int k, const char *value)
     return true;
 }
 
-/* Returns what the first line that differs between two shards' headings is about, and
- * that line of the first. */
-static char *difference(const char *a, const char *b)
+/* Returns what the first line that differs between two headings of results files (two
+ * shards', or a class's and a regrade's) is about, and that line of the first. */
+char *merge_describe_difference(const char *a, const char *b)
 {
     static const char *const keys[][2] = {
         {"part", "another part"},
@@ -88,7 +88,8 @@ static bool check_shards(Grading *sh, int count, char **folders)
     for (int i = 0; i < count; i++) {
         if (strcmp(sh[i].heading, first->heading) != 0)
             return grade_fail("%s and %s were graded from %s: they are not shards of one grading",
-                              folders[0], folders[i], difference(first->heading, sh[i].heading));
+                              folders[0], folders[i],
+                              merge_describe_difference(first->heading, sh[i].heading));
         if (sh[i].shard_n != n)
             return grade_fail("%s is shard %d of %d, %s of %d", folders[i], sh[i].shard_k,
                               sh[i].shard_n, folders[0], n);
@@ -146,8 +147,19 @@ static bool lock_shard(const char *folder)
     return true; /* the descriptor stays open, the lock held, until the merge ends */
 }
 
+/* Returns path with its folder `from` made `to`: a picture of a shard's work folder named
+ * through its link; NULL and a path elsewhere stay as they are. */
+static char *rebase(char *path, const char *from, const char *to)
+{
+    size_t len = strlen(from);
+    return path != NULL && strncmp(path, from, len) == 0 && path[len] == '/'
+               ? grade_format("%s%s", to, path + len)
+               : path;
+}
+
 /* Links OUT/work/NAME to each submission's work folder in its shard, so that the report's
- * command lines (cd work/NAME/run) hold from OUT; false (reported) when it cannot. */
+ * command lines (cd work/NAME/run) hold from OUT, and names its pictures through the link,
+ * as OUT/results.txt keeps them; false (reported) when it cannot. */
 static bool link_work(Grading *g)
 {
     for (int k = 0; k < g->sub_count; k++) {
@@ -155,6 +167,10 @@ static bool link_work(Grading *g)
         char *name = strrchr(s->work, '/') + 1, *link = grade_format("%s/%s", g->work, name);
         if (symlink(s->work, link) != 0)
             return grade_fail("cannot link %s to %s: %s", link, s->work, strerror(errno));
+        for (int r = 0; r < g->render_count; r++) {
+            s->results[r].image_show = rebase(s->results[r].image_show, s->work, link);
+            s->results[r].heat_show = rebase(s->results[r].heat_show, s->work, link);
+        }
         s->work = link;
     }
     return true;
@@ -192,6 +208,8 @@ int merge_main(int argc, char **argv)
     g.out = m.out != NULL ? m.out : grade_format("grading-%s", g.part);
     g.junit = m.junit;
     g.merging = true;
+    /* The merge is the whole class: its results go to OUT/results.txt, for --only. */
+    g.shard_k = g.shard_n = 0;
     g.progress = m.quiet ? fopen("/dev/null", "w") : stderr;
     g.progress = g.progress != NULL ? g.progress : stderr;
     for (int i = 0; i < count; i++)
@@ -205,6 +223,6 @@ int merge_main(int argc, char **argv)
         }
     run_init();
     ok = out_prepare(&g) && link_work(&g) && report_write(&g) &&
-         (g.junit == NULL || junit_export(&g, g.junit));
+         (g.junit == NULL || junit_export(&g, g.junit)) && shard_write(&g);
     return ok ? 0 : 2;
 }

@@ -3,5 +3,6 @@
 #define RAYTRA_GRADE_MERGE_H
 
 int merge_main(int argc, char **argv);
+char *merge_describe_difference(const char *a, const char *b);
 
 #endif

@@ -75,7 +75,7 @@ static bool lock_out(const Grading *g, const char *out)
 /* Has each student's user make what it left in folder (a work folder of an earlier run)
  * writable by all, for the grader to remove it, the submissions' folders, closed once
  * graded, opened to them first; nothing without --run-as. */
-static void release_work(const char *folder)
+void out_release(const char *folder)
 {
     int count = 0, users = contain_users();
     char **names = users > 0 ? path_list_folders(folder, &count) : NULL;
@@ -89,15 +89,38 @@ static void release_work(const char *folder)
     contain_use_slot(0);
 }
 
+/* Makes the work folder g->work anew (an earlier one is removed, links never followed),
+ * marked as grade's; false (reported) when it cannot. */
+static bool make_work(const Grading *g)
+{
+    struct stat st;
+    /* chmod first: a student's build may have left folders read-only; with --run-as, its
+     * users make their files in the work folder the grader's to remove. */
+    if (lstat(g->work, &st) == 0)
+        out_release(g->work);
+    char *anew[] = {"sh", "-c",
+                    "chmod -R u+rwX -- \"$1\"; rm -rf -- \"$1\" && mkdir -- \"$1\" "
+                    "\"$1/references\" \"$1/canaries\" && chmod 700 -- \"$1/references\" && echo \"grade's work folder: each run of grade with this "
+                    "--out, but one with --only, removes it and makes it anew.\" "
+                    ">\"$1/.made-by-grade\"",
+                    "sh", g->work, NULL};
+    return run_program(anew, NULL, NULL, 600, 0).ok ||
+           grade_fail("cannot make the work folder %s anew", g->work);
+}
+
 /* Makes OUT (grading-PART by default), when it may serve, and locks it; makes OUT/work anew,
  * an absolute path as students' programs run elsewhere, removing only a work folder that an
- * earlier run marked. */
+ * earlier run marked; with --only, keeps the work folder of the grading OUT holds. */
 bool out_prepare(Grading *g)
 {
     char real[PATH_MAX];
     struct stat st;
     g->out = g->out != NULL ? g->out : grade_format("grading-%s", g->part);
     bool made = path_kind(g->out) != S_IFDIR;
+    if (made && g->only != NULL)
+        return grade_fail("--only: no folder %s: --only regrades students into the grading "
+                          "of a class there; grade the whole class into it first",
+                          g->out);
     if ((made && !path_make_folder(g->out)) || realpath(g->out, real) == NULL)
         return false;
     char *refusal = g->merging ? NULL : out_refusal(g, real);
@@ -109,25 +132,23 @@ bool out_prepare(Grading *g)
     g->work = grade_format("%s/work", real);
     if (!lock_out(g, real))
         return false;
-    /* A shard's results go before its work does: they would name pictures no longer there. */
-    if (g->shard_n > 0 && unlink(grade_format("%s/shard.txt", real)) != 0 && errno != ENOENT)
-        return grade_fail("cannot remove the shard's old results in %s: %s", g->out,
-                          strerror(errno));
+    /* The results go before the work does: they would name pictures no longer there (a
+     * shard's shard.txt, a class's results.txt and the mark of a regrade begun). */
+    const char *results[] = {g->shard_n > 0 ? "shard.txt" : "results.txt", ".regrading"};
+    for (int k = 0; k < 2 && g->only == NULL; k++)
+        if (unlink(grade_format("%s/%s", real, results[k])) != 0 && errno != ENOENT)
+            return grade_fail("cannot remove the old results %s/%s: %s", g->out, results[k],
+                              strerror(errno));
     /* lstat: a link at the work folder's path is not a work folder grade made. */
     if (lstat(g->work, &st) == 0 &&
         (!S_ISDIR(st.st_mode) || path_kind(grade_format("%s/.made-by-grade", g->work)) == 0))
         return grade_fail("%s exists and was not made by grade: choose another --out", g->work);
-    /* chmod first: a student's build may have left folders read-only; with --run-as, its
-     * users make their files in the work folder the grader's to remove. */
-    if (lstat(g->work, &st) == 0)
-        release_work(g->work);
-    char *anew[] = {"sh", "-c",
-                    "chmod -R u+rwX -- \"$1\"; rm -rf -- \"$1\" && mkdir -- \"$1\" "
-                    "\"$1/references\" \"$1/canaries\" && chmod 700 -- \"$1/references\" && echo \"grade's work folder: each run of grade with this "
-                    "--out removes it and makes it anew.\" >\"$1/.made-by-grade\"",
-                    "sh", g->work, NULL};
-    if (!run_program(anew, NULL, NULL, 600, 0).ok)
-        return grade_fail("cannot make the work folder %s anew", g->work);
+    if (g->only != NULL && lstat(g->work, &st) != 0)
+        return grade_fail("--only: %s holds no work folder: no grading of a class to regrade "
+                          "students into; grade the whole class into it first",
+                          g->out);
+    if (g->only == NULL && !make_work(g))
+        return false;
     /* With --run-as, the students' users cross both to their folders, whatever the umask. */
     return !contain_active() ||
            ((stat(real, &st) == 0 && chmod(real, (st.st_mode & 07777) | 0111) == 0 &&

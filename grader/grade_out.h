@@ -5,5 +5,6 @@
 #include "grading.h"
 
 bool out_prepare(Grading *g);
+void out_release(const char *folder);
 
 #endif

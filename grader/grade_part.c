@@ -85,7 +85,9 @@ bool part_render_hidden(Grading *g)
         any |= g->renders[k].hidden;
     if (!any)
         return true;
-    char *copy[] = {"sh", "-c", "mkdir -- \"$2\" && cp -R -P -- \"$1/.\" \"$2\" && "
+    /* Made anew: a regrade (--only) finds the earlier grading's copy there. */
+    char *copy[] = {"sh", "-c", "chmod -R u+rwX -- \"$2\" 2>/dev/null; rm -rf -- \"$2\" && "
+                                "mkdir -- \"$2\" && cp -R -P -- \"$1/.\" \"$2\" && "
                                 "rm -rf -- \"$2/references\" \"$2/renders.txt\" && "
                                 "chmod -R go-rwx -- \"$2\" && "
                                 "find \"$2\" -type d -exec chmod 711 {} +",
@@ -111,7 +113,8 @@ bool part_render_hidden(Grading *g)
         if (!built && !run_program(make, NULL, log, 1800, 0).ok)
             return grade_fail("the model answer of %s does not build, to render the hidden "
                               "scenes (%s says why)", g->part, log);
-        if (!built && !path_make_folder(grade_format("%s/references/hidden", g->work)))
+        char *rendered = grade_format("%s/references/hidden", g->work);
+        if (!built && path_kind(rendered) != S_IFDIR && !path_make_folder(rendered))
             return false;
         built = true;
         r->reference = grade_format("%s/references/hidden/%s", g->work, r->image);

@@ -62,11 +62,12 @@ static char *fingerprint(const char *path)
     return grade_format("%016llx", (unsigned long long)hash);
 }
 
-/* Writes what a shard's results were made from, line by line: what merge checks to be the
- * same in every shard, the shard's own number after it. */
-static void put_heading(FILE *f, const Grading *g)
+/* Writes what a grading's results were made from, line by line, from its part to its
+ * class's last member: what merge checks to be the same in every shard, and --only in a
+ * class's earlier grading. */
+static void put_grading(FILE *f, const Grading *g)
 {
-    fprintf(f, RESULTS_MAGIC "\npart");
+    fputs("part", f);
     results_put_text(f, g->part);
     fputs("\nsubmissions", f);
     results_put_text(f, g->submissions);
@@ -102,17 +103,32 @@ static void put_heading(FILE *f, const Grading *g)
         results_put_text(f, g->members[k]);
         fputc('\n', f);
     }
-    fprintf(f, "shard %d %d\nstarted", g->shard_k, g->shard_n);
+}
+
+/* Writes the heading of a results file: its first line, what the grading was made from (a
+ * merge's as its shards had it: their references are not read again), the shard's number
+ * and what else it tells. */
+static void put_heading(FILE *f, const Grading *g)
+{
+    fputs(RESULTS_MAGIC "\n", f);
+    if (g->heading != NULL)
+        fputs(g->heading, f);
+    else
+        put_grading(f, g);
+    /* A whole class's results (results.txt) are its one shard. */
+    fprintf(f, "shard %d %d\nstarted", g->shard_n > 0 ? g->shard_k : 1,
+            g->shard_n > 0 ? g->shard_n : 1);
     results_put_text(f, g->started);
     results_put_text(f, g->sandbox);
     fprintf(f, "\nsubmissions %d\n", g->sub_count);
 }
 
-/* Writes OUT/shard.txt: the heading, every submission of the slice, and "end"; whole or not
- * at all (outfile); false (reported) when it cannot. */
+/* Writes OUT/shard.txt, or for a whole class OUT/results.txt (what --only reads): the
+ * heading, every submission of the slice, and "end"; whole or not at all (outfile); false
+ * (reported) when it cannot. */
 bool shard_write(const Grading *g)
 {
-    char *path = grade_format("%s/shard.txt", g->out);
+    char *path = grade_format("%s/%s", g->out, g->shard_n > 0 ? "shard.txt" : "results.txt");
     OutFile out;
     Error err;
     bool ok = outfile_open(&out, path, &err);
@@ -124,8 +140,9 @@ bool shard_write(const Grading *g)
     }
     if (!(ok && outfile_commit(&out, &err)))
         return grade_fail("cannot write %s: %s", path, err.text);
-    fprintf(g->progress, "grade: wrote %s, shard %d of %d (grade merge makes the report)\n", path,
-            g->shard_k, g->shard_n);
+    if (g->shard_n > 0)
+        fprintf(g->progress, "grade: wrote %s, shard %d of %d (grade merge makes the report)\n",
+                path, g->shard_k, g->shard_n);
     return true;
 }
 
@@ -185,6 +202,35 @@ static bool get_heading(Reader *r, Grading *g, const char *work)
     return members >= 0 || grade_fail("%s: cut short after line %d", r->path, r->line);
 }
 
+/* Reads the results file r has opened, in the folder whose real path is `real`, into g, its
+ * pictures found in REAL/work, and closes it; false (reported) when it is not whole. */
+static bool read_results(Grading *g, Reader *r, const char *real)
+{
+    g->work = grade_format("%s/work", real);
+    int count = -1;
+    bool ok = (results_next_line(r) && strcmp(r->raw, RESULTS_MAGIC "\n") == 0) ||
+              grade_fail("%s is not a results file of this grade", r->path);
+    ok = ok && get_heading(r, g, g->work) && results_next_line(r) &&
+         results_line_is(r, "shard", 2);
+    g->shard_k = ok ? (int)results_get_number(r, 1) : 0;
+    g->shard_n = ok ? (int)results_get_number(r, 2) : 0;
+    ok = ok && g->shard_n >= 1 && g->shard_n <= 10000 && g->shard_k >= 1 &&
+         g->shard_k <= g->shard_n && results_next_line(r) && results_line_is(r, "started", 2) &&
+         snprintf(g->started, sizeof g->started, "%s", results_get_word(r, 1)) >= 0 &&
+         ((g->sandbox = results_get_text(r, 2)), results_next_line(r)) &&
+         results_line_is(r, "submissions", 1) && (count = (int)results_get_number(r, 1)) >= 0 &&
+         count <= g->member_count && !r->bad;
+    g->subs = grade_alloc(((size_t)count + 1) * sizeof *g->subs);
+    while (ok && g->sub_count < count && results_next_line(r))
+        ok = results_get_submission(r, g, &g->subs[g->sub_count++], g->work, g->work);
+    ok = ok && results_next_line(r) && strcmp(r->raw, "end\n") == 0;
+    if (!ok && !r->bad)
+        grade_fail("%s:%d: the file is not whole", r->path, r->line);
+    free(r->text);
+    fclose(r->file);
+    return ok;
+}
+
 /* Reads the shard in `folder` (FOLDER/shard.txt, written by grade --shard) into g, its
  * pictures found in FOLDER/work; false (reported) when there is none, or it is not whole. */
 bool shard_read(Grading *g, const char *folder)
@@ -202,27 +248,45 @@ bool shard_read(Grading *g, const char *folder)
                           "finish (its log says why)",
                           r.path, folder);
     g->out = folder;
-    g->work = grade_format("%s/work", real);
-    int count = -1;
-    bool ok = (results_next_line(&r) && strcmp(r.raw, RESULTS_MAGIC "\n") == 0) ||
-              grade_fail("%s is not a results file of this grade", r.path);
-    ok = ok && get_heading(&r, g, g->work) && results_next_line(&r) &&
-         results_line_is(&r, "shard", 2);
-    g->shard_k = ok ? (int)results_get_number(&r, 1) : 0;
-    g->shard_n = ok ? (int)results_get_number(&r, 2) : 0;
-    ok = ok && g->shard_n >= 1 && g->shard_n <= 10000 && g->shard_k >= 1 &&
-         g->shard_k <= g->shard_n && results_next_line(&r) && results_line_is(&r, "started", 2) &&
-         snprintf(g->started, sizeof g->started, "%s", results_get_word(&r, 1)) >= 0 &&
-         ((g->sandbox = results_get_text(&r, 2)), results_next_line(&r)) &&
-         results_line_is(&r, "submissions", 1) && (count = (int)results_get_number(&r, 1)) >= 0 &&
-         count <= g->member_count && !r.bad;
-    g->subs = grade_alloc(((size_t)count + 1) * sizeof *g->subs);
-    while (ok && g->sub_count < count && results_next_line(&r))
-        ok = results_get_submission(&r, g, &g->subs[g->sub_count++], g->work, g->work);
-    ok = ok && results_next_line(&r) && strcmp(r.raw, "end\n") == 0;
-    if (!ok && !r.bad)
-        grade_fail("%s:%d: the file is not whole", r.path, r.line);
-    free(r.text);
-    fclose(r.file);
-    return ok;
+    return read_results(g, &r, real);
+}
+
+/* Reads OUT/results.txt, the results of a whole class that grade or grade merge wrote into
+ * the folder `out`, into g (for --only); false (reported) when there are none, or they are
+ * not whole, or of a slice. */
+bool shard_read_class(Grading *g, const char *out)
+{
+    char real[PATH_MAX];
+    const char *kind = NULL;
+    Reader r = {.path = grade_format("%s/results.txt", out)};
+    if (realpath(out, real) != NULL && (r.file = path_open_regular(r.path, &kind)) == NULL &&
+        kind != NULL)
+        return grade_fail("--only: %s is not a regular file (%s): not the results of grade",
+                          r.path, kind);
+    if (r.file == NULL)
+        return grade_fail("--only: no %s: %s holds no grading of a class to regrade students "
+                          "into (grade and grade merge leave their results there); grade the "
+                          "whole class into it first",
+                          r.path, out);
+    g->out = out;
+    return read_results(g, &r, real) &&
+           ((g->shard_n == 1 && g->sub_count == g->member_count) ||
+            grade_fail("--only: %s holds a slice of a class, not the whole class", r.path));
+}
+
+/* Returns the heading that a results file of g would begin with, from its part to its
+ * class's last member: what must be the same in a shard.txt or results.txt to be of the
+ * same grading (Grading.heading, read back). */
+char *shard_format_heading(const Grading *g)
+{
+    char *text = NULL;
+    size_t size = 0;
+    FILE *f = open_memstream(&text, &size);
+    if (f == NULL)
+        return "";
+    put_grading(f, g);
+    fclose(f);
+    char *heading = grade_format("%s", text);
+    free(text);
+    return heading;
 }

@@ -10,5 +10,7 @@ bool shard_parse(Grading *g);
 void shard_select(Grading *g);
 bool shard_write(const Grading *g);
 bool shard_read(Grading *g, const char *folder);
+bool shard_read_class(Grading *g, const char *out);
+char *shard_format_heading(const Grading *g);
 
 #endif

@@ -133,8 +133,8 @@ static const char *make_work(const Submission *s, FILE *f)
 }
 
 /* Grades every render of submission s, whose work folders were made unless `trouble` says
- * why not; counts the verdicts and tells them on f ("5 scenes: 4 pass, 1 timeout"); false
- * when grading must stop (interrupted). */
+ * why not; counts the verdicts and tells them on f ("5 scenes: 4 pass, 1 timeout", the line
+ * left for the caller to end); false when grading must stop (interrupted). */
 static bool grade_one(const Grading *g, Submission *s, const char *trouble, FILE *f)
 {
     s->results = grade_alloc((size_t)g->render_count * sizeof *s->results);
@@ -167,7 +167,7 @@ static bool grade_one(const Grading *g, Submission *s, const char *trouble, FILE
         s->tally[verdict_info[s->results[k].verdict].tally]++;
     }
     if (s->build_message != NULL) {
-        fprintf(f, "BUILD FAILED: %s\n", s->build_message);
+        fprintf(f, "BUILD FAILED: %s", s->build_message);
         return true;
     }
     fprintf(f, "%d scene%s:", g->render_count, g->render_count == 1 ? "" : "s");
@@ -180,12 +180,12 @@ static bool grade_one(const Grading *g, Submission *s, const char *trouble, FILE
             fputc(tolower((unsigned char)*p), f);
         sep = ", ";
     }
-    fputc('\n', f);
     return true;
 }
 
 /* Grades submission s, telling the progress on f: its name and kind, then how its scenes
- * fared ("5 scenes: 4 pass, 1 timeout"); false when grading must stop (interrupted). */
+ * fared ("5 scenes: 4 pass, 1 timeout"), a line the caller ends (with how far the class
+ * is); false when grading must stop (interrupted). */
 bool submission_grade(const Grading *g, Submission *s, FILE *f)
 {
     const char *trouble = make_work(s, f);

@@ -136,6 +136,8 @@ typedef struct {
     FILE *progress;          /* where progress lines and notes go: stderr, or with quiet none */
     char started[32];        /* when grading began, for the report */
     double began;            /* when grading began, from clock_now: results.json's time */
+    const char *only;        /* --only NAME[,NAME...]: the students regraded into the grading
+                              * of the class in OUT, the others' results kept; or NULL */
 } Grading;
 
 /* How a child ended: status is the exit status (RUN_EXITED), the signal (RUN_KILLED) or the

@@ -352,7 +352,7 @@ check "a long output's cut said" grep -q '^\[grade: [0-9]* bytes cut here: of th
 check "an endless output kept bounded" test "$(wc -c <"$chatty/demo.log")" -lt 140000
 check "the logs' total" test "$(du -sk "$chatty" | cut -f1)" -lt 2000
 check "a temporary left in the output folder" \
-    test -z "$(find "out dir" -mindepth 1 -maxdepth 1 ! -name report.html ! -name grades.csv ! -name work ! -name .grade-lock)"
+    test -z "$(find "out dir" -mindepth 1 -maxdepth 1 ! -name report.html ! -name grades.csv ! -name results.txt ! -name work ! -name .grade-lock)"
 
 # The grader leaves no process behind and does not touch the students' folders.
 check_no_leftovers "after grading"
@@ -361,7 +361,14 @@ planter=$(ls -d "$work"/*-planter)
 check "a link planted at a log's path replaced by the log" \
     test -f "$planter/spheres-behind-camera.log" -a ! -L "$planter/spheres-behind-camera.log"
 check "a student's folder was built in" test ! -e class/crashing/raytra
-check "progress lines" grep -q '^grading hanging (program): building... 5 scenes: 4 pass, 1 timeout$' stderr.txt
+# A line a submission, ending with how far the class is: k of N done, the time elapsed, an
+# ETA (but after the last); the times are the clock's, checked for their form alone.
+span='[0-9]+ (s|min [0-9]+ s|h [0-9]+ min)'
+check "progress lines" grep -Eq "^grading hanging \(program\): building\.\.\. 5 scenes: 4 pass, 1 timeout \[[0-9]+ of 24 done, $span elapsed, ETA $span\]\$" stderr.txt
+check "progress lines: k of N counted from 1 to N" \
+    test "$(sed -En 's/^grading .* \[([0-9]+) of 24 done, .*/\1/p' stderr.txt | tr '\n' ' ')" = "$(seq 24 | tr '\n' ' ')"
+check "progress lines: the last has no ETA" \
+    grep -Eq "^grading .* \[24 of 24 done, $span elapsed\]\$" stderr.txt
 check "no progress line for a file or a hidden folder" test "$(grep -c '^grading ' stderr.txt)" -eq 24
 
 # Tolerances from the command line reach imgdiff; a second run replaces the first.

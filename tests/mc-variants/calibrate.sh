@@ -16,7 +16,9 @@
 # MC_SCENES (an extended regular expression) keeps the scenes whose names it matches
 # whole: a run of some scenes counts renders, not submissions.
 # Seeds are done in batches of MC_BATCH (default 25), every program and scene a batch,
-# so that a run cut short still covers them all; the raw verdicts go to OUT/raw.txt
+# so that a run cut short still covers them all; a line on stderr after each program of a
+# batch says how far it is: "k of N renders (seeds), T elapsed, ETA T", the ETA from the
+# mean time a render has taken. The raw verdicts go to OUT/raw.txt
 # (default: a temporary folder), a line a render and format; COUNT 0 prints the table
 # of the verdicts already in OUT/raw.txt.
 # Exit status 0 when the failures are at most 0.1 % of the submissions, 1 otherwise.
@@ -45,7 +47,21 @@ sed -n 's/^~\([^[:space:]]*\)\.[a-z]*[[:space:]]/\1 /p' "$refdir/renders.txt" |
     grep -E "^(${MC_SCENES:-.*}) " >"$tmp/scenes"
 [ -s "$tmp/scenes" ] || { echo "calibrate.sh: no statistical reference in $refdir/renders.txt" >&2; exit 2; }
 
+# Prints a duration of $1 seconds as the grader writes one: 41 s, 5 min 20 s, 1 h 5 min.
+duration() {
+    if [ "$1" -lt 60 ]; then
+        echo "$1 s"
+    elif [ "$1" -lt 3600 ]; then
+        echo "$(($1 / 60)) min $(($1 % 60)) s"
+    else
+        echo "$(($1 / 3600)) h $(($1 / 60 % 60)) min"
+    fi
+}
+
 start=$(date +%s)
+scenes=$(wc -l <"$tmp/scenes")
+renders=$((count * $(wc -l <"$tmp/programs") * scenes))
+rendered=0
 first=0
 while [ "$first" -lt "$count" ]; do
     last=$((first + batch))
@@ -69,9 +85,15 @@ while [ "$first" -lt "$count" ]; do
                 exit 2
             rm -f "$tmp"/*.pfm
         done <"$tmp/scenes"
+        # How far the calibration is, from the clock: the ETA is the mean render's time for
+        # each render left.
+        rendered=$((rendered + (last - first) * scenes))
+        elapsed=$(($(date +%s) - start))
+        eta=
+        [ "$rendered" -ge "$renders" ] || eta=", ETA $(duration $((elapsed * (renders - rendered) / rendered)))"
+        echo "calibrate.sh: $rendered of $renders renders ($program, seeds $first to $((last - 1)) of $count), $(duration "$elapsed") elapsed$eta" >&2
     done <"$tmp/programs"
     first=$last
-    echo "calibrate.sh: $first of $count seeds, $(($(date +%s) - start)) s" >&2
 done
 
 # The table: per program, format and scene, failures of renders; per program and format,
