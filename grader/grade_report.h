@@ -7,7 +7,6 @@
 
 #include "grading.h"
 
-char *report_command(const Submission *s, const SceneResult *res);
 bool report_write(const Grading *g);
 bool report_write_whole(const char *path, const Grading *g, void (*write)(FILE *, const Grading *));
 
