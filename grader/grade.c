@@ -12,8 +12,10 @@
 #include "grade_contain.h"
 #include "grade_containment.h"
 #include "grade_gradescope.h"
+#include "grade_handin.h"
 #include "grade_jobs.h"
 #include "grade_junit.h"
+#include "grade_late.h"
 #include "grade_merge.h"
 #include "grade_out.h"
 #include "grade_part.h"
@@ -85,6 +87,15 @@ static const GradeOption options[] = {
       "default: grading.conf's 'hidden')", NULL}, OPT_TEXT, offsetof(Grading, hidden)},
     {{"grading-conf", 0, "FILE", "the points and visibility of the scenes (default:\n"
       "the part's references/grading.conf)", NULL}, OPT_TEXT, offsetof(Grading, conf)},
+    {{"due", 0, "TIME", "the due date, in place of grading.conf's: ISO 8601\n"
+      "with its time zone (2026-03-01T23:59:00-05:00)", NULL}, OPT_TEXT,
+     offsetof(Grading, due_given)},
+    {{"late-until", 0, "TIME", "late work is taken until TIME, in place of\n"
+      "grading.conf's late_until; later work gets 0", NULL}, OPT_TEXT,
+     offsetof(Grading, until_given)},
+    {{"submitted-at", 0, "TIME", "with --self: when the submission was handed in\n"
+      "(Gradescope's time), in place of its files' time", NULL}, OPT_TEXT,
+     offsetof(Grading, submitted_at)},
     {{"self", 0, NULL, "FOLDER is one student's program (or images): grade\nit alone, "
       "print each scene's verdict and heat map,\nand exit 1 unless every scene passes", NULL},
      OPT_FLAG, offsetof(Grading, self)},
@@ -187,9 +198,11 @@ int main(int argc, char **argv)
               part_find_top(&g) && part_find(&g, argv[optind]) && shard_parse(&g) &&
               (path_kind(g.submissions) == S_IFDIR ||
                grade_fail("no folder %s", g.submissions)) &&
-              renders_read(&g) && conf_read(&g) && out_prepare(&g) &&
+              renders_read(&g) && conf_read(&g) && late_read_options(&g) &&
+              out_prepare(&g) &&
               part_render_hidden(&g) && part_show_references(&g) &&
               (part_make_canaries(&g), submission_list(&g)) && (shard_select(&g), jobs_grade_all(&g)) &&
+              (handin_find_all(&g), true) &&
               (g.shard_n > 0 ? shard_write(&g) : report_write(&g)) &&
               (g.junit == NULL || junit_export(&g, g.junit)) &&
               (g.gradescope == NULL || gradescope_export(&g, g.gradescope));

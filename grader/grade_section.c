@@ -1,4 +1,4 @@
-/* grade_section.c: a submission's section of the report: its build, and a block a scene with its pictures and output. */
+/* grade_section.c: a submission's section of the report: its points and lateness, its build, and a block a scene with its pictures and output. */
 #include "grade_section.h"
 
 #include <math.h>
@@ -6,6 +6,7 @@
 
 #include "grade_base.h"
 #include "grade_html.h"
+#include "grade_late.h"
 #include "grade_part.h"
 #include "grade_run.h"
 #include "grade_verdict.h"
@@ -133,11 +134,13 @@ static void write_scene(FILE *f, const Grading *g, const Submission *s, int k)
     fputs("</div>\n</details>\n", f);
 }
 
-/* Writes the section of submission i: its verdict, its build, and a block a scene. */
+/* Writes the section of submission i: its verdict, its points, when it was handed in, its
+ * build, and a block a scene. */
 void section_write(FILE *f, const Grading *g, int i)
 {
     const Submission *s = &g->subs[i];
     bool broken = s->build_message != NULL;
+    char *late = late_describe(g, s);
     fprintf(f, "<section id=\"s%d\">\n<h2><span class=\"name\">%s</span><span class=\"kind\">"
                "%s</span>%s<a class=\"back\" href=\"#summary\">&uarr; summary</a></h2>\n",
             i + 1, html_escape(s->name), s->program ? "program" : "images",
@@ -150,6 +153,8 @@ void section_write(FILE *f, const Grading *g, int i)
         fprintf(f, "<p class=\"counts\">%d of %d scene%s pass: %g of %g points.</p>\n",
                 s->tally[TALLY_PASS], g->render_count, html_plural(g->render_count), got, max);
     }
+    if (late != NULL)
+        fprintf(f, "<p class=\"counts\">%s</p>\n", html_escape(late));
     if (s->removed != NULL)
         fprintf(f, "<p class=\"file\">Build outputs it carried, removed before make: "
                    "<code>%s</code></p>\n", html_escape(s->removed));
