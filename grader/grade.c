@@ -45,8 +45,9 @@ typedef struct {
 
 /* grade's options, from which the parsing, the defaults and --help are all made. */
 static const GradeOption options[] = {
-    {{"out", 0, "DIR", "write report.html, grades.csv and the work files\n"
-      "(work/) into DIR (default: grading-PART)", NULL}, OPT_TEXT, offsetof(Grading, out)},
+    {{"out", 0, "DIR", "write report.html, grades.csv, gradebook.csv and the\n"
+      "work files (work/) into DIR (default: grading-PART)", NULL}, OPT_TEXT,
+     offsetof(Grading, out)},
     {{"time-limit", 0, "S", "seconds a student's program may take for one scene;\n"
       "0: no limit", "60"}, OPT_SECONDS, offsetof(Grading, time_limit)},
     {{"build-time-limit", 0, "S", "seconds make may take; 0: no limit", "300"}, OPT_SECONDS,
@@ -113,9 +114,10 @@ static void print_help(void)
            "       grade merge [--out DIR] [--junit FILE] [-q] SHARD...\n"
            "Grades every submission in the folder SUBMISSIONS against the reference images\n"
            "of PART (1.1-spheres-red, 1.1, or a part's folder) and writes a report\n"
-           "(report.html) and a table (grades.csv). SUBMISSIONS holds a folder a student:\n"
-           "images named as the references (spheres-three.png; .pfm, .exr too), or sources\n"
-           "with a Makefile whose make, run in a copy, builds raytra beside it, run as\n"
+           "(report.html) and tables (grades.csv, a line a scene; gradebook.csv, a line a\n"
+           "student). SUBMISSIONS holds a folder a student: images named as the references\n"
+           "(spheres-three.png; .pfm, .exr too), or sources with a Makefile whose make, run\n"
+           "in a copy, builds raytra beside it, run as\n"
            "  raytra SCENE OUTPUT [arguments]\n"
            "for every scene, in a scratch folder, under the limits below. grade merge\n"
            "writes one report of the folders of the shards of a class (--shard).\n\nOptions:\n");

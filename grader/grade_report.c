@@ -1,8 +1,9 @@
-/* grade_report.c: the self-contained report.html, and with it grades.csv, each written whole. */
+/* grade_report.c: the self-contained report.html, and with it grades.csv and gradebook.csv, each written whole. */
 #include "grade_report.h"
 
 #include "grade_base.h"
 #include "grade_csv.h"
+#include "grade_gradebook.h"
 #include "grade_html.h"
 #include "grade_section.h"
 #include "grade_summary.h"
@@ -91,13 +92,16 @@ bool report_write_whole(const char *path, const Grading *g, void (*write)(FILE *
     return (ok && outfile_commit(&out, &err)) || grade_fail("cannot write %s: %s", path, err.text);
 }
 
-/* Writes grades.csv and report.html into g->out; false (reported) when it cannot. */
+/* Writes grades.csv, gradebook.csv and report.html into g->out; false (reported) when it
+ * cannot. */
 bool report_write(const Grading *g)
 {
     char *table = grade_format("%s/grades.csv", g->out);
+    char *book = grade_format("%s/gradebook.csv", g->out);
     char *page = grade_format("%s/report.html", g->out);
-    if (!report_write_whole(table, g, csv_write) || !report_write_whole(page, g, write_html))
+    if (!report_write_whole(table, g, csv_write) || !report_write_whole(book, g, gradebook_write) ||
+        !report_write_whole(page, g, write_html))
         return false;
-    fprintf(g->progress, "grade: wrote %s and %s\n", page, table);
+    fprintf(g->progress, "grade: wrote %s, %s and %s\n", page, table, book);
     return true;
 }

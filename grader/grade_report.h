@@ -1,4 +1,4 @@
-/* grade_report.h: report.html and grades.csv, each written whole. */
+/* grade_report.h: report.html, grades.csv and gradebook.csv, each written whole. */
 #ifndef RAYTRA_GRADE_REPORT_H
 #define RAYTRA_GRADE_REPORT_H
 

@@ -1,4 +1,4 @@
-/* grade_section.c: a submission's section of the report: its points and lateness, its build, and a block a scene with its pictures and output. */
+/* grade_section.c: a submission's section of the report: its points and lateness, its build, a block a scene with its pictures and output, scenes that failed alike in one. */
 #include "grade_section.h"
 
 #include <math.h>
@@ -102,10 +102,55 @@ static void write_log(FILE *f, const char *title, const char *log, bool open)
                 open ? " open" : "", title, html_escape(log));
 }
 
-/* Writes scene k of submission s: a line that opens (open already unless it passed) on the
- * scene file, the command run, the pictures when there is an image, and the program's
- * output. */
-static void write_scene(FILE *f, const Grading *g, const Submission *s, int k)
+/* Returns the first scene of submission s that did not pass with the same verdict and
+ * reason as scene k, when at least one other did (a program that crashed the same way on
+ * several scenes); -1 when scene k passed, or failed its own way. */
+static int group_of(const Grading *g, const Submission *s, int k)
+{
+    const SceneResult *res = &s->results[k];
+    int first = -1, count = 0;
+    for (int j = 0; j < g->render_count && res->verdict != VERDICT_PASS; j++)
+        if (s->results[j].verdict == res->verdict &&
+            strcmp(s->results[j].message, res->message) == 0) {
+            first = first < 0 ? j : first;
+            count++;
+        }
+    return count >= 2 ? first : -1;
+}
+
+/* Writes the one open block of the scenes of s whose verdict and reason are scene k's
+ * (group_of): "CRASHED on 8 scenes: a, b, c, ...: killed by signal 11", with the first
+ * scene's command and output; each scene's own block follows, closed. */
+static void write_group(FILE *f, const Grading *g, const Submission *s, int k)
+{
+    const SceneResult *res = &s->results[k];
+    char *names = "";
+    int count = 0;
+    for (int j = k; j < g->render_count; j++)
+        if (group_of(g, s, j) == k) {
+            names = grade_format("%s%s%s%s", names, count > 0 ? ", " : "",
+                                 html_escape(g->renders[j].name),
+                                 g->renders[j].hidden ? " (hidden)" : "");
+            count++;
+        }
+    fprintf(f, "<details class=\"scene\" open>\n<summary>%s<span class=\"message\">on %d "
+               "scenes: %s: %s</span></summary>\n<div class=\"scene-body\">\n<p class=\"file\">"
+               "The same verdict and reason on each of these scenes; their blocks below are "
+               "closed. The first, %s:</p>\n",
+            html_badge(g, s, k), count, names, html_escape(res->message),
+            html_escape(g->renders[k].name));
+    if (res->command != NULL)
+        fprintf(f, "<p class=\"file\">Command <code>%s</code></p>\n",
+                html_escape(section_command(s, res)));
+    write_log(f, "Program output (the last lines)",
+              res->command != NULL && res->log_tail == NULL ? "(nothing)" : res->log_tail,
+              verdict_info[res->verdict].tally == TALLY_ERROR);
+    fputs("</div>\n</details>\n", f);
+}
+
+/* Writes scene k of submission s: a line that opens (open already when `open`) on the scene
+ * file, the command run, the pictures when there is an image, and the program's output. */
+static void write_scene(FILE *f, const Grading *g, const Submission *s, int k, bool open)
 {
     const Render *r = &g->renders[k];
     const SceneResult *res = &s->results[k];
@@ -113,7 +158,7 @@ static void write_scene(FILE *f, const Grading *g, const Submission *s, int k)
             "<details class=\"scene\"%s>\n<summary><span class=\"scene-name\">%s</span>"
             "%s%s<span class=\"message\">%s</span>%s</summary>\n<div class=\"scene-body\">"
             "\n<p class=\"file\">Scene <code>%s",
-            res->verdict == VERDICT_PASS ? "" : " open",
+            open ? " open" : "",
             r->hidden ? grade_format("%s (hidden)", html_escape(r->name)) : html_escape(r->name),
             html_badge(g, s, k), html_copy_flag(res->copy), html_escape(res->message),
             res->seconds > 0 ? grade_format("<span class=\"time\">%.2f s</span>", res->seconds)
@@ -130,12 +175,13 @@ static void write_scene(FILE *f, const Grading *g, const Submission *s, int k)
         write_pictures(f, res, k, r->statistical);
     write_log(f, "Program output (the last lines)",
               res->command != NULL && res->log_tail == NULL ? "(nothing)" : res->log_tail,
-              verdict_info[res->verdict].tally == TALLY_ERROR);
+              open && verdict_info[res->verdict].tally == TALLY_ERROR);
     fputs("</div>\n</details>\n", f);
 }
 
 /* Writes the section of submission i: its verdict, its points, when it was handed in, its
- * build, and a block a scene. */
+ * build, and a block a scene: open when it did not pass, but for scenes that failed alike,
+ * which one open block stands for (write_group). */
 void section_write(FILE *f, const Grading *g, int i)
 {
     const Submission *s = &g->subs[i];
@@ -159,7 +205,11 @@ void section_write(FILE *f, const Grading *g, int i)
         fprintf(f, "<p class=\"file\">Build outputs it carried, removed before make: "
                    "<code>%s</code></p>\n", html_escape(s->removed));
     write_log(f, "Build output (the last lines)", s->build_log_tail, broken);
-    for (int k = 0; k < g->render_count && !broken; k++)
-        write_scene(f, g, s, k);
+    for (int k = 0; k < g->render_count && !broken; k++) {
+        int group = group_of(g, s, k);
+        if (group == k)
+            write_group(f, g, s, k);
+        write_scene(f, g, s, k, group < 0 && s->results[k].verdict != VERDICT_PASS);
+    }
     fputs(broken ? "</div>\n</section>\n" : "</section>\n", f);
 }
