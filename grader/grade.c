@@ -17,6 +17,7 @@
 #include "grade_junit.h"
 #include "grade_late.h"
 #include "grade_merge.h"
+#include "grade_metadata.h"
 #include "grade_out.h"
 #include "grade_part.h"
 #include "grade_path.h"
@@ -112,6 +113,7 @@ static void print_help(void)
     printf("Usage: grade [options] PART SUBMISSIONS\n"
            "       grade --self [options] PART FOLDER\n"
            "       grade merge [--out DIR] [--junit FILE] [-q] SHARD...\n"
+           "       grade metadata FILE   (Gradescope's submission_metadata.json: its times)\n"
            "Grades every submission in the folder SUBMISSIONS against the reference images\n"
            "of PART (1.1-spheres-red, 1.1, or a part's folder) and writes a report\n"
            "(report.html) and tables (grades.csv, a line a scene; gradebook.csv, a line a\n"
@@ -174,6 +176,8 @@ int main(int argc, char **argv)
     static Grading g;
     if (argc > 1 && strcmp(argv[1], "merge") == 0)
         return merge_main(argc - 1, argv + 1);
+    if (argc > 1 && strcmp(argv[1], "metadata") == 0)
+        return metadata_main(argc - 1, argv + 1);
     for (int k = 0; k < OPTION_COUNT; k++)
         if (options[k].o.fallback != NULL)
             set_option(&g, k, options[k].o.fallback);
