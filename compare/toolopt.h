@@ -7,7 +7,7 @@
 #include <stdio.h>
 
 /* The most options a tool may have. */
-#define TOOLOPT_MAX 24
+#define TOOLOPT_MAX 32
 
 /* One option of a tool. A tool's own table may add fields after it: the functions below
  * are given the table's stride. */

@@ -12,9 +12,12 @@
 #include "grade_contain.h"
 #include "grade_containment.h"
 #include "grade_gradescope.h"
+#include "grade_handin.h"
 #include "grade_jobs.h"
 #include "grade_junit.h"
+#include "grade_late.h"
 #include "grade_merge.h"
+#include "grade_metadata.h"
 #include "grade_out.h"
 #include "grade_part.h"
 #include "grade_path.h"
@@ -44,8 +47,9 @@ typedef struct {
 
 /* grade's options, from which the parsing, the defaults and --help are all made. */
 static const GradeOption options[] = {
-    {{"out", 0, "DIR", "write report.html, grades.csv and the work files\n"
-      "(work/) into DIR (default: grading-PART)", NULL}, OPT_TEXT, offsetof(Grading, out)},
+    {{"out", 0, "DIR", "write report.html, grades.csv, gradebook.csv and the\n"
+      "work files (work/) into DIR (default: grading-PART)", NULL}, OPT_TEXT,
+     offsetof(Grading, out)},
     {{"time-limit", 0, "S", "seconds a student's program may take for one scene;\n"
       "0: no limit", "60"}, OPT_SECONDS, offsetof(Grading, time_limit)},
     {{"build-time-limit", 0, "S", "seconds make may take; 0: no limit", "300"}, OPT_SECONDS,
@@ -89,6 +93,15 @@ static const GradeOption options[] = {
       "default: grading.conf's 'hidden')", NULL}, OPT_TEXT, offsetof(Grading, hidden)},
     {{"grading-conf", 0, "FILE", "the points and visibility of the scenes (default:\n"
       "the part's references/grading.conf)", NULL}, OPT_TEXT, offsetof(Grading, conf)},
+    {{"due", 0, "TIME", "the due date, in place of grading.conf's: ISO 8601\n"
+      "with its time zone (2026-03-01T23:59:00-05:00)", NULL}, OPT_TEXT,
+     offsetof(Grading, due_given)},
+    {{"late-until", 0, "TIME", "late work is taken until TIME, in place of\n"
+      "grading.conf's late_until; later work gets 0", NULL}, OPT_TEXT,
+     offsetof(Grading, until_given)},
+    {{"submitted-at", 0, "TIME", "with --self: when the submission was handed in\n"
+      "(Gradescope's time), in place of its files' time", NULL}, OPT_TEXT,
+     offsetof(Grading, submitted_at)},
     {{"self", 0, NULL, "FOLDER is one student's program (or images): grade\nit alone, "
       "print each scene's verdict and heat map,\nand exit 1 unless every scene passes", NULL},
      OPT_FLAG, offsetof(Grading, self)},
@@ -105,11 +118,13 @@ static void print_help(void)
            "       grade --self [options] PART FOLDER\n"
            "       grade --only NAME[,NAME...] --out OUT [options] PART SUBMISSIONS\n"
            "       grade merge [--out DIR] [--junit FILE] [-q] SHARD...\n"
+           "       grade metadata FILE   (Gradescope's submission_metadata.json: its times)\n"
            "Grades every submission in the folder SUBMISSIONS against the reference images\n"
            "of PART (1.1-spheres-red, 1.1, or a part's folder) and writes a report\n"
-           "(report.html) and a table (grades.csv). SUBMISSIONS holds a folder a student:\n"
-           "images named as the references (spheres-three.png; .pfm, .exr too), or sources\n"
-           "with a Makefile whose make, run in a copy, builds raytra beside it, run as\n"
+           "(report.html) and tables (grades.csv, a line a scene; gradebook.csv, a line a\n"
+           "student). SUBMISSIONS holds a folder a student: images named as the references\n"
+           "(spheres-three.png; .pfm, .exr too), or sources with a Makefile whose make, run\n"
+           "in a copy, builds raytra beside it, run as\n"
            "  raytra SCENE OUTPUT [arguments]\n"
            "for every scene, in a scratch folder, under the limits below. grade merge\n"
            "writes one report of the folders of the shards of a class (--shard); --only\n"
@@ -167,6 +182,8 @@ int main(int argc, char **argv)
     static Grading g, earlier; /* earlier: OUT's grading of the class, for --only */
     if (argc > 1 && strcmp(argv[1], "merge") == 0)
         return merge_main(argc - 1, argv + 1);
+    if (argc > 1 && strcmp(argv[1], "metadata") == 0)
+        return metadata_main(argc - 1, argv + 1);
     for (int k = 0; k < OPTION_COUNT; k++)
         if (options[k].o.fallback != NULL)
             set_option(&g, k, options[k].o.fallback);
@@ -194,12 +211,12 @@ int main(int argc, char **argv)
               regrade_parse(&g) &&
               (path_kind(g.submissions) == S_IFDIR ||
                grade_fail("no folder %s", g.submissions)) &&
-              renders_read(&g) && conf_read(&g) && out_prepare(&g) &&
-              regrade_read(&g, &earlier) &&
+              renders_read(&g) && conf_read(&g) && late_read_options(&g) &&
+              out_prepare(&g) && regrade_read(&g, &earlier) &&
               part_render_hidden(&g) && part_show_references(&g) &&
               (part_make_canaries(&g), submission_list(&g)) &&
               (shard_select(&g), regrade_select(&g, &earlier)) && jobs_grade_all(&g) &&
-              regrade_gather(&g, &earlier) &&
+              regrade_gather(&g, &earlier) && (handin_find_all(&g), true) &&
               (g.shard_n > 0 ? shard_write(&g) : report_write(&g)) &&
               /* A class's results, for a later --only: OUT/results.txt. */
               (g.shard_n > 0 || g.self || (shard_write(&g) && regrade_finish(&g))) &&

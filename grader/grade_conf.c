@@ -8,6 +8,7 @@
 
 #include "array.h"
 #include "grade_base.h"
+#include "grade_late.h"
 #include "grade_path.h"
 #include "grade_renders.h"
 #include "lex.h"
@@ -67,8 +68,9 @@ static bool apply_scene(Grading *g, const ConfScene *c)
 }
 
 /* Reads grading.conf, the instructor's controls (docs/grading.md): the part's points
- * ("part N"), the folder of hidden scenes ("hidden DIR", unless --hidden names one), and
- * a line a scene, "NAME POINTS [VISIBILITY]", "*" for every scene not named. With no
+ * ("part N"), the folder of hidden scenes ("hidden DIR", unless --hidden names one), the
+ * lines of late work (late_conf_line), and a line a scene, "NAME POINTS [VISIBILITY]", "*"
+ * for every scene not named. With no
  * grading.conf, every scene is worth 1 point and visible. Reads the hidden scenes' list
  * too. False (reported, as FILE:LINE: what is wrong) when a line is not right. */
 bool conf_read(Grading *g)
@@ -87,6 +89,7 @@ bool conf_read(Grading *g)
     int capacity = 0;
     ConfScene *scenes = NULL;
     bool ok = true, part_seen = false;
+    unsigned late_seen = 0;
     while (ok && getline(&line, &size, f) >= 0) {
         line_number++;
         Words w;
@@ -96,7 +99,7 @@ bool conf_read(Grading *g)
         for (int k = 0; k < n; k++)
             if (w.word[k][0] == '#')
                 n = k; /* a comment to the end of the line */
-        if (n == 0)
+        if (n == 0 || late_conf_line(g, w.word, n, where, &late_seen, &ok))
             continue;
         if (strcmp(w.word[0], "part") == 0)
             ok = (n == 2 && !part_seen && read_points(w.word[1], &g->part_points) &&

@@ -11,7 +11,7 @@
  * comma, a quote or a line break, or starts or ends with a space; a text that a spreadsheet
  * would take for a formula (=, +, -, @, a tab or a carriage return first) gets a quote '
  * first, and quotes around. */
-static char *csv(const char *text)
+char *csv_field(const char *text)
 {
     size_t len = strlen(text);
     bool formula = len > 0 && strchr("=+-@\t\r", text[0]) != NULL;
@@ -51,9 +51,9 @@ void csv_write(FILE *f, const Grading *g)
                 (double)fig->differing / fig->pixels,
                 fig->differing == 0 ? "" : grade_format("\"(%d,%d)-(%d,%d)\"", fig->box[0],
                                                         fig->box[1], fig->box[2], fig->box[3]));
-            fprintf(f, "%s,%s,%s,%s%s,%s,%s,%.6g\n", csv(g->subs[i].name),
-                    csv(g->renders[k].name), verdict_info[res->verdict].name, figures,
-                    csv(res->message), res->seconds > 0 ? grade_format("%.3f", res->seconds) : "",
+            fprintf(f, "%s,%s,%s,%s%s,%s,%s,%.6g\n", csv_field(g->subs[i].name),
+                    csv_field(g->renders[k].name), verdict_info[res->verdict].name, figures,
+                    csv_field(res->message), res->seconds > 0 ? grade_format("%.3f", res->seconds) : "",
                     res->copy ? "copy" : "",
                     res->verdict == VERDICT_PASS ? g->renders[k].points * scale : 0);
         }

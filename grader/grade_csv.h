@@ -6,6 +6,7 @@
 
 #include "grading.h"
 
+char *csv_field(const char *text);
 void csv_write(FILE *f, const Grading *g);
 
 #endif

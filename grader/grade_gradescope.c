@@ -5,8 +5,9 @@
 
 #include "grade_base.h"
 #include "grade_feedback.h"
-#include "grade_part.h"
+#include "grade_late.h"
 #include "grade_report.h"
+#include "grade_time.h"
 #include "grade_utf8.h"
 #include "progress.h"
 
@@ -69,6 +70,31 @@ static char *points_text(double points)
     return text;
 }
 
+/* Returns, for the student, when submission s was handed in and what lateness costs it,
+ * its final score too unless the total is shown later; "" without a due date. */
+static char *late_text(const Grading *g, const Submission *s, bool total_later)
+{
+    const LatePolicy *p = &g->late;
+    Lateness l = late_of(g, s);
+    if (!l.known)
+        return "";
+    char *when = grade_format("Handed in %s", time_format(s->submitted, p->zone));
+    char *due = time_format(p->due, p->zone);
+    if (l.days == 0 && !l.zero)
+        return grade_format("%s: on time (due %s).\n\n", when, due);
+    char *late = grade_format("%s, %d day%s late (due %s%s)", when, l.days, plural(l.days), due,
+                              p->grace > 0 ? grade_format(", a grace of %s",
+                                                          time_duration_text(p->grace))
+                                           : "");
+    char *score = total_later ? "" : grade_format(" Your score: %s of %s points.",
+                                                  points_text(l.final), points_text(l.max));
+    if (l.zero)
+        return grade_format("%s: later than late work is taken, so the work gets 0.%s\n\n", late,
+                            score);
+    return grade_format("%s: the late penalty takes %s%% of your points.%s\n\n", late,
+                        points_text(l.penalty), score);
+}
+
 /* Returns the summary of the one submission of --self that Gradescope shows above the
  * tests, to students whenever it shows the results: the score of the scenes whose tests
  * are shown (visible) alone, the others neither counted nor named, and whether the total
@@ -100,7 +126,7 @@ static char *summary(const Grading *g, const Submission *s, double scale)
                                      points_text(got), points_text(max));
     if (total_later)
         score = grade_format("%s Gradescope shows your total score later.", score);
-    char *head = grade_format("Part %s: %s\n\n%s", g->part, score,
+    char *head = grade_format("Part %s: %s\n\n%s%s", g->part, score, late_text(g, s, total_later),
                               s->removed == NULL
                                   ? ""
                                   : grade_format("The submission carried build outputs, "
@@ -134,7 +160,8 @@ static char *summary(const Grading *g, const Submission *s, double scale)
 
 /* Writes results.json for the one submission of --self, as Gradescope's autograder
  * specification has it (docs/grading.md, section 7): the score, each scene that passes
- * worth its points (grading.conf, scaled to the part's); the summary; the time the whole
+ * worth its points (grading.conf, scaled to the part's), less the late penalty (its
+ * tests keep their points: the top-level score is the one Gradescope takes); the summary; the time the whole
  * grading took; a test a scene with its points, status, visibility and output (the
  * verdict, figures, time and what to do). Gradescope hides the total score while a test is
  * hidden; when a scene that counts is "hidden", a note shown once the grades are published
@@ -142,11 +169,12 @@ static char *summary(const Grading *g, const Submission *s, double scale)
 static void write_results(FILE *f, const Grading *g)
 {
     const Submission *s = &g->subs[0];
-    double max, got = part_points(g, s, &max), all = 0;
+    Lateness l = late_of(g, s);
+    double all = 0;
     for (int k = 0; k < g->render_count; k++)
         all += g->renders[k].points;
-    double scale = max > 0 && all > 0 ? max / all : 1;
-    fprintf(f, "{\n  \"score\": %.6g,\n  \"execution_time\": %.3f,\n  \"output\": ", got,
+    double scale = l.max > 0 && all > 0 ? l.max / all : 1;
+    fprintf(f, "{\n  \"score\": %.6g,\n  \"execution_time\": %.3f,\n  \"output\": ", l.final,
             clock_now() - g->began);
     put_json(f, summary(g, s, scale));
     fputs(",\n  \"output_format\": \"text\",\n  \"visibility\": \"visible\",\n"

@@ -6,6 +6,7 @@
 #include "grade_base.h"
 #include "grade_feedback.h"
 #include "grade_report.h"
+#include "grade_section.h"
 #include "grade_utf8.h"
 #include "grade_verdict.h"
 
@@ -71,7 +72,7 @@ static void write_junit(FILE *f, const Grading *g)
                 "%s%s", v->tally == TALLY_PASS ? feedback_text(g, s, k, false) : "",
                 res->command == NULL
                     ? ""
-                    : grade_format("$ %s\n%s\n", report_command(s, res),
+                    : grade_format("$ %s\n%s\n", section_command(s, res),
                                    res->log_tail != NULL ? res->log_tail : "(nothing)"));
             fputs("    <testcase name=\"", f);
             put_xml(f, g->renders[k].name, true);

@@ -1,4 +1,4 @@
-/* grade_report.h: report.html and grades.csv, each written whole. */
+/* grade_report.h: report.html, grades.csv and gradebook.csv, each written whole. */
 #ifndef RAYTRA_GRADE_REPORT_H
 #define RAYTRA_GRADE_REPORT_H
 
@@ -7,7 +7,6 @@
 
 #include "grading.h"
 
-char *report_command(const Submission *s, const SceneResult *res);
 bool report_write(const Grading *g);
 bool report_write_whole(const char *path, const Grading *g, void (*write)(FILE *, const Grading *));
 

@@ -24,8 +24,8 @@ static void put_path(FILE *f, const char *work, const char *path)
     results_put_text(f, path != NULL && strncmp(path, work, len) == 0 ? path + len + 1 : path);
 }
 
-/* Writes submission s of g: a "sub" line, then a "scene" line a render, the figures exactly
- * (%a), every path relative to the work folder. */
+/* Writes submission s of g: a "sub" line (with when it was handed in), then a "scene" line
+ * a render, the figures exactly (%a), every path relative to the work folder. */
 void results_put_submission(FILE *f, const Grading *g, const Submission *s)
 {
     fputs("sub", f);
@@ -37,6 +37,8 @@ void results_put_submission(FILE *f, const Grading *g, const Submission *s)
     results_put_text(f, s->build_message);
     results_put_text(f, s->build_log_tail);
     results_put_text(f, s->removed);
+    fprintf(f, " %a", s->submitted);
+    results_put_text(f, s->time_source);
     fputc('\n', f);
     for (int k = 0; k < g->render_count; k++) {
         const SceneResult *r = &s->results[k];
@@ -126,7 +128,7 @@ static char *get_path(Reader *r, int k, const char *work)
 bool results_get_submission(Reader *r, const Grading *g, Submission *s, const char *work,
                             const char *work_name)
 {
-    if (!results_line_is(r, "sub", 8))
+    if (!results_line_is(r, "sub", 10))
         return grade_fail("%s:%d: expected a submission", r->path, r->line);
     *s = (Submission){.work = get_path(r, 1, work_name),
                       .name = results_get_word(r, 2),
@@ -135,7 +137,15 @@ bool results_get_submission(Reader *r, const Grading *g, Submission *s, const ch
                       .link = results_get_text(r, 5),
                       .build_message = results_get_text(r, 6),
                       .build_log_tail = results_get_text(r, 7),
-                      .removed = results_get_text(r, 8)};
+                      .removed = results_get_text(r, 8),
+                      .submitted = results_get_number(r, 9)};
+    /* Where the time came from: one of handin_find_all's words, or none. */
+    static const char *const sources[] = {"git", "files", "given"};
+    char *source = results_get_text(r, 10);
+    for (size_t k = 0; source != NULL && k < sizeof sources / sizeof sources[0]; k++)
+        if (strcmp(source, sources[k]) == 0)
+            s->time_source = sources[k];
+    r->bad |= source != NULL && s->time_source == NULL;
     s->results = grade_alloc((size_t)g->render_count * sizeof *s->results);
     for (int k = 0; k < g->render_count && !r->bad; k++) {
         SceneResult *x = &s->results[k];

@@ -8,7 +8,7 @@
 #include "grading.h"
 
 /* The first line of a results file, with the version of its format. */
-#define RESULTS_MAGIC "grade-results 4"
+#define RESULTS_MAGIC "grade-results 5"
 
 /* A results file being read, a line at a time, split into words. */
 typedef struct {

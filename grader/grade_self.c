@@ -5,6 +5,7 @@
 #include <unistd.h>
 
 #include "grade_base.h"
+#include "grade_late.h"
 #include "grade_run.h"
 #include "grade_verdict.h"
 
@@ -37,7 +38,8 @@ static char *plain(const char *text)
 
 /* Prints, for a student checking their own work, each scene's verdict and reason, the heat
  * map to look at when it did not pass, and the command line to run again when the program
- * failed (crashed, timed out...); returns the exit status: 0 when every scene passes, 1
+ * failed (crashed, timed out...), and with a due date when it was handed in and what
+ * lateness costs; returns the exit status: 0 when every scene passes, 1
  * otherwise. */
 int self_print(const Grading *g)
 {
@@ -56,5 +58,7 @@ int self_print(const Grading *g)
     }
     printf("%d of %d scenes pass; the report: %s/report.html\n", s->tally[TALLY_PASS],
            g->render_count, plain(g->out));
+    if (late_describe(g, s) != NULL)
+        printf("%s\n", late_describe(g, s));
     return s->tally[TALLY_PASS] == g->render_count ? 0 : 1;
 }

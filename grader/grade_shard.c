@@ -75,8 +75,11 @@ static void put_grading(FILE *f, const Grading *g)
     results_put_text(f, g->threshold);
     results_put_text(f, g->allow);
     results_put_text(f, g->standard);
-    fprintf(f, "\nlimits %a %a %lld\npoints %a\nillustrations", g->time_limit,
-            g->build_time_limit, g->memory_limit, g->part_points);
+    const LatePolicy *l = &g->late;
+    fprintf(f, "\nlimits %a %a %lld\npoints %a %d %a %d %a %a %d %a %d %d %d %a\nillustrations",
+            g->time_limit, g->build_time_limit, g->memory_limit, g->part_points, l->due_set,
+            l->due, l->zone, l->grace, l->per_day, l->cap_set, l->cap, l->max_days_set,
+            l->max_days, l->until_set, l->until);
     results_put_text(f, g->illustrations);
     fprintf(f, "\nrenders %d\n", g->render_count);
     for (int k = 0; k < g->render_count; k++) {
@@ -146,6 +149,20 @@ bool shard_write(const Grading *g)
     return true;
 }
 
+/* Reads the heading's "points" line into g: the part's points and the policy of late work. */
+static void get_points(Reader *r, Grading *g)
+{
+    LatePolicy *l = &g->late;
+    double v[12];
+    for (int k = 0; k < 12; k++)
+        v[k] = results_get_number(r, k + 1);
+    g->part_points = v[0];
+    *l = (LatePolicy){.due_set = v[1] != 0, .due = v[2], .zone = (int)v[3], .grace = v[4],
+                      .per_day = v[5], .cap_set = v[6] != 0, .cap = v[7],
+                      .max_days_set = v[8] != 0, .max_days = (int)v[9], .until_set = v[10] != 0,
+                      .until = v[11]};
+}
+
 /* Reads the heading's lines that every shard must share into g, and their text into
  * g->heading; false (reported) when they are not as put_heading writes them. */
 static bool get_heading(Reader *r, Grading *g, const char *work)
@@ -166,8 +183,8 @@ static bool get_heading(Reader *r, Grading *g, const char *work)
             g->time_limit = results_get_number(r, 1),
             g->build_time_limit = results_get_number(r, 2),
             g->memory_limit = (long long)results_get_number(r, 3);
-        else if (line == 4 && results_line_is(r, "points", 1))
-            g->part_points = results_get_number(r, 1);
+        else if (line == 4 && results_line_is(r, "points", 12))
+            get_points(r, g);
         else if (line == 5 && results_line_is(r, "illustrations", 1))
             g->illustrations = results_get_text(r, 1);
         else if (line == 6 && results_line_is(r, "renders", 1) &&

@@ -93,7 +93,26 @@ typedef struct {
     char *removed;        /* the build outputs it carried, removed before make, or NULL */
     SceneResult *results; /* one a render */
     int tally[TALLY_COUNT];
+    double submitted;        /* when it was handed in, in seconds since 1970, if time_source */
+    const char *time_source; /* where that time comes from: "git" (its last commit), "files"
+                              * (its newest file), "given" (--submitted-at); NULL: not known */
 } Submission;
+
+/* When work is due and what lateness costs (grading.conf's due, grace, penalty_per_day,
+ * max_penalty, max_late_days and late_until; --due and --late-until): zero means none. */
+typedef struct {
+    bool due_set;      /* a due date is given: lateness is counted */
+    double due;        /* the due date, in seconds since 1970 */
+    int zone;          /* its time zone, minutes east of UTC: the report's times are in it */
+    double grace;      /* seconds after the due date that are not late */
+    double per_day;    /* the penalty for each day late (rounded up), percent of the points */
+    bool cap_set;      /* the penalty stops at cap, percent */
+    double cap;
+    bool max_days_set; /* more days late than max_days: the work gets 0 */
+    int max_days;
+    bool until_set;    /* handed in after until: the work gets 0 */
+    double until;
+} LatePolicy;
 
 /* Everything a grading run knows: what was asked, what was found, what came out. */
 typedef struct {
@@ -138,6 +157,11 @@ typedef struct {
     double began;            /* when grading began, from clock_now: results.json's time */
     const char *only;        /* --only NAME[,NAME...]: the students regraded into the grading
                               * of the class in OUT, the others' results kept; or NULL */
+    LatePolicy late;         /* when work is due, and what lateness costs */
+    const char *due_given;   /* --due: the due date, in place of grading.conf's; or NULL */
+    const char *until_given; /* --late-until: the end of late work, in place of grading.conf's */
+    const char *submitted_at; /* --submitted-at: when the one submission of --self was handed
+                               * in (Gradescope's time), in place of its files'; or NULL */
 } Grading;
 
 /* How a child ended: status is the exit status (RUN_EXITED), the signal (RUN_KILLED) or the

@@ -352,7 +352,7 @@ check "a long output's cut said" grep -q '^\[grade: [0-9]* bytes cut here: of th
 check "an endless output kept bounded" test "$(wc -c <"$chatty/demo.log")" -lt 140000
 check "the logs' total" test "$(du -sk "$chatty" | cut -f1)" -lt 2000
 check "a temporary left in the output folder" \
-    test -z "$(find "out dir" -mindepth 1 -maxdepth 1 ! -name report.html ! -name grades.csv ! -name results.txt ! -name work ! -name .grade-lock)"
+    test -z "$(find "out dir" -mindepth 1 -maxdepth 1 ! -name report.html ! -name grades.csv ! -name gradebook.csv ! -name results.txt ! -name work ! -name .grade-lock)"
 
 # The grader leaves no process behind and does not touch the students' folders.
 check_no_leftovers "after grading"

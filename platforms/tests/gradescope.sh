@@ -25,9 +25,12 @@
 # each test with its points and visibility, and a program that copies the references its
 # folder carries fails the hidden scenes; the summary speaks of the visible scenes alone,
 # the total is hidden as Gradescope's specification says, no hidden scene's test names a
-# scene file, and no test has an execution_time. Last, a Makefile that prints a fake
+# scene file, and no test has an execution_time. Then a Makefile that prints a fake
 # submission_metadata.json (a marker in it) and the hidden scenes, then fails: as root, the
-# marker must be nowhere in results.json.
+# marker must be nowhere in results.json. Last, late work: a submission_metadata.json whose
+# created_at is 2 days after the due date (the zip's grading.conf takes 10% a day), then
+# the same with the student's extension, then after the student's late due date, then a
+# metadata file that is no JSON.
 set -u
 top=$(cd "$(dirname "$0")/../.." && pwd) || exit 2
 for tool in zip unzip jq iconv; do
@@ -259,6 +262,9 @@ hidden hidden
 *            1
 demo         2   after_published
 own-demo     3   hidden
+# late work: the due date is Gradescope's (submission_metadata.json)
+grace            15m
+penalty_per_day  10%
 EOF
 make --no-print-directory -s -C "$top" gradescope PART=1.3 OUT="$tmp/controls.zip" \
     GRADING_CONF="$tmp/grading.conf" >"$tmp/pack.log" 2>&1 ||
@@ -374,6 +380,56 @@ if grep -q '^s 3 22 -10   9$' "$tmp/hidden/own-shadow.scn" &&
     jq -r .output "$root/results/results.json" | grep -q '^s 3 22 -10   9$'; then
     echo "gradescope.sh: note: the build read a hidden scene, which results.json shows (no sandbox)"
 fi
+
+# Late work: Gradescope's submission_metadata.json says when the submission was handed in
+# and when it was due; a student's own dates (an extension) win over the assignment's.
+# Writes the metadata of a submission handed in at $1, the assignment due at $2, the
+# student's own due date $3 and late due date $4 (JSON: a quoted time, or null).
+metadata() {
+    cat >"$root/submission_metadata.json" <<EOF || exit 2
+{"id": 7, "created_at": "$1",
+ "assignment": {"due_date": "$2", "late_due_date": null, "title": "Part \"1.3\"",
+  "total_points": "50.0"},
+ "users": [{"email": "ada@example.com", "id": 3, "name": "Ada",
+  "assignment": {"due_date": $3, "late_due_date": $4}}],
+ "previous_submissions": [{"submission_time": "2026-03-01T10:00:00-05:00", "score": 50,
+  "results": {"output": "\"created_at\": \"2026-01-01T00:00:00Z\""}}]}
+EOF
+}
+# Handed in 1 day and 10 h after the due date, with 15 min of grace: 2 days late, 20% off.
+echo "== late: handed in 2 days late, then with an extension, then after the late due date"
+metadata 2026-03-03T10:00:00-05:00 2026-03-01T23:59:00-05:00 '"2026-03-01T23:59:00-05:00"' null
+autograde "$correct"
+check "late: the score is not 50 less 20%: $(field .score)" test "$(field .score)" = 40
+check "late: the summary does not say 2 days late and 20% off: $(field .output)" \
+    test "$(field '.output | test("\nHanded in 2026-03-03T10:00:00-05:00, 2 days late \\(due " +
+        "2026-03-01T23:59:00-05:00, a grace of 15 min\\): the late penalty takes 20% of your " +
+        "points\\.\n")')" = true
+check "late: the summary gives the total, which is hidden" \
+    test "$(field '.output | test("Your score|\\b40\\b")')" = false
+check "late: the tests lost their points" test "$(field '[.tests[].score | numbers] | add * 13 / 50 |
+    round')" = 13
+if [ "$(id -u)" -eq 0 ]; then
+    check "late: submission_metadata.json is not root's alone (600)" \
+        test "$(stat -c '%u %a' "$root/submission_metadata.json")" = "0 600"
+fi
+metadata 2026-03-03T10:00:00-05:00 2026-03-01T23:59:00-05:00 '"2026-03-04T23:59:00-05:00"' null
+autograde "$correct"
+check "extension: the score is not 50: $(field .score)" test "$(field .score)" = 50
+check "extension: the summary does not say on time" test "$(field '.output |
+    test("\nHanded in 2026-03-03T10:00:00-05:00: on time \\(due 2026-03-04T23:59:00-05:00\\)")')" = true
+metadata 2026-03-03T10:00:00-05:00 2026-03-01T23:59:00-05:00 '"2026-03-01T23:59:00-05:00"' \
+    '"2026-03-02T23:59:00-05:00"'
+autograde "$correct"
+check "after the late due date: the score is not 0: $(field .score)" test "$(field .score)" = 0
+check "after the late due date: the summary does not say so" test "$(field '.output |
+    test("later than late work is taken, so the work gets 0")')" = true
+printf '{"created_at": ' >"$root/submission_metadata.json"
+autograde "$correct"
+check "broken metadata: the score is not 50" test "$(field .score)" = 50
+check "broken metadata: the instructor is not told" \
+    grep -q "submission_metadata.json cannot be read: no lateness is counted" "$tmp/run.log"
+rm -f "$root/submission_metadata.json"
 
 if [ $failures -eq 0 ]; then
     echo "gradescope.sh: all $checks checks passed"
