@@ -4,6 +4,7 @@
 #include <stdlib.h>
 #include <strings.h>
 
+#include "agree.h"
 #include "baseline.h"
 #include "baseline_tinybvh.h"
 #include "bvh.h"
@@ -108,6 +109,19 @@ static void print_hits(bool shadow, long count, const long hits[1 + BASELINES],
     printf("\n");
 }
 
+/* Explains, ray by ray, a tinybvh layout's count that differs from raytra's: how many
+ * rays each finds that the other does not, and how many of tinybvh's misses are
+ * triangles its Moller-Trumbore test calls parallel to the ray. */
+static void explain_hits(const char *kind, const char *name, const Bvh *bvh,
+                         const TinyBaseline *tiny, const BenchRay *rays, long count, bool shadow)
+{
+    Disagreement d = agree_tiny(bvh, tiny, rays, count, shadow);
+    printf("   %-7s %s: %ld rays %s in raytra %s in %s (%ld the other way); on %ld of them "
+           "raytra's first triangle has |e1.(d x e2)| < %g, which tinybvh takes for parallel\n",
+           kind, name, d.missed, shadow ? "blocked" : "that hit", shadow ? "are not" : "miss", name,
+           d.extra, d.flat, (double)TINY_PARALLEL);
+}
+
 /* Times one set of rays (shadow rays or primary ones): raytra with 1 and 2 threads,
  * Embree likewise, and tinybvh's two layouts with 1 thread, in turns. Prints the hits
  * first, since speeds compare only rays answered alike, then the speeds, and fills
@@ -143,6 +157,10 @@ static void bench_rays(const Bvh *bvh, const Baselines *base, const BenchRay *ra
     for (int k = 0; k < BASELINES; k++)
         out->hits[s][1 + k] = baselines_has(base, k) ? hits[slot[k]] : 0;
     print_hits(shadow, count, out->hits[s], base);
+    for (int k = TINY_BINARY; k < BASELINES; k++)
+        if (baselines_has(base, k) && out->hits[s][1 + k] != hits[0])
+            explain_hits(kind, baseline_names[k], bvh, base->tiny[k - TINY_BINARY], rays, count,
+                         shadow);
     out->threads[s] = rate[1] / rate[0];
     printf("   %-7s 1 thread  %7.2f Mrays/s", kind, rate[0]);
     for (int k = 0; k < BASELINES; k++)
