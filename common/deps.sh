@@ -12,7 +12,8 @@
 #          tests/exr_writer.cpp, which writes OpenEXR test files with the library's C++
 #          API), and Chromium, in which grader/tests/grade-report.sh opens the grading report
 #          (headless);
-#   bench  needs, in addition to build, Embree 3 for the benchmark's baseline;
+#   bench  needs, in addition to build, Embree 3 and a C++ compiler for the benchmark's
+#          baselines (bench/baseline_tinybvh.cpp binds tinybvh, a C++ header);
 #   gradescope  needs, in addition to build, zip, to pack a Gradescope autograder;
 #   gradescope-test  needs, in addition, unzip and jq, with which grader/tests/gradescope.sh
 #          unpacks the autograder and reads the results.json it writes;
@@ -41,7 +42,7 @@ find_chromium() {
     return 1
 }
 case ${1:-build} in
--h | --help) sed -n '2,26s/^# \{0,1\}//p' "$0"; exit 0 ;;
+-h | --help) sed -n '2,27s/^# \{0,1\}//p' "$0"; exit 0 ;;
 build | test | bench | gradescope | gradescope-test | chromium) ;;
 *) echo "deps.sh: no need '$1': build, test, bench, gradescope, gradescope-test or chromium" >&2
    exit 2 ;;
@@ -105,7 +106,7 @@ fi
 if [ $need_check = yes ] && ! $pkg_config --exists check 2>/dev/null; then
     need Check check check-devel check
 fi
-if [ $need_check = yes ] && ! command -v "${CXX:-c++}" >/dev/null 2>&1; then
+if { [ $need_check = yes ] || [ $need_embree = yes ]; } && ! command -v "${CXX:-c++}" >/dev/null 2>&1; then
     need "a C++ compiler" g++ gcc-c++ -
 fi
 if [ $need_embree = yes ] && [ ! -f /usr/include/embree3/rtcore.h ] &&
