@@ -19,7 +19,8 @@
 #   make check-interrupt  renders and loads stopped by signals, failed writes, a deep path
 #                    under a small stack, some under valgrind (CI; a minute or so)
 #   make valgrind    render scenes of every part, and broken inputs, under valgrind's memcheck
-#   make bench       benchmark part 1.4's BVH (against Embree 3 when installed; bench/README.md)
+#   make bench       benchmark part 1.4's BVH against Embree 3 and tinybvh when they are there
+#                    (TINYBVH=DIR: where tiny_bvh.h is; bench/README.md)
 #   make fuzz        build the libFuzzer harnesses of the scene, OBJ and OpenEXR readers (clang)
 #   make fuzz-run    fuzz each reader for FUZZ_SECONDS (default 1800) s (docs/fuzzing.md)
 #   make mistakes    render the gallery of common mistakes and write docs/mistakes.md
@@ -147,10 +148,11 @@ valgrind:
 fuzz:
 	+@$(SUBMAKE) -C tests/fuzz fuzzers
 
-# Speed, never part of make test: installs Embree 3 for the baseline when it can.
+# Speed, never part of make test: installs Embree 3 and a C++ compiler for the baselines when
+# it can (tinybvh's header is not installed: it is ../shared/baselines/tinybvh, or TINYBVH=DIR).
 bench:
 	$(DEPS_STEP)
-	@common/deps.sh bench || echo "bench: Embree 3 is not installed: the baseline will be skipped"
+	@common/deps.sh bench || echo "bench: Embree 3 or a C++ compiler is missing: the baselines that need them will be skipped"
 	+@$(SUBMAKE) -C bench run
 
 fuzz-run: fuzz

@@ -32,6 +32,10 @@ static void *trace_worker(void *arg)
             hits += baseline_trace(job->baseline, job->rays, begin, end, job->shadow);
             continue;
         }
+        if (job->by == BY_TINYBVH) {
+            hits += tiny_trace(job->tiny, job->rays, begin, end, job->shadow);
+            continue;
+        }
         for (long k = begin; k < end; k++) {
             const BenchRay *r = &job->rays[k];
             Hit hit;
@@ -63,13 +67,13 @@ static double trace_pass(Job *job, int threads)
     return timing_now() - start;
 }
 
-/* Traces jobs[0 .. n) with threads[k] threads each, taking turns pass by pass, so that
- * whatever else the machine does slows them alike: at least three passes each, and on
- * until each has run 0.3 s in all (20 passes at most). Sets rate[k] to millions of rays
- * a second of job k's fastest pass, and hits[k] to its hits. */
+/* Traces jobs[0 .. n) (n at most TIMING_MAX_JOBS) with threads[k] threads each, taking turns pass
+ * by pass, so that whatever else the machine does slows them alike: at least three passes each, and
+ * on until each has run 0.3 s in all (20 passes at most). Sets rate[k] to millions of rays a second
+ * of job k's fastest pass, and hits[k] to its hits. */
 void timing_rates(Job **jobs, const int *threads, int n, double *rate, long *hits)
 {
-    double best[4], total[4] = {0};
+    double best[TIMING_MAX_JOBS], total[TIMING_MAX_JOBS] = {0};
     for (int k = 0; k < n; k++)
         best[k] = INFINITY;
     for (int pass = 0; pass < 20; pass++) {

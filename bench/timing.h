@@ -6,16 +6,21 @@
 #include <stdbool.h>
 
 #include "baseline.h"
+#include "baseline_tinybvh.h"
 #include "bvh.h"
 
-/* Who traces: raytra's BVH, brute force or the baseline, and which rays. */
-typedef enum { BY_BVH, BY_BRUTE_FORCE, BY_BASELINE } Tracer;
+/* The most jobs timing_rates takes turns with. */
+#define TIMING_MAX_JOBS 8
+
+/* Who traces: raytra's BVH, brute force, the Embree baseline or a tinybvh one. */
+typedef enum { BY_BVH, BY_BRUTE_FORCE, BY_BASELINE, BY_TINYBVH } Tracer;
 
 /* A set of rays to trace, by whom, and the counters its threads share. */
 typedef struct {
     Tracer by;
     const Bvh *bvh;
     const Baseline *baseline;
+    const TinyBaseline *tiny;
     const BenchRay *rays;
     long count;
     bool shadow;

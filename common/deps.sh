@@ -12,7 +12,8 @@
 #          tests/exr_writer.cpp, which writes OpenEXR test files with the library's C++
 #          API), and Chromium, in which grader/tests/grade-report.sh opens the grading report
 #          (headless);
-#   bench  needs, in addition to build, Embree 3 for the benchmark's baseline;
+#   bench  needs, in addition to build, Embree 3 and a C++ compiler for the benchmark's
+#          baselines (bench/baseline_tinybvh.cpp binds tinybvh, a C++ header);
 #   gradescope  needs, in addition to build, zip, to pack a Gradescope autograder;
 #   gradescope-test  needs, in addition, unzip and jq, with which platforms/tests/gradescope.sh
 #          unpacks the autograder and reads the results.json it writes;
@@ -44,7 +45,7 @@ find_chromium() {
     return 1
 }
 case ${1:-build} in
--h | --help) sed -n '2,30s/^# \{0,1\}//p' "$0"; exit 0 ;;
+-h | --help) sed -n '2,/^[^#]/s/^# \{0,1\}//p' "$0"; exit 0 ;;
 build | test | bench | gradescope | gradescope-test | platforms-test | chromium) ;;
 *) echo "deps.sh: no need '$1': build, test, bench, gradescope, gradescope-test, platforms-test" \
        "or chromium" >&2
@@ -125,7 +126,7 @@ if [ $need_check = yes ] && [ -f "$(dirname "$0")/../book/studentreads.sh" ] &&
     ! ctags --version 2>/dev/null | grep -q 'Universal Ctags'; then
     need universal-ctags universal-ctags ctags universal-ctags
 fi
-if [ $need_check = yes ] && ! command -v "${CXX:-c++}" >/dev/null 2>&1; then
+if { [ $need_check = yes ] || [ $need_embree = yes ]; } && ! command -v "${CXX:-c++}" >/dev/null 2>&1; then
     need "a C++ compiler" g++ gcc-c++ -
 fi
 if [ $need_embree = yes ] && [ ! -f /usr/include/embree3/rtcore.h ] &&
