@@ -48,6 +48,17 @@ void scene_free(Scene *scene)
     memset(scene, 0, sizeof *scene);
 }
 
+/* Returns the FEATURE_ bit of the lights of kind. */
+unsigned scene_light_feature(LightKind kind)
+{
+    static const unsigned kind_feature[] = {
+        [LIGHT_POINT] = FEATURE_POINT_LIGHTS,
+        [LIGHT_DIRECTIONAL] = FEATURE_DIRECTIONAL_LIGHTS,
+        [LIGHT_AREA] = FEATURE_AREA_LIGHTS,
+    };
+    return kind_feature[kind];
+}
+
 /* Returns the FEATURE_ bits of everything the scene contains. */
 unsigned scene_features(const Scene *scene)
 {
@@ -58,14 +69,8 @@ unsigned scene_features(const Scene *scene)
         f |= FEATURE_PLANES;
     if (scene->triangle_count > 0)
         f |= FEATURE_TRIANGLES;
-    for (int k = 0; k < scene->light_count; k++) {
-        static const unsigned kind_feature[] = {
-            [LIGHT_POINT] = FEATURE_POINT_LIGHTS,
-            [LIGHT_DIRECTIONAL] = FEATURE_DIRECTIONAL_LIGHTS,
-            [LIGHT_AREA] = FEATURE_AREA_LIGHTS,
-        };
-        f |= kind_feature[scene->lights[k].kind];
-    }
+    for (int k = 0; k < scene->light_count; k++)
+        f |= scene_light_feature(scene->lights[k].kind);
     if (!color_is_black(scene->ambient))
         f |= FEATURE_AMBIENT_LIGHT;
     for (int k = 0; k < scene->material_count; k++) {

@@ -138,6 +138,7 @@ bool scene_load(Scene *scene, const char *path, const SceneLoadOptions *opts);
 bool scene_load_stream(Scene *scene, FILE *f, const char *path, const SceneLoadOptions *opts);
 void scene_free(Scene *scene);
 unsigned scene_features(const Scene *scene);
+unsigned scene_light_feature(LightKind kind);
 const char *scene_feature_name(unsigned feature);
 bool scene_triangle_is_degenerate(Vec3 a, Vec3 b, Vec3 c);
 const char *convention_name(Convention c);

@@ -67,6 +67,10 @@ Color direct_light(const void *ctx, const Tracer *tr, const Hit *hit, Ray r, con
     return direct_incident(tr, hit, r, &in, depth, path);
 }
 
+/* Part 1.3's hooks, which parts 1.3 and 1.4 hand their tracers: point and directional
+ * lights by Blinn-Phong (direct_light), shadows all or nothing (direct_through). */
+const TracerHooks direct_hooks = {.light = direct_light, .through = direct_through};
+
 /* Returns k_d (.) ambient, slide 21 ("+ shadows + ambient"): at every hit by the lecture
  * convention, where camera rays hit only by fall2016's (docs/1.3-shadows-mirror.md). */
 Color direct_ambient(const Tracer *tr, const Material *m, int depth)

@@ -8,7 +8,7 @@
 #include "hit.h"
 #include "light.h"
 #include "render.h"
-#include "trace.h"
+#include "tracer.h"
 
 Ray direct_shadow_ray(const Tracer *tr, const Hit *hit, Ray r, const Incident *in, double *tmax);
 bool direct_in_shadow(const Tracer *tr, const Hit *hit, Ray r, const Incident *in, int depth,
@@ -21,5 +21,7 @@ Color direct_light(const void *ctx, const Tracer *tr, const Hit *hit, Ray r, con
                    int depth, Path *path);
 Color direct_ambient(const Tracer *tr, const Material *m, int depth);
 Color direct_radiance(const Tracer *tr, const Hit *hit, Ray r, int depth, Path *path);
+
+extern const TracerHooks direct_hooks;
 
 #endif

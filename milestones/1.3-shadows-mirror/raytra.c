@@ -2,6 +2,7 @@
 #include <stdlib.h>
 
 #include "app.h"
+#include "direct.h"
 #include "trace.h"
 
 /* What every pixel reads (the camera and the tracer, as a TraceView), and the tracer. */
@@ -16,7 +17,7 @@ static bool setup(const Scene *scene, const Options *opts, void **ctx)
     Part13 *part = malloc(sizeof *part);
     if (part == NULL)
         return false;
-    part->tracer = tracer_make(scene, surfaces_brute_force(scene), opts);
+    part->tracer = tracer_make(scene, surfaces_brute_force(scene), opts, &direct_hooks, NULL);
     part->view = (TraceView){camera_make(&scene->camera), &part->tracer, part};
     *ctx = &part->view;
     return true;

@@ -4,6 +4,7 @@
 
 #include "accel.h"
 #include "app.h"
+#include "direct.h"
 #include "trace.h"
 
 /* What every pixel reads (part 1.3's TraceView), the tracer, and the geometry behind it. */
@@ -24,7 +25,7 @@ static bool setup(const Scene *scene, const Options *opts, void **ctx)
         free(part);
         return false;
     }
-    part->tracer = tracer_make(scene, accel_surfaces(&part->accel), opts);
+    part->tracer = tracer_make(scene, accel_surfaces(&part->accel), opts, &direct_hooks, NULL);
     part->view = (TraceView){camera_make(&scene->camera), &part->tracer, part};
     *ctx = &part->view;
     return true;

@@ -6,12 +6,14 @@
 #include "app.h"
 #include "refract.h"
 #include "solid.h"
+#include "trace.h"
 
-/* What every pixel reads (part 1.3's TraceView, of the Refractor's tracer), the tracer
- * with this part's hooks, and the geometry behind it. */
+/* What every pixel reads: the camera and the tracer, as part 1.3's TraceView, the
+ * tracer's context (the Refractor), and the geometry behind it. */
 typedef struct {
     TraceView view;
     Refractor refractor;
+    Tracer tracer;
     Accel accel;
 } Part15;
 
@@ -23,9 +25,9 @@ static void cleanup(void *ctx)
     free(part);
 }
 
-/* Builds part 1.4's BVH (or the boxes of MODE), the tracer of the scene with this part's
- * hooks (refract_init), and the camera through which part 1.3's pixel traces with it;
- * then checks the glass meshes. */
+/* Builds part 1.4's BVH (or the boxes of MODE), the Refractor from the command line, the
+ * tracer with this part's hooks and the Refractor as their context, and the camera; then
+ * checks the glass meshes. */
 static bool setup(const Scene *scene, const Options *opts, void **ctx)
 {
     Part15 *part = malloc(sizeof *part);
@@ -35,14 +37,27 @@ static bool setup(const Scene *scene, const Options *opts, void **ctx)
         free(part);
         return false;
     }
-    part->view = (TraceView){camera_make(&scene->camera), &part->refractor.tracer, part};
-    if (!refract_init(&part->refractor, scene, accel_surfaces(&part->accel), opts)) {
+    part->view = (TraceView){camera_make(&scene->camera), &part->tracer, part};
+    if (!refract_init(&part->refractor, scene, opts)) {
         cleanup(&part->view);
         return false;
     }
+    part->tracer =
+        tracer_make(scene, accel_surfaces(&part->accel), opts, &refract_hooks, &part->refractor);
     solid_warn(scene, stderr);
     *ctx = &part->view;
     return true;
+}
+
+/* Returns the radiance along the camera ray through the centre of pixel (i, j): part
+ * 1.5's pixel, which traces with refract_trace, a whole share of its pixel. */
+static Color pixel(const void *ctx, int i, int j, RayStats *stats)
+{
+    const TraceView *view = ctx;
+    const Part15 *part = view->part;
+    Path path = {.stats = stats};
+    Ray r = camera_ray(&view->camera, i + 0.5, j + 0.5);
+    return refract_trace(&part->refractor, view->tracer, r, RAY_PRIMARY, 0, 1, &path);
 }
 
 static const Program program = {
@@ -52,7 +67,7 @@ static const Program program = {
                        "absorption"},
     .features = TRACER_FEATURES | FEATURE_REFRACTION,
     .setup = setup,
-    .pixel = trace_view_pixel,
+    .pixel = pixel,
     .probe = trace_view_probe,
     .views = 1u << VIEW_LIGHT_COUNT | 1u << VIEW_BOX_TESTS,
     .trace_lines = trace_view_lines,

@@ -8,12 +8,10 @@
 #include "cli.h"
 #include "dielectric.h"
 #include "hit.h"
-#include "trace.h"
+#include "tracer.h"
 
-/* Part 1.5's tracer: part 1.3's Tracer, whose radiance and through hooks it takes over
- * (with this Refractor as their context), and how glass reflects. */
+/* How part 1.5 traces glass: the context of its hooks and of refract_trace. */
 typedef struct {
-    Tracer tracer;
     FresnelModel fresnel; /* --fresnel: Schlick's approximation or the exact equations */
     double min_weight;    /* --min-weight: rays that count less in their pixel are not traced */
     bool has_glass;       /* some material has an index of refraction */
@@ -27,9 +25,11 @@ static inline bool refract_is_glass(const Material *m)
 
 extern const CliOption refract_options[];
 extern const CliOption *const refract_part_options[];
+extern const TracerHooks refract_hooks;
 
-bool refract_init(Refractor *rf, const Scene *scene, Surfaces surfaces, const Options *opts);
+bool refract_init(Refractor *rf, const Scene *scene, const Options *opts);
 Hit refract_glass_hit(const Scene *scene, const Hit *hit);
-Color refract_radiance(const void *ctx, const Tracer *tr, Ray r, int depth, Path *path);
+Color refract_trace(const Refractor *rf, const Tracer *tr, Ray r, RayKind kind, int depth,
+                    double weight, Path *path);
 
 #endif

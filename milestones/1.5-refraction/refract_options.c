@@ -2,6 +2,7 @@
 #include "accel.h"
 #include "refract.h"
 #include "shade.h"
+#include "trace.h"
 
 /* clang-format off */
 const CliOption refract_options[] = {

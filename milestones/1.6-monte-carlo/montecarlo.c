@@ -5,13 +5,15 @@
 
 #include "area.h"
 #include "direct.h"
+#include "transmit.h"
 
-/* Sets up mc to render scene: the camera, part 1.5's tracer with this part's light hook,
- * the sampling options. mc is the hook's context: it stays where it is. False
+/* Sets up mc to render scene, finding hits with surfaces: the camera, part 1.3's tracer
+ * (which each sample's extends), part 1.5's Refractor, the sampling options. False
  * (reported) on a bad option. */
 bool montecarlo_init(MonteCarlo *mc, const Scene *scene, Surfaces surfaces, const Options *opts)
 {
-    *mc = (MonteCarlo){.camera = camera_make(&scene->camera),
+    *mc = (MonteCarlo){.tracer = tracer_make(scene, surfaces, opts, &direct_hooks, NULL),
+                       .camera = camera_make(&scene->camera),
                        .pixel_side = cli_int(opts, "samples"),
                        .light_side = cli_int(opts, "light-samples"),
                        .seed = (uint64_t)cli_int(opts, "seed")};
@@ -26,18 +28,13 @@ bool montecarlo_init(MonteCarlo *mc, const Scene *scene, Surfaces surfaces, cons
         fprintf(stderr, "raytra: P and S must be from 1 to %d\n", MONTECARLO_MAX_SIDE);
         return false;
     }
-    if (!refract_init(&mc->below, scene, surfaces, opts))
-        return false;
-    mc->below.tracer.hooks.light = montecarlo_light;
-    mc->below.tracer.hooks.light_ctx = mc;
-    mc->below.tracer.hooks.light_areas = true;
-    return true;
+    return refract_init(&mc->refractor, scene, opts);
 }
 
 /* Tells --view what the camera ray through the centre of pixel (i, j) meets first. */
 void montecarlo_probe(const MonteCarlo *mc, int i, int j, Probe *probe)
 {
-    trace_probe(&mc->below.tracer, camera_ray(&mc->camera, i + 0.5, j + 0.5), probe);
+    trace_probe(&mc->tracer, camera_ray(&mc->camera, i + 0.5, j + 0.5), MONTECARLO_FEATURES, probe);
 }
 
 /* starter: todo */
@@ -61,15 +58,15 @@ void montecarlo_light_point(const MonteCarlo *mc, const Sample *sample, int q, d
  * shadow rays to points spread over it (montecarlo_light_point, area_point), each a
  * point light of 1/S^2 of its colour (area_incident), lit as part 1.3 lights a point
  * light (direct_incident). */
-Color montecarlo_area_radiance(const MonteCarlo *mc, const Light *light, const Hit *hit, Ray r,
-                               int depth, Path *path)
+Color montecarlo_area_radiance(const Sample *sample, const Tracer *tr, const Light *light,
+                               const Hit *hit, Ray r, int depth, Path *path)
 {
-    const Tracer *tr = &mc->below.tracer;
+    const MonteCarlo *mc = sample->mc;
     int count = mc->light_side * mc->light_side;
     Color sum = color(0, 0, 0);
     for (int q = 0; q < count; q++) {
         double ru = 0, rv = 0;
-        montecarlo_light_point(mc, path->sample, q, &ru, &rv);
+        montecarlo_light_point(mc, sample, q, &ru, &rv);
         Vec3 at = area_point(light, ru, rv);
         if (tr->explain != NULL) {
             char p[96];
@@ -88,14 +85,28 @@ Color montecarlo_area_radiance(const MonteCarlo *mc, const Light *light, const H
 }
 
 /* Part 1.6's light hook: an area light sampled by S x S shadow rays; a point or
- * directional light as part 1.3 lights it. ctx is the MonteCarlo. */
+ * directional light as part 1.3 lights it (direct_incident). ctx is the Sample. */
 Color montecarlo_light(const void *ctx, const Tracer *tr, const Hit *hit, Ray r, const Light *light,
                        int depth, Path *path)
 {
     if (light->kind == LIGHT_AREA)
-        return montecarlo_area_radiance(ctx, light, hit, r, depth, path);
-    return direct_light(NULL, tr, hit, r, light, depth, path);
+        return montecarlo_area_radiance(ctx, tr, light, hit, r, depth, path);
+    Incident in = light_incident(light, hit->point, scene_light_falls_off(tr->scene));
+    return direct_incident(tr, hit, r, &in, depth, path);
 }
+
+/* Part 1.6's through hook: part 1.5's transmit_light, handed part 1.5's context, the
+ * Refractor of the Sample ctx. */
+static Color montecarlo_through(const void *ctx, const Tracer *tr, const Hit *hit, Ray r,
+                                const Incident *in, int depth, Path *path)
+{
+    const Sample *sample = ctx;
+    return transmit_light(&sample->mc->refractor, tr, hit, r, in, depth, path);
+}
+
+/* Part 1.6's hooks, which each sample's tracer is handed with the Sample as their context:
+ * area lights sampled, and shadows through glass as in part 1.5. */
+const TracerHooks montecarlo_hooks = {.light = montecarlo_light, .through = montecarlo_through};
 
 /* starter: todo */
 /* Returns in (*x, *y) the image point of ray k of the P x P rays through pixel (i, j):
@@ -146,18 +157,21 @@ static Color sum_samples(const MonteCarlo *mc, int i, int j, int first, int last
         Rng shuffle = rng_make(key, 0);
         strata_shuffle(&shuffle, perm, count);
     }
-    const Tracer *tr = &mc->below.tracer;
     Color sum = color(0, 0, 0);
     for (int k = first; k < last; k++) {
         Rng rng = rng_make(key, (uint64_t)k + 1);
         double x = 0, y = 0;
         montecarlo_point(mc, &rng, i, j, k, &x, &y);
-        explain_sample(tr->explain, mc, k, x, y);
-        Sample sample = {
-            .rng = &rng, .stratum = correlated ? perm[k] : 0, .strata_side = correlated ? side : 0};
-        Path path = {.stats = stats, .weight = 1, .sample = &sample};
+        explain_sample(mc->tracer.explain, mc, k, x, y);
+        Sample sample = {.mc = mc,
+                         .rng = &rng,
+                         .stratum = correlated ? perm[k] : 0,
+                         .strata_side = correlated ? side : 0};
+        /* The sample's own tracer: its hooks draw from the sample's random numbers. */
+        Tracer tr = tracer_extend(&mc->tracer, &montecarlo_hooks, &sample);
+        Path path = {.stats = stats};
         Ray r = camera_ray(&mc->camera, x, y);
-        sum = color_add(sum, tracer_trace(tr, r, RAY_PRIMARY, 0, &path));
+        sum = color_add(sum, refract_trace(&mc->refractor, &tr, r, RAY_PRIMARY, 0, 1, &path));
     }
     return sum;
 }

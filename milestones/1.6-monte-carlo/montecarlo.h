@@ -10,23 +10,19 @@
 #include "rng.h"
 #include "refract.h"
 #include "strata.h"
+#include "trace.h"
 
 /* The largest P and S: the command line's limit (--samples, --light-samples). */
 #define MONTECARLO_MAX_SIDE 64
 
-/* What a pixel sample carries down its path in Path.sample: its own random numbers,
- * drawn in order at every hit, and, in correlated sampling with S = 1, the stratum of
- * the light its shadow rays use. */
-typedef struct {
-    Rng *rng;
-    int stratum;     /* which of strata_side^2 light strata */
-    int strata_side; /* P when the light strata follow the pixel's; 0 otherwise */
-} Sample;
+/* What part 1.6 renders: what part 1.5 renders, and area lights. */
+#define MONTECARLO_FEATURES (TRACER_FEATURES | FEATURE_AREA_LIGHTS | FEATURE_REFRACTION)
 
-/* Everything the pixels read: part 1.5's tracer, whose light hook this part takes over
- * to sample area lights (with this MonteCarlo as its context), and the sampling. */
+/* Everything the pixels read: the geometry and settings every sample's tracer shares,
+ * part 1.5's Refractor, and the sampling. */
 typedef struct {
-    Refractor below; /* part 1.5's tracer: glass, shadows through glass, the BVH */
+    Tracer tracer;       /* the geometry and settings: each sample's tracer extends it */
+    Refractor refractor; /* part 1.5's: glass, and shadows through glass */
     Camera camera;
     Sampling sampling;
     int pixel_side; /* P */
@@ -34,14 +30,26 @@ typedef struct {
     uint64_t seed;
 } MonteCarlo;
 
+/* One pixel sample, the context of the hooks of the tracer that traces it: the part's
+ * settings; its own random numbers, drawn in order at every hit; and, in correlated
+ * sampling with S = 1, the stratum of the light its shadow rays use. */
+typedef struct {
+    const MonteCarlo *mc;
+    Rng *rng;
+    int stratum;     /* which of strata_side^2 light strata */
+    int strata_side; /* P when the light strata follow the pixel's; 0 otherwise */
+} Sample;
+
 extern const CliOption montecarlo_options[];
 extern const CliOption *const montecarlo_part_options[];
+
+extern const TracerHooks montecarlo_hooks;
 
 bool montecarlo_init(MonteCarlo *mc, const Scene *scene, Surfaces surfaces, const Options *opts);
 void montecarlo_light_point(const MonteCarlo *mc, const Sample *sample, int q, double *ru,
                             double *rv);
-Color montecarlo_area_radiance(const MonteCarlo *mc, const Light *light, const Hit *hit, Ray r,
-                               int depth, Path *path);
+Color montecarlo_area_radiance(const Sample *sample, const Tracer *tr, const Light *light,
+                               const Hit *hit, Ray r, int depth, Path *path);
 Color montecarlo_light(const void *ctx, const Tracer *tr, const Hit *hit, Ray r, const Light *light,
                        int depth, Path *path);
 void montecarlo_point(const MonteCarlo *mc, Rng *rng, int i, int j, int k, double *x, double *y);

@@ -11,8 +11,8 @@ typedef struct {
     Accel accel;
 } Part16;
 
-/* Builds the camera, the tracer and the sampling of the scene: part 1.4's BVH behind
- * part 1.5's tracer, with this part's light hook (montecarlo_init). */
+/* Builds part 1.4's BVH, and over it the camera, the tracer and the sampling of the scene
+ * (montecarlo_init). */
 static bool setup(const Scene *scene, const Options *opts, void **ctx)
 {
     Part16 *part = malloc(sizeof *part);
@@ -62,8 +62,7 @@ static void trace_lines(const void *ctx, int sample, double *fewest, double *mos
 {
     const MonteCarlo *mc = &((const Part16 *)ctx)->mc;
     double rays = sample < 0 ? (double)mc->pixel_side * mc->pixel_side : 1;
-    tracer_trace_lines(&mc->below.tracer, rays, (double)mc->light_side * mc->light_side, fewest,
-                       most);
+    tracer_trace_lines(&mc->tracer, rays, (double)mc->light_side * mc->light_side, fewest, most);
 }
 
 static const Program program = {
@@ -71,7 +70,7 @@ static const Program program = {
             .options = montecarlo_part_options,
             .purpose = "Monte Carlo ray tracing: P x P jittered rays per pixel, S x S shadow "
                        "rays per area light"},
-    .features = TRACER_FEATURES | FEATURE_AREA_LIGHTS | FEATURE_REFRACTION,
+    .features = MONTECARLO_FEATURES,
     .setup = setup,
     .pixel = sample_pixel,
     .sample = one_sample,

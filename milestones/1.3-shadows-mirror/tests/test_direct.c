@@ -14,7 +14,7 @@ static Tracer tracer(Scene *scene)
                     .surfaces = surfaces_brute_force(scene),
                     .max_depth = 20,
                     .offset = SECONDARY_OFFSET,
-                    .hooks = tracer_hooks};
+                    .hooks = &direct_hooks};
 }
 
 /* A hit on the floor y = 0 at the origin, seen from above. */

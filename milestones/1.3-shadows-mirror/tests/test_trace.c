@@ -15,7 +15,7 @@ static Tracer tracer(const Scene *scene, int max_depth)
                     .surfaces = surfaces_brute_force(scene),
                     .max_depth = max_depth,
                     .offset = SECONDARY_OFFSET,
-                    .hooks = tracer_hooks};
+                    .hooks = &direct_hooks};
 }
 
 START_TEST(facing_mirrors_stop_at_the_depth_limit)

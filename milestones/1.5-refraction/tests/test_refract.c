@@ -4,47 +4,49 @@
 #include "refract.h"
 #include "secondary.h"
 #include "transmit.h"
-#include "world.h"
 #include "testing.h"
 
 #define PI 3.14159265358979323846
 
-/* A Refractor over scene by brute force, with the default offset; every ray is followed
- * to the depth limit (--min-weight 0). */
-static void refractor(Refractor *rf, const Scene *scene, int max_depth, FresnelModel fresnel)
+/* A Refractor over scene and its tracer by brute force, with the default offset and the
+ * given hooks; every ray is followed to the depth limit (--min-weight 0). */
+static Tracer refractor(Refractor *rf, const Scene *scene, int max_depth, FresnelModel fresnel,
+                        const TracerHooks *hooks)
 {
     Options opts;
     cli_defaults(&opts, refract_part_options);
     cli_set(&opts, "max-depth", OPTION_INT)->whole = max_depth;
     cli_set(&opts, "min-weight", OPTION_NUMBER)->number = 0;
     cli_set(&opts, "fresnel", OPTION_TEXT)->text = fresnel == FRESNEL_EXACT ? "exact" : "schlick";
-    ck_assert(refract_init(rf, scene, surfaces_brute_force(scene), &opts));
+    ck_assert(refract_init(rf, scene, &opts));
+    return tracer_make(scene, surfaces_brute_force(scene), &opts, hooks, rf);
 }
 
 /* Returns the radiance along the camera ray r, as the Refractor's tracer finds it. */
-static Color radiance_of(const Refractor *rf, Ray r, Path *path)
+static Color radiance_of(const Refractor *rf, const Tracer *tr, Ray r, Path *path)
 {
-    path->weight = 1;
-    return tracer_trace(&rf->tracer, r, RAY_PRIMARY, 0, path);
+    return refract_trace(rf, tr, r, RAY_PRIMARY, 0, 1, path);
 }
 
-/* Where the rays that reach material RECORDED at depth RECORDED_DEPTH arrive: a radiance
- * hook that notes the ray's first hit, then traces it as usual. */
+/* Where the rays that reach material RECORDED at depth RECORDED_DEPTH arrive: a light
+ * hook, called at every hit of a scene with one (dark) light, that notes the hit. */
 static int recorded_material, recorded_depth, recorded_count;
 static Vec3 recorded_point, recorded_dir;
 
-/* The recording hook: notes every hit on recorded_material at recorded_depth. */
-static Color record_radiance(const void *ctx, const Tracer *tr, Ray r, int depth, Path *path)
+/* The recording hook: notes every hit on recorded_material at recorded_depth; the light
+ * adds nothing. */
+static Color record_light(const void *ctx, const Tracer *tr, const Hit *hit, Ray r,
+                          const Light *light, int depth, Path *path)
 {
-    Hit hit;
-    if (depth == recorded_depth && world_hit(tr->scene, r, 0, INFINITY, &hit) &&
-        hit.material == recorded_material) {
-        recorded_point = hit.point;
+    (void)ctx, (void)tr, (void)light, (void)path;
+    if (depth == recorded_depth && hit->material == recorded_material) {
+        recorded_point = hit->point;
         recorded_dir = r.dir;
         recorded_count++;
     }
-    return refract_radiance(ctx, tr, r, depth, path);
+    return color(0, 0, 0);
 }
+static const TracerHooks recording = {.light = record_light, .through = transmit_light};
 
 /* Glass of index 1.5 absorbing (0.5, 0.25, 0.8) a unit; a white matte wall. */
 static Material materials[] = {
@@ -60,12 +62,15 @@ START_TEST(through_the_centre_of_a_sphere)
      * crosses 2r = 4 units of glass. */
     Sphere ball = {.center = {0, 0, 0}, .radius = 2, .material = 0};
     Plane wall = {.normal = {0, 0, 1}, .d = 10, .material = 1};
+    Light dark = {.kind = LIGHT_POINT}; /* only to be noted at every hit (record_light) */
     Scene scene = {.materials = materials,
                    .material_count = 2,
                    .spheres = &ball,
                    .sphere_count = 1,
                    .planes = &wall,
                    .plane_count = 1,
+                   .lights = &dark,
+                   .light_count = 1,
                    .ambient = {0.3, 0.3, 0.3}};
     Ray r = ray(vec3(0, 0, 10), vec3(0, 0, -1));
     double t = 1 - 0.04; /* 1 - R0 at n = 1.5, by either model */
@@ -73,12 +78,11 @@ START_TEST(through_the_centre_of_a_sphere)
     for (int model = 0; model < 2; model++) {
         /* Depth 2: in, out, and the wall; the ray reflected inside dies at the budget. */
         Refractor rf;
-        refractor(&rf, &scene, 2, (FresnelModel)model);
-        rf.tracer.hooks.radiance = record_radiance;
+        Tracer tr = refractor(&rf, &scene, 2, (FresnelModel)model, &recording);
         recorded_material = 1, recorded_depth = 2, recorded_count = 0;
         RayStats stats = {{0}};
         Path path = {.stats = &stats};
-        Color c = radiance_of(&rf, r, &path);
+        Color c = radiance_of(&rf, &tr, r, &path);
         /* Exactly, but for the secondary rays' offsets: each ray starts 2^-32 times the
          * coordinates (10) off the surface, so s is short by about 2e-9. */
         ck_assert_color_near(c, color_scale(a4, t * t * 0.3), 1e-10);
@@ -90,8 +94,8 @@ START_TEST(through_the_centre_of_a_sphere)
         ck_assert_int_eq(stats.rays[RAY_REFLECTED], 2);
         /* With room for every bounce, light goes back and forth inside: a geometric
          * series, (1 - R)^2 a^4 W / (1 - R^2 a^8). */
-        refractor(&rf, &scene, 200, (FresnelModel)model);
-        c = radiance_of(&rf, r, &path);
+        tr = refractor(&rf, &scene, 200, (FresnelModel)model, &refract_hooks);
+        c = radiance_of(&rf, &tr, r, &path);
         Color a8 = color_mul(a4, a4);
         Color expected = color(a4.r / (1 - 0.0016 * a8.r), a4.g / (1 - 0.0016 * a8.g),
                                a4.b / (1 - 0.0016 * a8.b));
@@ -111,15 +115,20 @@ static double slab_shift(double n, double h, double theta, FresnelModel model)
     Plane planes[] = {{.normal = {0, 1, 0}, .d = 0, .material = 0},
                       {.normal = {0, -1, 0}, .d = -h, .material = 0},
                       {.normal = {0, 1, 0}, .d = h + 5, .material = 1}};
-    Scene scene = {.materials = m, .material_count = 2, .planes = planes, .plane_count = 3};
+    Light dark = {.kind = LIGHT_POINT}; /* only to be noted at every hit (record_light) */
+    Scene scene = {.materials = m,
+                   .material_count = 2,
+                   .planes = planes,
+                   .plane_count = 3,
+                   .lights = &dark,
+                   .light_count = 1};
     Refractor rf;
-    refractor(&rf, &scene, 10, model);
-    rf.tracer.hooks.radiance = record_radiance;
+    Tracer tr = refractor(&rf, &scene, 10, model, &recording);
     recorded_material = 1, recorded_depth = 2, recorded_count = 0;
     Vec3 o = vec3(0, 10, 0), d = vec3(sin(theta), -cos(theta), 0);
     RayStats stats = {{0}};
     Path path = {.stats = &stats};
-    radiance_of(&rf, ray(o, d), &path);
+    radiance_of(&rf, &tr, ray(o, d), &path);
     ck_assert_int_eq(recorded_count, 1);
     /* Both faces bend the ray by the same angle, the other way: it leaves parallel. */
     ck_assert_vec3_near(recorded_dir, d, 1e-14);
@@ -155,14 +164,14 @@ START_TEST(total_internal_reflection_in_the_tracer)
     Plane surface = {.normal = {0, 1, 0}, .d = 0, .material = 0};
     Scene scene = {.materials = &glass, .material_count = 1, .planes = &surface, .plane_count = 1};
     Refractor rf;
-    refractor(&rf, &scene, 1, FRESNEL_SCHLICK);
+    Tracer tr = refractor(&rf, &scene, 1, FRESNEL_SCHLICK, &refract_hooks);
     double critical = asin(1 / 1.5);
     double angles[] = {critical - 1e-6, critical + 1e-6};
     for (int k = 0; k < 2; k++) {
         RayStats stats = {{0}};
         Path path = {.stats = &stats};
         Ray r = ray(vec3(0, -1, 0), vec3(sin(angles[k]), cos(angles[k]), 0));
-        Color c = radiance_of(&rf, r, &path);
+        Color c = radiance_of(&rf, &tr, r, &path);
         ck_assert(color_is_finite(c));
         ck_assert_int_eq(stats.rays[RAY_REFLECTED], 1);
         ck_assert_int_eq(stats.rays[RAY_REFRACTED], k == 0 ? 1 : 0);
@@ -185,10 +194,10 @@ static Color furnace_of(Ray r, Material glass, FresnelModel model, int max_depth
                    .sphere_count = 3,
                    .ambient = {0.5, 0.5, 0.5}};
     Refractor rf;
-    refractor(&rf, &scene, max_depth, model);
+    Tracer tr = refractor(&rf, &scene, max_depth, model, &refract_hooks);
     rf.min_weight = min_weight;
     Path path = {.stats = stats};
-    return radiance_of(&rf, r, &path);
+    return radiance_of(&rf, &tr, r, &path);
 }
 
 /* The same, with clear or absorbing glass of index ior. */
@@ -265,18 +274,20 @@ START_TEST(the_depth_budget_is_shared)
 }
 END_TEST
 
-/* The depth at which weigh_radiance sees white along every ray; below it, the part's own. */
+/* The depth at which weigh_light sends white back from every hit; above it, nothing. */
 static int weighed_depth;
 
-/* A radiance hook under which the radiance along a ray is the sum, over the rays at depth
- * weighed_depth below it, of their weights: the products of the k_m, 1 - max(k_m), R and
- * 1 - R along their paths (no light, no absorption: a = 1). */
-static Color weigh_radiance(const void *ctx, const Tracer *tr, Ray r, int depth, Path *path)
+/* A light hook under which the radiance along a ray is the sum, over the rays at depth
+ * weighed_depth below it (the depth limit, where every ray ends), of their weights: the
+ * products of the k_m, 1 - max(k_m), R and 1 - R along their paths (no other light, no
+ * absorption: a = 1). */
+static Color weigh_light(const void *ctx, const Tracer *tr, const Hit *hit, Ray r,
+                         const Light *light, int depth, Path *path)
 {
-    if (depth == weighed_depth)
-        return color(1, 1, 1);
-    return refract_radiance(ctx, tr, r, depth, path);
+    (void)ctx, (void)tr, (void)hit, (void)r, (void)light, (void)path;
+    return depth == weighed_depth ? color(1, 1, 1) : color(0, 0, 0);
 }
+static const TracerHooks weighing = {.light = weigh_light, .through = transmit_light};
 
 START_TEST(a_mirror_of_glass_splits_no_more_than_it_gets)
 {
@@ -292,16 +303,21 @@ START_TEST(a_mirror_of_glass_splits_no_more_than_it_gets)
         Sphere spheres[] = {{.center = {0, 0, 0}, .radius = 100, .material = 0},
                             {.center = {0, 0, 0}, .radius = 10, .material = 1},
                             {.center = {25, 5, -3}, .radius = 7, .material = 1}};
-        Scene scene = {.materials = m, .material_count = 2, .spheres = spheres, .sphere_count = 3};
+        Light white = {.kind = LIGHT_POINT}; /* weigh_light's, at every hit */
+        Scene scene = {.materials = m,
+                       .material_count = 2,
+                       .spheres = spheres,
+                       .sphere_count = 3,
+                       .lights = &white,
+                       .light_count = 1};
         for (int depth = 1; depth <= 9; depth++) {
             Refractor rf;
-            refractor(&rf, &scene, depth, FRESNEL_EXACT);
-            rf.tracer.hooks.radiance = weigh_radiance;
+            Tracer tr = refractor(&rf, &scene, depth, FRESNEL_EXACT, &weighing);
             weighed_depth = depth;
             RayStats stats = {{0}};
             Path path = {.stats = &stats};
             Ray r = ray(vec3(3, 1, 50), vec3_normalize(vec3(0.1, 0, -1)));
-            Color w = radiance_of(&rf, r, &path);
+            Color w = radiance_of(&rf, &tr, r, &path);
             ck_assert_msg(w.r <= 1 + 1e-12 && w.g <= 1 + 1e-12 && w.b <= 1 + 1e-12,
                           "coating %d, depth %d: weights add up to (%g, %g, %g)", k, depth, w.r,
                           w.g, w.b);
@@ -353,12 +369,12 @@ static Color light_through(Material ball, FresnelModel model, RayStats *stats)
                    .lights = &lamp,
                    .light_count = 1};
     Refractor rf;
-    refractor(&rf, &scene, 20, model);
+    Tracer tr = refractor(&rf, &scene, 20, model, &refract_hooks);
     Hit hit = {
         .t = 1, .point = {0, 0, 0}, .normal = {0, 1, 0}, .material = 0, .kind = SURFACE_PLANE};
     Incident in = light_incident(&lamp, hit.point, false);
     Path path = {.stats = stats};
-    return transmit_light(&rf, &rf.tracer, &hit,
+    return transmit_light(&rf, &tr, &hit,
                           ray(vec3(0, 1, 1), vec3_normalize(vec3(0, -1, -1))), &in, 0, &path);
 }
 

@@ -128,12 +128,13 @@ static double estimate(Setup *s, Sampling sampling, int side, uint64_t trial)
     s->mc.sampling = sampling;
     s->mc.light_side = side;
     Rng rng = rng_make(rng_hash(trial), (uint64_t)side);
-    Sample sample = {.rng = &rng};
+    Sample sample = {.mc = &s->mc, .rng = &rng};
+    Tracer tr = tracer_extend(&s->mc.tracer, &montecarlo_hooks, &sample);
     RayStats stats = {{0}};
-    Path path = {.stats = &stats, .sample = &sample};
+    Path path = {.stats = &stats};
     Hit hit = {.t = 10, .point = {0, 0, 1}, .normal = {0, 1, 0}, .kind = SURFACE_TRIANGLE};
     Ray down = {{0, 10, 1}, {0, -1, 0}};
-    Color c = direct_radiance(&s->mc.below.tracer, &hit, down, 0, &path);
+    Color c = direct_radiance(&tr, &hit, down, 0, &path);
     ck_assert_msg(stats.rays[RAY_SHADOW] == (unsigned long long)(side * side),
                   "with S = %d, the square light is sampled by %llu shadow rays, not S x S = %d",
                   side, stats.rays[RAY_SHADOW], side * side);
