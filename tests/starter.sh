@@ -72,11 +72,12 @@ dead_links() {
 # The packages common/deps.sh installs to build and to test a starter (not Embree, for the
 # benchmark, nor Chromium, for the grader's report, nor g++ and OpenEXR, for raytra's own
 # tests and tools' reader of OpenEXR files, nor the autograder's zip, unzip and jq, nor
-# bubblewrap, the grader's sandbox, nor universal-ctags, which makes the chapters' tables:
-# none of them a starter's make check uses).
+# bubblewrap, the grader's sandbox, nor universal-ctags, which makes the chapters' tables,
+# nor xmllint and jsonschema, which check the platforms' formats: none of them a starter's
+# make check uses).
 packages=$(sed -n 's/.*need \("[^"]*"\|[A-Za-z0-9+-]*\) \([a-z0-9+-]*\) .*/\2/p' "$top/common/deps.sh" |
     grep -v -x -e libembree-dev -e chromium -e 'g++' -e libopenexr-dev -e zip -e unzip -e jq \
-        -e bubblewrap -e universal-ctags)
+        -e bubblewrap -e universal-ctags -e libxml2-utils -e python3-jsonschema)
 part=common/deps.sh
 [ "$(echo "$packages" | wc -w)" -ge 4 ] || fail "cannot read the packages it installs: '$packages'"
 
