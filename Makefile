@@ -6,8 +6,9 @@
 #   make demo        render scenes/demo-tour.scn with every part, as each shows it best, into out/
 #   make references  re-render every part's reference images, showing what changed
 #   make install [PREFIX=/usr/local] [DESTDIR=]   install each part's renderer as
-#                    raytra-1.1 ... raytra-1.6, and imgdiff and mcstats as raytra-imgdiff and
-#                    raytra-mcstats, into DESTDIR/PREFIX/bin (make uninstall removes them)
+#                    raytra-1.1 ... raytra-1.6, imgdiff and mcstats as raytra-imgdiff and
+#                    raytra-mcstats, and raytra-grade, which runs this checkout's grader,
+#                    into DESTDIR/PREFIX/bin (make uninstall removes them)
 #   make docs        refresh the code excerpts and generated tables in docs/ and grader/docs/ from the source
 #   make starter PART=1.2 [DEST=dir]   write the starter of a part, the folder a course
 #                    hands out, into out/starter-<part>/ (docs/starters.md)
@@ -342,11 +343,13 @@ statistics-figure:
 	@tests/mc-variants/figure.sh $(call program,1.6-monte-carlo) tests/mc-variants/$(BUILD) \
 	    $(IMGDIFF) $(MC_PART)/references docs/figures/1.6-monte-carlo
 
-# The programs that stand alone: each part's renderer, and compare/'s two. The grader is not
-# installed: it grades from its checkout, whose references and scenes it reads.
+# The programs that stand alone: each part's renderer, and compare/'s two; and the grader as
+# raytra-grade, a script that runs this checkout's grader/grade, since the grader grades
+# from its checkout, whose references and scenes it reads.
 PREFIX ?= /usr/local
 BINDIR ?= $(PREFIX)/bin
-INSTALLED := $(foreach part,$(PARTS),raytra-$(firstword $(subst -, ,$(part)))) raytra-imgdiff raytra-mcstats
+INSTALLED := $(foreach part,$(PARTS),raytra-$(firstword $(subst -, ,$(part)))) raytra-imgdiff \
+             raytra-mcstats raytra-grade
 install: all
 	install -d '$(DESTDIR)$(BINDIR)'
 	@for part in $(PARTS); do \
@@ -355,6 +358,9 @@ install: all
 	done
 	install -m 755 $(IMGDIFF) '$(DESTDIR)$(BINDIR)/raytra-imgdiff'
 	install -m 755 $(COMPARE_DIR)/$(BUILD)/mcstats '$(DESTDIR)$(BINDIR)/raytra-mcstats'
+	printf '#!/bin/sh\n# raytra-grade: the grader of the raytra checkout at %s.\nexec %s "$$@"\n' \
+	    '$(TOP)' '$(TOP)/grader/grade' >'$(DESTDIR)$(BINDIR)/raytra-grade'
+	chmod 755 '$(DESTDIR)$(BINDIR)/raytra-grade'
 
 uninstall:
 	cd '$(DESTDIR)$(BINDIR)' && rm -f $(INSTALLED)

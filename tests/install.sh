@@ -21,11 +21,11 @@ for program in "$bin"/raytra-1.*; do
         fail "${program##*/} does not render from $bin"
     count=$((count + 1))
 done
-for tool in raytra-imgdiff raytra-mcstats; do
+for tool in raytra-imgdiff raytra-mcstats raytra-grade; do
     "$bin/$tool" --help >/dev/null || fail "$tool --help fails"
 done
 [ "$count" -eq "$(ls -d milestones/*/ | wc -l)" ] || fail "$count renderers installed"
 $make --no-print-directory -s uninstall DESTDIR="$tmp/stage" PREFIX=/opt/raytra >/dev/null 2>&1 ||
     fail "make uninstall failed"
 [ -z "$(ls -A "$bin")" ] || fail "make uninstall left $(ls "$bin")"
-echo "install: make install put $count renderers and 2 tools in DESTDIR/PREFIX/bin; make uninstall took them away"
+echo "install: make install put $count renderers and 3 tools in DESTDIR/PREFIX/bin; make uninstall took them away"
