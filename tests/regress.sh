@@ -33,14 +33,22 @@ trap 'rm -rf "$tmp"; [ -z "$beat" ] || kill "$beat" 2>/dev/null' EXIT
 trap 'exit 130' INT TERM
 
 # Runs a command; while it runs, says every 5 s how long the render of $image has taken,
-# so that a long one (minutes under the sanitizers) is not a silent one.
+# so that a long one (minutes under the sanitizers) is not a silent one. The beat stops
+# when its file goes, should the kill reach it before its shell is ready for it.
+beats=0
 beating() {
-    (begun=$(date +%s); while sleep 5; do echo "     ... $image: $(($(date +%s) - begun)) s"; done) &
+    beats=$((beats + 1))
+    alive=$tmp/beating-$beats
+    : >"$alive"
+    (begun=$(date +%s)
+     while sleep 5 && [ -e "$alive" ]; do
+         echo "     ... $image: $(($(date +%s) - begun)) s"
+     done) &
     beat=$!
     "$@"
     status=$?
+    rm -f "$alive"
     kill "$beat" 2>/dev/null
-    wait "$beat" 2>/dev/null
     beat=
     return $status
 }
