@@ -1,7 +1,6 @@
 /* hint.c: what to try when a scene or its render looks wrong: no light to shade with, or an image of one colour. */
 #include "hint.h"
 
-#include <math.h>
 #include <string.h>
 
 /* The kinds of light a part may shade with. */
@@ -11,19 +10,6 @@
 static bool unlit(const Scene *scene, unsigned features)
 {
     return (features & FEATURE_SHADING) && (scene_features(scene) & features & LIGHTS) == 0;
-}
-
-/* The brightest point or area light's largest channel: lights of 100 or more without
- * falloff are the Fall 2016 term's, made for 1/r^2 (parse.c notes them as the scene loads). */
-static double brightest(const Scene *scene)
-{
-    double most = 0;
-    for (int k = 0; k < scene->light_count; k++) {
-        const Light *l = &scene->lights[k];
-        if (l->kind != LIGHT_DIRECTIONAL)
-            most = fmax(most, fmax(l->color.r, fmax(l->color.g, l->color.b)));
-    }
-    return most;
 }
 
 /* Warns, before a long render, when part (of these features) shades but the scene has no
@@ -62,7 +48,7 @@ void hint_image(const Scene *scene, unsigned features, const Image *img, FILE *o
     }
     const char *why =
         unlit(scene, features) ? "this scene has no light that this part uses"
-        : !scene_light_falls_off(scene) && brightest(scene) >= 100
+        : scene_light_too_bright(scene) != NULL
             ? "this scene's lights are brighter than 100, as in the Fall 2016 term, whose "
               "planes are p.N = d; try --convention fall2016"
         : (features & FEATURE_SHADING)

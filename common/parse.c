@@ -714,21 +714,14 @@ static void finish(Parser *p, const SceneLoadOptions *opts)
 /* Says once when the scene's point or area lights are far too bright for its convention:
  * the fall2016 scenes' lights are in the thousands, made for 1/r^2 falloff, and their planes
  * are p.N = d. Under the lecture's convention the lit parts wash out to white, and a plane
- * stands on the other side of the origin, where it may hide the light: large parts black.
- * A light of 100 or more, two orders of magnitude above the lecture's lights near 1, is
- * taken for one of them. */
+ * stands on the other side of the origin, where it may hide the light: large parts black
+ * (scene_light_too_bright tells such a light). */
 static void note_convention(const Scene *s, FILE *messages)
 {
-    const Light *brightest = NULL;
-    double most = 0;
-    for (int k = 0; k < s->light_count; k++) {
-        const Light *l = &s->lights[k];
-        double v = fmax(l->color.r, fmax(l->color.g, l->color.b));
-        if (l->kind != LIGHT_DIRECTIONAL && v > most)
-            brightest = l, most = v;
-    }
-    if (scene_light_falls_off(s) || brightest == NULL || most < 100)
+    const Light *brightest = scene_light_too_bright(s);
+    if (brightest == NULL)
         return;
+    double most = fmax(brightest->color.r, fmax(brightest->color.g, brightest->color.b));
     /* Formatted by error_set, which makes a file name safe to print, as diagnostics are. */
     Error note;
     error_set(&note,

@@ -1,6 +1,7 @@
 /* scene.c: the scene model's helpers: freeing, feature lists, conventions, degeneracy. */
 #include "scene.h"
 
+#include <math.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -49,6 +50,22 @@ void scene_free(Scene *scene)
 }
 
 /* Returns the FEATURE_ bit of the lights of kind. */
+/* Returns the scene's brightest point or area light when the scene's convention has no
+ * falloff and that light is 100 or more: two orders of magnitude above the lecture's lights
+ * near 1, it is one of the Fall 2016 term's, made for 1/r^2 falloff. NULL otherwise. */
+const Light *scene_light_too_bright(const Scene *scene)
+{
+    const Light *brightest = NULL;
+    double most = 0;
+    for (int k = 0; k < scene->light_count; k++) {
+        const Light *l = &scene->lights[k];
+        double v = fmax(l->color.r, fmax(l->color.g, l->color.b));
+        if (l->kind != LIGHT_DIRECTIONAL && v > most)
+            brightest = l, most = v;
+    }
+    return scene_light_falls_off(scene) || most < 100 ? NULL : brightest;
+}
+
 unsigned scene_light_feature(LightKind kind)
 {
     static const unsigned kind_feature[] = {

@@ -139,6 +139,7 @@ bool scene_load_stream(Scene *scene, FILE *f, const char *path, const SceneLoadO
 void scene_free(Scene *scene);
 unsigned scene_features(const Scene *scene);
 unsigned scene_light_feature(LightKind kind);
+const Light *scene_light_too_bright(const Scene *scene);
 const char *scene_feature_name(unsigned feature);
 bool scene_triangle_is_degenerate(Vec3 a, Vec3 b, Vec3 c);
 const char *convention_name(Convention c);
