@@ -33,6 +33,10 @@
 #   make statistics-figure  draw the z-score heat maps grader/docs/statistics.md shows
 #   make check-bvh-variants  part 1.4's grading: correct BVHs unlike raytra's pass every scene,
 #                    wrong ones fail, saying why (tests/bvh-variants, a few minutes)
+#   make check-mutation  each part's student functions mutated one change at a time, every
+#                    mutant graded against the part's scenes: the mutation score, and no
+#                    survivor unexplained (tests/mutation; MUTANTS=N grades N a part,
+#                    PARTS_MUTATED= the parts; all of them, an hour or more)
 #   make check-slurm  grade a made-up class through platforms/slurm/grade-slurm on a Slurm cluster
 #                    of one node it starts (as root; installs slurm-wlm and munge, or skips)
 #   make gradescope PART=1.3 [OUT=file.zip]  write the part's Gradescope autograder, by
@@ -71,7 +75,7 @@ FUZZ_SECONDS ?= 1800
 .PHONY: all test test-others demo check-demo check-chromium references docs check-docs check-slides check-figures check-links check-layout check-course clean \
         check-robust check-fuzz-regressions check-bad-input check-interrupt check-nonfinite \
         check-course-render check-renders valgrind fuzz fuzz-run bench mistakes starter check-starter check-starter-chapter check-starters \
-        check-exercises check-statistics calibrate-statistics check-bvh-variants statistics-figure gradescope \
+        check-exercises check-statistics calibrate-statistics check-bvh-variants check-mutation statistics-figure gradescope \
         check-gradescope check-platforms check-slurm check-contain check-debian11 install uninstall check-help check-install
 
 # Each folder is built by its own Makefile once what it links is built: common/ first, then
@@ -279,6 +283,15 @@ check-bvh-variants:
 	+@$(SUBMAKE) all
 	+@$(SUBMAKE) -C tests/bvh-variants
 	@tests/bvh-variants/run.sh $(GRADER_DIR)/$(BUILD)/grade tests/bvh-variants/$(BUILD)
+
+# The graded scenes measured by mutation (grader/docs/mutation.md): each mutant of a part's
+# student functions, graded like a student, is caught by a scene or known to be equivalent.
+MUTANTS ?= 0
+PARTS_MUTATED ?= $(PARTS)
+check-mutation:
+	$(DEPS_STEP)
+	+@$(SUBMAKE) all
+	@tests/mutation/run.sh --sample $(MUTANTS) $(PARTS_MUTATED)
 
 # The false-fail rate of the statistical grading, measured: MC_COUNT seeds (default 350)
 # of each of the six right programs and graded scene, in PNG, PFM and EXR (an hour or so).

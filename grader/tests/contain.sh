@@ -43,6 +43,8 @@ top=$(cd "$(dirname "$0")/../.." && pwd)
 imgdiff=$top/compare/$(basename "$(dirname "$grade")")/imgdiff
 part=1.1-spheres-red
 refs=$top/milestones/$part/references
+# How many scenes the part grades (renders.txt's lines but comments and illustrations).
+n=$(grep -c '^[^#![:space:]]' "$refs/renders.txt")
 model=$top/milestones/$part/raytra
 [ -x "$model" ] || { echo "contain.sh: $model is not built" >&2; exit 2; }
 tmp=$(mktemp -d) || exit 2
@@ -282,8 +284,8 @@ mkdir -p "$tmp/sabotage/b-saboteur"
 cat >"$tmp/sabotage/b-saboteur/Makefile" <<'MAKE'
 raytra:
 	for i in $$(seq 300); do for n in spheres-three spheres-behind-camera camera-straight-down \
-	    spheres-grid-wide demo; do mkdir -p ../../01-a-victim/images/$$n.png 2>/dev/null; \
-	    done; sleep 0.05; done
+	    camera-straight-up camera-inside-sphere spheres-grid-wide demo; do \
+	    mkdir -p ../../01-a-victim/images/$$n.png 2>/dev/null; done; sleep 0.05; done
 	printf '#!/bin/sh\nexit 0\n' >raytra && chmod +x raytra
 MAKE
 printf '#!/bin/sh\nexec %s "$@"\n' "$m" | program peek a-good
@@ -339,7 +341,7 @@ parts() {
             test "$(grep -c 'worker ended without' "$tmp/$mode/out1/two/grades.csv")" -eq 0
     else
         check "1. the killed worker's scenes are not ERRORs" \
-            test "$(grep -c '^killer,.*,ERROR,' "$tmp/$mode/out1/two/grades.csv")" -eq 5
+            test "$(grep -c '^killer,.*,ERROR,' "$tmp/$mode/out1/two/grades.csv")" -eq "$n"
     fi
     if $root; then
         # As root, no limit holds the number of processes: the chain grows its 1,500 levels.
@@ -460,7 +462,7 @@ EOF
             check "3. $how: root read the root-only file into results.json" \
                 test "$(grep -c "SECRET-$$" "$ag/results/results.json")" -eq 0
             check "3. $how: the grading was not finished" \
-                test "$(jq '.tests | length' "$ag/results/results.json")" -eq 5
+                test "$(jq '.tests | length' "$ag/results/results.json")" -eq "$n"
         done
         autograde "$tmp/planters/checkout"
         check "3. checkout: the autograder's references were copied" \
@@ -505,7 +507,7 @@ EOF
     check "4. tty: the program had a terminal" \
         grep -q 'tty: no terminal' "$out/tty/work/02-b-tty/spheres-three.log"
     check "4. tty: a command was pushed into the grader's terminal" test ! -e "$tmp/pwned"
-    check "4. tty: the correct program did not pass" test "$(count "$(csv tty)" a-good PASS)" -eq 5
+    check "4. tty: the correct program did not pass" test "$(count "$(csv tty)" a-good PASS)" -eq "$n"
 
     # A program that keeps stopping every process of its user: grade ends, nothing is left.
     if $root; then
@@ -519,7 +521,7 @@ EOF
         grade4 sabotage --jobs 2
         check "4. sabotage: grade exited with $status" test "$status" -eq 0
         check "4. sabotage: a classmate's make reached the victim's folder" \
-            test "$(count "$(csv sabotage)" a-victim PASS)" -eq 5
+            test "$(count "$(csv sabotage)" a-victim PASS)" -eq "$n"
     fi
 
     # A program that copies a classmate's images (as one user, then two at once).
@@ -531,7 +533,7 @@ EOF
             grade4 peek --jobs "$([ -n "$as" ] && echo $jobs || echo 1)"
             as=$as_was
             check "4. peek, --jobs $jobs: the good program did not pass" \
-                test "$(count "$(csv peek)" a-good PASS)" -eq 5
+                test "$(count "$(csv peek)" a-good PASS)" -eq "$n"
             check "4. peek, --jobs $jobs: a classmate's images were copied" \
                 test "$(count "$(csv peek)" b-peeker PASS)" -eq 0
         done
@@ -542,8 +544,8 @@ EOF
     check "4. filler: grade exited with $status" test "$status" -eq 0
     check "4. filler: no report" test -s "$out/filler/report.html"
     check "4. filler: not named with its reason" \
-        test "$(grep -c '^a-filler,[a-z-]*,ERROR,.*the disk limit' "$(csv filler)")" -eq 5
-    check "4. filler: the next submission did not pass" test "$(count "$(csv filler)" b-good PASS)" -eq 5
+        test "$(grep -c '^a-filler,[a-z-]*,ERROR,.*the disk limit' "$(csv filler)")" -eq "$n"
+    check "4. filler: the next submission did not pass" test "$(count "$(csv filler)" b-good PASS)" -eq "$n"
     check "4. filler: its files were left" test -z "$(ls "$out/filler/work/01-a-filler/run")"
 
     # System V shared memory: none of the students' is left (in namespaces, none at all).
@@ -567,7 +569,7 @@ EOF
     (umask 077 && grade4 umask && exit "$status")
     status=$?
     check "4. umask 077: grade exited with $status" test "$status" -eq 0
-    check "4. umask 077: the program did not pass" test "$(count "$(csv umask)" good PASS)" -eq 5
+    check "4. umask 077: the program did not pass" test "$(count "$(csv umask)" good PASS)" -eq "$n"
 
     # The references copied: from the checkout (unseen in namespaces; in the fallback, only
     # where the checkout is readable to the students' users, told below), or carried in
@@ -578,7 +580,7 @@ EOF
         check "4. copiers: the checkout's references were copied" \
             test "$(count "$(csv copiers)" a-checkout PASS)" -eq 0
     [ "$mode" = namespaces ] ||
-        echo "$say 4. the checkout's references copied: $(count "$(csv copiers)" a-checkout PASS) of 5 pass"
+        echo "$say 4. the checkout's references copied: $(count "$(csv copiers)" a-checkout PASS) of $n pass"
     check "4. copiers: carried references not flagged" \
         test "$(grep '^b-carried,[a-z-]*,PASS,' "$(csv copiers)" | grep -vc ',copy,')" -eq 0
     echo "$say 4. took $(($(date +%s) - start)) s"

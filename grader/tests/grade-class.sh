@@ -70,15 +70,15 @@ check "--jobs 1 writes a report" test -f one/report.html
 check "the work folder's path written work/ in the report" \
     grep -q "<pre>no compiler in work/06-fay/build$" one/report.html
 check "the class's verdicts" test "$(cut -d, -f3 one/grades.csv | sort | uniq -c | tr -s ' ' | tr '\n' ';')" \
-    = " 6 BUILD FAILED; 1 FAIL; 5 MISSING; 23 PASS; 1 WRONG SIZE; 1 verdict;"
+    = " 8 BUILD FAILED; 1 FAIL; 5 MISSING; 33 PASS; 1 WRONG SIZE; 1 verdict;"
 check "the hidden scene: the images handed in have none" \
     test "$(grep -c '^[a-z'"'"' ]*,own,MISSING,' one/grades.csv)" -eq 4
 check "the hidden scene: the program passes it" grep -q '^eli,own,PASS,' one/grades.csv
 check "eli's build outputs: not said removed" grep -q \
     "removed before make: <code>build/$(printf '\nmain.o\nraytra')</code>" one/report.html
-check "eli's points: not 20 of 20" grep -q "6 of 6 scenes pass: 20 of 20 points" one/report.html
-check "ann's points: not 12.7273 of 20 (7 of the scenes' 11, scaled to 20)" \
-    grep -q "5 of 6 scenes pass: 12.7273 of 20 points" one/report.html
+check "eli's points: not 20 of 20" grep -q "8 of 8 scenes pass: 20 of 20 points" one/report.html
+check "ann's points: not 13.8462 of 20 (9 of the scenes' 13, scaled to 20)" \
+    grep -q "7 of 8 scenes pass: 13.8462 of 20 points" one/report.html
 "$grade" -q "$@" --jobs 2 --out two 1.1 class 2>stderr.txt
 check "--jobs 2: the same report and table as --jobs 1" $same one two
 check "--jobs 2: no results file left behind" test -z "$(ls -A two/work | grep results)"

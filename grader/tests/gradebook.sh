@@ -4,8 +4,8 @@
 # Usage: grader/tests/gradebook.sh GRADE   (make -C grader test runs it)
 #   GRADE   the grader, grader/build/grade, with imgdiff beside it
 #
-# The class, made here in a temporary folder, with a grading.conf of known points (4 a
-# scene, demo 4: 20 in all) and a late policy (due 2026-03-01T23:59:00-05:00, a grace of
+# The class, made here in a temporary folder, with a grading.conf of known points (4 for
+# each of five scenes, none for the others: 20 in all) and a late policy (due 2026-03-01T23:59:00-05:00, a grace of
 # 15 min, 10% a day up to 30%, nothing after 5 days late): folders of the references,
 # handed in on time, 2 days late, within the grace, 9 days late (their files' times set
 # with touch -d); a git repository whose files are late but whose last commit, backdated
@@ -64,8 +64,12 @@ mkdir class/fay && printf 'raytra:\n\tfalse\n' >class/fay/Makefile &&
 
 cat >grading.conf <<'EOF'
 # what part 1.1's scenes are worth, and when they are due
-*                4
-demo             4
+*                      0
+spheres-three          4
+spheres-behind-camera  4
+camera-straight-down   4
+spheres-grid-wide      4
+demo                   4
 due              2026-03-01T23:59:00-05:00
 grace            15m
 penalty_per_day  10%
@@ -114,13 +118,13 @@ has 'Handed in 2026-03-10T10:00:00-05:00 (the time of its newest file), 9 days l
 if command -v git >/dev/null 2>&1; then
     has 'Handed in 2026-03-02T12:00:00-05:00 (its last git commit), 1 day late'
 fi
-# The crashes: one open block for the five scenes, each scene's own block closed.
-has '<span class="badge error">CRASHED</span><span class="message">on 5 scenes: spheres-three, spheres-behind-camera, camera-straight-down, spheres-grid-wide, demo: killed by signal 11 (Segmentation fault)</span>'
+# The crashes: one open block for the seven scenes, each scene's own block closed.
+has '<span class="badge error">CRASHED</span><span class="message">on 7 scenes: spheres-three, spheres-behind-camera, camera-straight-down, camera-straight-up, camera-inside-sphere, spheres-grid-wide, demo: killed by signal 11 (Segmentation fault)</span>'
 dee=$(sed -n '/<section id="s4">/,/<\/section>/p' "$report")
 check "dee's section has more than the one open block" \
     test "$(printf '%s\n' "$dee" | grep -c '<details class="scene" open>')" = 1
 check "dee's scenes have no block of their own" \
-    test "$(printf '%s\n' "$dee" | grep -c '<details class="scene">')" = 5
+    test "$(printf '%s\n' "$dee" | grep -c '<details class="scene">')" = 7
 
 # The same gradebook from two jobs, and from two shards merged.
 checks=$((checks + 1))

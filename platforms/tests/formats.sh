@@ -208,11 +208,11 @@ $score of $max" holds --argjson score "$score" --argjson max "$max" '
 done
 
 # What each case holds.
-check "images: GitHub Classroom's tests are not the 3 scenes shown and Scenes not shown" test \
+check "images: GitHub Classroom's tests are not the 5 scenes shown and Scenes not shown" test \
     "$(jq -c '[.tests[] | [.name, .status, .score]]' gh-images.json)" = \
-    '[["spheres-three","fail",0],["spheres-behind-camera","pass",1.25],["demo","fail",0],["Scenes not shown","pass",3.75]]'
+    '[["spheres-three","fail",0],["spheres-behind-camera","pass",1],["camera-straight-up","pass",1],["camera-inside-sphere","pass",1],["demo","fail",0],["Scenes not shown","pass",3]]'
 check "images: a failing test gives no command line as its test_code" test \
-    "$(jq -r '.tests[2].test_code' gh-images.json)" = "./raytra scenes/demo.scn demo.png"
+    "$(jq -r '.tests[4].test_code' gh-images.json)" = "./raytra scenes/demo.scn demo.png"
 for out in gh-images.json pl-images.json cg-images-attribute.xml cg-images-repeat.xml; do
     check "$out names a scene not shown at once" \
         test "$(grep -c -e camera-straight-down -e spheres-grid-wide $out)" = 0
@@ -222,10 +222,10 @@ for out in gh-images-all.json pl-images-all.json cg-images-attribute-all.xml; do
         test "$(grep -o -e camera-straight-down -e spheres-grid-wide $out | sort -u | wc -l)" = 2
 done
 check "images: PrairieLearn's message is not the part's summary" test \
-    "$(jq -r .message pl-images.json)" = "Part 1.1-spheres-red: 3 of 5 scenes pass: 5 of 10 points."
+    "$(jq -r .message pl-images.json)" = "Part 1.1-spheres-red: 5 of 7 scenes pass: 6 of 10 points."
 check "images: CodeGrade's weights are not the points" test \
-    "$(xpath 'concat(//testcase[@name="demo"]/@weight, " ", //testcase[@name="Scenes not shown: passed"]/@weight)' cg-images-attribute.xml)" = "3.75 3.75"
-check "images: --weights repeat did not make demo 3 cases of 1.25 points" test \
+    "$(xpath 'concat(//testcase[@name="demo"]/@weight, " ", //testcase[@name="Scenes not shown: passed"]/@weight)' cg-images-attribute.xml)" = "3 3"
+check "images: --weights repeat did not make demo 3 cases of 1 point" test \
     "$(xpath 'count(//testcase[starts-with(@name, "demo (")])' cg-images-repeat.xml)" = 3
 check "images: the failures are not typed UNREADABLE and MISSING" test \
     "$(xpath 'concat(//testcase[@name="spheres-three"]/failure/@type, " ", //testcase[@name="demo"]/failure/@type)' cg-images-attribute.xml)" = \
@@ -236,8 +236,8 @@ check "nasty: a scene of 0 points is not one <skipped> case with --weights repea
     "$(xpath 'count(//testcase[@name="demo"]/skipped)' cg-nasty-repeat.xml)" = 1
 check "nasty: the program's bytes are not in CodeGrade's XML, what XML cannot hold dropped" \
     grep -q "out\\[31m$(printf '\357\277\275') &quot;q&quot; \\]\\]&gt; &lt;b&gt;&amp;amp;" cg-nasty-attribute.xml
-check "unbuilt: CodeGrade's cases are not 5 errors typed BUILD FAILED" test \
-    "$(xpath 'count(//error[@type="BUILD FAILED"])' cg-unbuilt-attribute.xml)" = 5
+check "unbuilt: CodeGrade's cases are not 7 errors typed BUILD FAILED" test \
+    "$(xpath 'count(//error[@type="BUILD FAILED"])' cg-unbuilt-attribute.xml)" = 7
 check "correct: GitHub Classroom's status is not pass" test "$(jq -r .status gh-correct.json)" = pass
 check "correct: PrairieLearn's score is not 1" test "$(jq .score pl-correct.json)" = 1
 
@@ -289,8 +289,8 @@ check "unit-test.sh exited $status: $(tail -n 3 step.log)" test $status = 0
 xmllint --noout --schema "$platforms/codegrade/junit.xsd" step.xml >valid.log 2>&1
 check "unit-test.sh wrote no valid XML where CG_JUNIT_XML_LOCATION says: $(head -n 3 valid.log)" \
     test "$(cat valid.log)" = "step.xml validates"
-check "unit-test.sh's cases are not 3 passes of 5" test \
-    "$(xpath 'concat(count(//testcase[not(*)]), " of ", count(//testcase))' step.xml)" = "3 of 5"
+check "unit-test.sh's cases are not 5 passes of 7" test \
+    "$(xpath 'concat(count(//testcase[not(*)]), " of ", count(//testcase))' step.xml)" = "5 of 7"
 (cd student && env -u CG_JUNIT_XML_LOCATION sh "$platforms/codegrade/unit-test.sh" 1.1 \
     >/dev/null 2>&1)
 status=$?

@@ -144,7 +144,7 @@ check_results() {
 
 correct=$tmp/correct buggy=$tmp/buggy hostile=$tmp/hostile
 every="progression-1-diffuse progression-2-specular progression-3-ambient progression-4-mirror"
-every="$every shadow-sphere acne-grazing mirrors-facing demo"
+every="$every shadow-sphere acne-grazing acne-far mirrors-facing triangles-winding demo"
 "$top/book/starter.sh" --solution 1.3 "$correct" >/dev/null || exit 2
 cp -R "$correct" "$buggy"
 sed -i 's/add_scaled(d, n, -2 \* vec3_dot(d, n))/add_scaled(d, n, 2 * vec3_dot(d, n))/' \
@@ -165,9 +165,9 @@ echo "== correct: part 1.3's solution"
 start=$(date +%s)
 autograde "$correct"
 seconds=$(($(date +%s) - start))
-check_results 8 "" ""
-check "the summary does not say 8 of 8" test "$(field '.output |
-    startswith("Part 1.3-shadows-mirror: 8 of 8 scenes pass: 8 of 8 points.")')" = true
+check_results 10 "" ""
+check "the summary does not say 10 of 10" test "$(field '.output |
+    startswith("Part 1.3-shadows-mirror: 10 of 10 scenes pass: 10 of 10 points.")')" = true
 check "no execution_time at the top" test "$(field '.execution_time | numbers | . >= 0')" = true
 check "a test has an execution_time, which Gradescope's specification does not have" \
     test "$(field '[.tests[] | has("execution_time")] | any')" = false
@@ -182,7 +182,7 @@ fi
 if want buggy; then
 echo "== buggy: a sign flipped in secondary_reflect"
 autograde "$buggy"
-check_results 5 "progression-4-mirror mirrors-facing demo" FAIL
+check_results 7 "progression-4-mirror mirrors-facing demo" FAIL
 check "a failure says no box, what to do or the command" test "$(field '[.tests[] |
     select(.status == "failed") | .output | test("in the box \\(\\d+,\\d+\\)-\\(\\d+,\\d+\\)") and
     test("\nWhat to do: .*out/check/[a-z0-9-]+\\.heat\\.png") and
