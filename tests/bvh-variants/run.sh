@@ -30,7 +30,8 @@ first-hit:demo-mode-0:does_not_find_the_closest_hit first-hit:torus:pixels_diffe
 first-hit:torus-mode-0:does_not_find_the_closest_hit
 centroid-boxes:demo:pixels_differ centroid-boxes:demo-mode-2:leaf_box
 centroid-boxes:demo-mode-0:does_not_find_the_closest_hit centroid-boxes:torus:pixels_differ
-centroid-boxes:torus-mode-0:does_not_find_the_closest_hit"
+centroid-boxes:torus-mode-0:does_not_find_the_closest_hit
+partition-le:torus:empty_leaves no-depth-cap:chain:levels_deep"
 
 mkdir "$tmp/class"
 for program in "$variants"/raytra-*; do
