@@ -1,6 +1,7 @@
-/* partition-le.c: a wrong BVH: bvh_split partitions with <= where it must have <, so the
- * primitives of the chosen plane's own bin go left too, not the split the SAH priced: the
- * images are right, but the tree is not the SAH's (deeper, more nodes). */
+/* partition-le.c: a wrong BVH: bvh_split partitions with <= where it priced <, so the chosen
+ * plane's own bin goes left too and a side may be left empty, and build_node trusts it never
+ * to be: a leaf of no primitive, a reference of count 0, poses as a node. On the graded
+ * scenes every image is right all the same, but the tree has empty leaves. */
 int bvh_split(Bvh *bvh, int begin, int end, Box box, Box centroids)
 {
     double area = box_half_area(box);
