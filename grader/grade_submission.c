@@ -14,6 +14,7 @@
 
 #include "grade_base.h"
 #include "grade_build.h"
+#include "grade_bvh.h"
 #include "grade_contain.h"
 #include "grade_judge.h"
 #include "grade_path.h"
@@ -99,6 +100,10 @@ static void run_scene(const Grading *g, Submission *s, int k)
         verdict_set(res, VERDICT_ERROR, "ended with %s and wrote no image", how);
     else if (exited)
         judge_file(g, s, k, image, grade_format("ended normally but wrote no %s", r->image));
+    /* A right image from a BVH that breaks part 1.4's rules fails all the same: its report,
+     * the last line printed, is in the log's tail (run.output is imgdiff's by now). */
+    if (exited && !failed)
+        bvh_judge(res, res->log_tail);
     /* An image written before a failure exit is graded; the failure is told. */
     if (wrote && failed && exited && res->verdict != VERDICT_OUT_OF_MEMORY) {
         size_t len = strlen(res->message);

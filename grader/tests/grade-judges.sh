@@ -10,7 +10,8 @@
 # --allow 1) but unlike the program's own mode 3, a mode 2 image that leaves black what
 # mode 1 draws, a missing image to be equal to; in one run and in two shards merged
 # (the judgements go through shard.txt), which must give the same report and CSV. Then renders.txt lines that
-# name nothing are refused. Exit status 0 when every check passes.
+# name nothing are refused, and programs whose image passes are judged by the BVH they report
+# (empty leaves, too many nodes, too deep). Exit status 0 when every check passes.
 set -u
 [ $# -eq 1 ] || { echo "usage: $0 GRADE" >&2; exit 2; }
 case $1 in /*) grade=$1 ;; *) grade=$(pwd)/$1 ;; esac
@@ -104,6 +105,30 @@ refused() { # LINE WORDS
 refused "demo-mode-0.png=nothing.png scenes/demo.scn" "no earlier line renders nothing.png"
 refused "demo-mode-2.png>nothing.png scenes/demo.scn" "no reference image $part/references/nothing.png"
 refused "demo-mode-0.png=demo-mode-0.png scenes/demo.scn" "no earlier line renders demo-mode-0.png"
+
+# A program whose image passes is judged by what it reports of its BVH (grade_bvh.c): each
+# submission a script that writes the reference and prints the report line it is given.
+printf 'demo.png scenes/demo.scn\n' >"$part/references/renders.txt"
+mkdir trees
+tree() { # NAME REPORT: a program that prints REPORT (no BVH line when empty)
+    mkdir "trees/$1"
+    cp "$refs/demo.png" "trees/$1/image.png"
+    printf '#!/bin/sh\ncat "$(dirname "$0")/image.png" >"$2"\n%s\n' \
+        "${2:+echo \"raytra: mode 3: BVH of $2, 62.4 bytes per primitive\" >&2}" >"trees/$1/program"
+    printf 'raytra: program\n\tcp program raytra\n\tchmod +x raytra\n' >"trees/$1/Makefile"
+}
+tree right "25 primitives: 13 interior nodes, 14 leaves (0 empty), depth 7"
+tree no-line ""
+tree empty "25 primitives: 13 interior nodes, 14 leaves (3 empty), depth 7"
+tree nodes "25 primitives: 30 interior nodes, 31 leaves (0 empty), depth 7"
+tree deep "25 primitives: 13 interior nodes, 14 leaves (0 empty), depth 38"
+"$grade" -q --out trees-out "$part" trees || fail "grade of programs failed"
+csv=trees-out/grades.csv
+has right,demo,PASS, ""
+has no-line,demo,PASS, ""
+has empty,demo,FAIL, "the BVH has 3 empty leaves"
+has nodes,demo,FAIL, "the BVH has 30 interior nodes over 25 primitives, more than the n - 1 = 24"
+has deep,demo,FAIL, "the BVH is 38 levels deep, more than the 37"
 
 echo "grade-judges.sh: $((checks - failures)) of $checks checks pass"
 [ "$failures" -eq 0 ]

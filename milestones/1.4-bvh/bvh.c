@@ -9,8 +9,6 @@
 /* The SAH's costs: of visiting a node (two box tests), and of testing one primitive. */
 #define COST_TRAVERSE 1.0
 #define COST_INTERSECT 1.0
-/* Below this depth the SAH chooses splits; deeper, halving the primitives bounds the depth. */
-#define SAH_MAX_DEPTH 32
 
 /* Returns the bin of centroid coordinate c, for bins of width 1 / scale from lo. */
 static inline int bin_of(double c, double lo, double scale)

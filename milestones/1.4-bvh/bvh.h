@@ -13,6 +13,8 @@
 
 /* The hierarchy is never deeper than this, so a traversal stack of this size never overflows. */
 #define BVH_MAX_DEPTH 64
+/* Below this depth the SAH chooses splits; deeper, halving bounds the depth (grade_bvh.c). */
+#define SAH_MAX_DEPTH 32
 /* Leaves hold at most this many primitives. */
 #define BVH_MAX_LEAF 8
 /* Bins per axis of the binned SAH build. */

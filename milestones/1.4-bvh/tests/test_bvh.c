@@ -353,7 +353,7 @@ static bool walk(Walk *w, BvhRef ref, Box box, int who, int depth)
         snprintf(w->wrong, sizeof w->wrong,
                  "%s lies %d levels below the root: the tree is deeper than BVH_MAX_DEPTH (%d), "
                  "the cap bvh_traverse's stack of BVH_MAX_DEPTH subtrees relies on; below some "
-                 "depth (bvh.c: SAH_MAX_DEPTH, each child one level below its node) build_node "
+                 "depth (bvh.h: SAH_MAX_DEPTH, each child one level below its node) build_node "
                  "must stop asking bvh_split and halve its primitives as they lie",
                  ref_name(who, self, sizeof self, NULL, 0), depth, BVH_MAX_DEPTH);
         return false;
