@@ -33,6 +33,9 @@
 #   make statistics-figure  draw the z-score heat maps grader/docs/statistics.md shows
 #   make check-bvh-variants  part 1.4's grading: correct BVHs unlike raytra's pass every scene,
 #                    wrong ones fail, saying why (tests/bvh-variants, a few minutes)
+#   make check-diagnosis  the grader's naming of the known mistake a failing image resembles,
+#                    measured on mistakes kept out of its catalogue (tests/diagnosis; renders
+#                    the mistakes first, make -C grader mistakes; ten minutes or more)
 #   make check-slurm  grade a made-up class through platforms/slurm/grade-slurm on a Slurm cluster
 #                    of one node it starts (as root; installs slurm-wlm and munge, or skips)
 #   make gradescope PART=1.3 [OUT=file.zip]  write the part's Gradescope autograder, by
@@ -71,7 +74,7 @@ FUZZ_SECONDS ?= 1800
 .PHONY: all test test-others demo check-demo check-chromium references docs check-docs check-slides check-figures check-links check-layout check-course clean \
         check-robust check-fuzz-regressions check-bad-input check-interrupt check-nonfinite \
         check-course-render check-renders valgrind fuzz fuzz-run bench mistakes starter check-starter check-starter-chapter check-starters \
-        check-exercises check-statistics calibrate-statistics check-bvh-variants statistics-figure gradescope \
+        check-exercises check-statistics calibrate-statistics check-bvh-variants check-diagnosis statistics-figure gradescope \
         check-gradescope check-platforms check-slurm check-contain check-debian11 install uninstall check-help check-install
 
 # Each folder is built by its own Makefile once what it links is built: common/ first, then
@@ -279,6 +282,18 @@ check-bvh-variants:
 	+@$(SUBMAKE) all
 	+@$(SUBMAKE) -C tests/bvh-variants
 	@tests/bvh-variants/run.sh $(GRADER_DIR)/$(BUILD)/grade tests/bvh-variants/$(BUILD)
+
+# The grader's diagnosis (grader/docs/diagnosis.md): each part's known mistakes rendered, then
+# a class of the catalogue's mistakes, mistakes kept out of it, and correct programs graded;
+# the table of what was named goes to DIAGNOSIS_TABLE when given.
+check-diagnosis:
+	$(DEPS_STEP)
+	+@$(SUBMAKE) all
+	+@$(SUBMAKE) -C grader mistakes
+	+@$(SUBMAKE) -C tests/bvh-variants VARIANT_DIR=../diagnosis/held-out-1.4 \
+	    VARIANT_OUT=../diagnosis/$(BUILD)/held-out-1.4
+	@tests/diagnosis/run.sh $(GRADER_DIR)/$(BUILD)/grade 1.4-bvh tests/diagnosis/1.4-bvh.txt \
+	    $(DIAGNOSIS_TABLE)
 
 # The false-fail rate of the statistical grading, measured: MC_COUNT seeds (default 350)
 # of each of the six right programs and graded scene, in PNG, PFM and EXR (an hour or so).
