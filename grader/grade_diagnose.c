@@ -9,6 +9,7 @@
 #include "grade_base.h"
 #include "grade_path.h"
 #include "grade_run.h"
+#include "image_read.h"
 
 /* One known mistake of the part (grader/mistakes/PART.txt): its name, what it is in words,
  * and the folder of its renders of the part's scenes (grader/mistakes/render.sh). */
@@ -66,6 +67,82 @@ static double psnr_of(const Grading *g, const char *image, const char *against)
     return psnr > DIAGNOSE_EQUAL ? DIAGNOSE_EQUAL : psnr;
 }
 
+/* Returns where image differs from reference, coarsely: the absolute differences summed over
+ * squares of DIAGNOSE_BLOCK pixels, a value a square into *count (malloc'd); NULL when
+ * either cannot be read, their sizes differ, or memory is short. */
+static double *block_errors(const Image *image, const char *reference, int *count)
+{
+    Image ref = {0};
+    Error err;
+    double *blocks = NULL;
+    if (image->pixels != NULL && image_read(&ref, reference, &err) &&
+        ref.width == image->width && ref.height == image->height) {
+        int across = (ref.width + DIAGNOSE_BLOCK - 1) / DIAGNOSE_BLOCK;
+        *count = across * ((ref.height + DIAGNOSE_BLOCK - 1) / DIAGNOSE_BLOCK);
+        blocks = calloc((size_t)*count, sizeof *blocks); /* freed by its caller */
+        for (long p = 0; blocks != NULL && p < (long)ref.width * ref.height; p++) {
+            double *b = &blocks[p / ref.width / DIAGNOSE_BLOCK * across +
+                                p % ref.width / DIAGNOSE_BLOCK];
+            for (int c = 0; c < 3; c++) {
+                double d = fabs((double)image->pixels[3 * p + c] - ref.pixels[3 * p + c]);
+                *b += isfinite(d) ? d : 1;
+            }
+        }
+    }
+    image_free(&ref);
+    return blocks;
+}
+
+/* Returns the cosine of the angle between a and b, of count values: 1 when the differences
+ * fall in the same squares in the same proportions, 0 when in none alike; NAN for none. */
+static double similarity(const double *a, const double *b, int count)
+{
+    double ab = 0, aa = 0, bb = 0;
+    for (int k = 0; k < count; k++)
+        ab += a[k] * b[k], aa += a[k] * a[k], bb += b[k] * b[k];
+    return aa > 0 && bb > 0 ? ab / sqrt(aa * bb) : NAN;
+}
+
+/* Fills like[m] with how alike the squares where image (at path) differs from reference
+ * and those where mistake m's render differs from it are (similarity); NAN when unknown. */
+static void likeness(const char *path, const char *reference, char *const *renders,
+                     double *like)
+{
+    Image image = {0}, mistake = {0};
+    Error err;
+    int count = 0, n = 0;
+    double *own = image_read(&image, path, &err) ? block_errors(&image, reference, &count) : NULL;
+    for (int m = 0; m < mistake_count; m++) {
+        like[m] = NAN;
+        if (own != NULL && renders[m] != NULL && image_read(&mistake, renders[m], &err)) {
+            double *theirs = block_errors(&mistake, reference, &n);
+            if (theirs != NULL && n == count)
+                like[m] = similarity(own, theirs, count);
+            free(theirs);
+        }
+        image_free(&mistake);
+    }
+    free(own);
+    image_free(&image);
+}
+
+/* Chooses by where the differences fall (likeness): the mistake whose render differs from
+ * the reference most as image does, when at least DIAGNOSE_ALIKE and DIAGNOSE_ALIKE_OVER
+ * above every other's; else -1. */
+int diagnose_choose_alike(const double *like, int count)
+{
+    int best = -1;
+    for (int m = 0; m < count; m++)
+        if (!isnan(like[m]) && (best < 0 || like[m] > like[best]))
+            best = m;
+    if (best < 0 || like[best] < DIAGNOSE_ALIKE)
+        return -1;
+    for (int m = 0; m < count; m++)
+        if (m != best && !isnan(like[m]) && like[m] > like[best] - DIAGNOSE_ALIKE_OVER)
+            return -1;
+    return best;
+}
+
 /* Chooses among the candidates' PSNRs (of image to each mistake's render, and to the
  * reference): the nearest mistake when it is clearly nearest, else -1. Clearly: at least
  * DIAGNOSE_NEAR dB, DIAGNOSE_OVER_REFERENCE above the reference and DIAGNOSE_OVER_NEXT above
@@ -85,6 +162,16 @@ int diagnose_choose(const double *psnr, int count, double reference)
     return best;
 }
 
+/* Returns the largest of values but the one at best; 0 when there is none. */
+static double diagnose_next(const double *values, int count, int best)
+{
+    double next = 0;
+    for (int m = 0; m < count; m++)
+        if (m != best && !isnan(values[m]) && values[m] > next)
+            next = values[m];
+    return next;
+}
+
 /* Appends to res's message which known mistake of the part image, failing render k, most
  * resembles: for a render judged against the program's own OTHER (IMAGE=OTHER), image is
  * the program's OTHER, the image that tells; nothing when the part has no known mistake
@@ -102,23 +189,38 @@ void diagnose_scene(const Grading *g, const Submission *s, int k, const char *im
         const Render *other = &g->renders[r->same_as];
         name = other->image, reference = other->reference;
     }
-    double *psnr = grade_alloc((size_t)(mistake_count + 1) * sizeof *psnr);
+    double *psnr = grade_alloc((size_t)(mistake_count + 1) * 2 * sizeof *psnr),
+           *like = psnr + mistake_count + 1;
+    char **renders = grade_alloc((size_t)(mistake_count + 1) * sizeof *renders);
     int rendered = 0;
     for (int m = 0; m < mistake_count; m++) {
-        char *render = grade_format("%s/%s", mistakes[m].renders, name);
-        psnr[m] = path_kind(render) == S_IFREG ? psnr_of(g, image, render) : NAN;
+        renders[m] = grade_format("%s/%s", mistakes[m].renders, name);
+        if (path_kind(renders[m]) != S_IFREG)
+            renders[m] = NULL;
+        psnr[m] = renders[m] != NULL ? psnr_of(g, image, renders[m]) : NAN;
         rendered += !isnan(psnr[m]);
     }
     if (rendered == 0 || reference == NULL)
         return;
     double to_reference = psnr_of(g, image, reference);
-    int best = diagnose_choose(psnr, mistake_count, to_reference);
+    int best = diagnose_choose(psnr, mistake_count, to_reference), alike = -1;
+    /* A Monte Carlo image's squares differ by its noise everywhere: where it differs tells
+     * little, and named another mistake than its own (docs/diagnosis.md). */
+    if (best < 0 && !r->statistical) {
+        likeness(image, reference, renders, like);
+        alike = diagnose_choose_alike(like, mistake_count);
+    }
     size_t used = strlen(res->message);
     if (best >= 0)
         snprintf(res->message + used, sizeof res->message - used,
                  "; closest to: %s (%.0f dB to that mistake's render, %.0f dB to the "
                  "reference)",
                  mistakes[best].title, psnr[best], to_reference);
+    else if (alike >= 0)
+        snprintf(res->message + used, sizeof res->message - used,
+                 "; closest to: %s (it differs from the reference where that mistake's render "
+                 "does, alike at %.2f, the next mistake at most %.2f)",
+                 mistakes[alike].title, like[alike], diagnose_next(like, mistake_count, alike));
     else
         snprintf(res->message + used, sizeof res->message - used,
                  "; no known mistake matches");
