@@ -292,8 +292,12 @@ check-diagnosis:
 	+@$(SUBMAKE) -C grader mistakes
 	+@$(SUBMAKE) -C tests/bvh-variants VARIANT_DIR=../diagnosis/held-out-1.4 \
 	    VARIANT_OUT=../diagnosis/$(BUILD)/held-out-1.4
-	@tests/diagnosis/run.sh $(GRADER_DIR)/$(BUILD)/grade 1.4-bvh tests/diagnosis/1.4-bvh.txt \
-	    $(DIAGNOSIS_TABLE)
+	@failed=0; \
+	tests/diagnosis/run.sh $(GRADER_DIR)/$(BUILD)/grade 1.4-bvh tests/diagnosis/1.4-bvh.txt \
+	    $(DIAGNOSIS_TABLE) || failed=1; \
+	tests/diagnosis/run.sh $(GRADER_DIR)/$(BUILD)/grade 1.6-monte-carlo \
+	    tests/diagnosis/1.6-monte-carlo.txt || failed=1; \
+	exit $$failed
 
 # The false-fail rate of the statistical grading, measured: MC_COUNT seeds (default 350)
 # of each of the six right programs and graded scene, in PNG, PFM and EXR (an hour or so).

@@ -179,7 +179,7 @@ static double diagnose_next(const double *values, int count, int best)
 void diagnose_scene(const Grading *g, const Submission *s, int k, const char *image)
 {
     SceneResult *res = &s->results[k];
-    if (res->verdict != VERDICT_FAIL || !res->compared || s->results[k].message[0] == '\0')
+    if (res->verdict != VERDICT_FAIL || !res->compared)
         return;
     if (mistake_count < 0)
         diagnose_load(g);
@@ -211,7 +211,11 @@ void diagnose_scene(const Grading *g, const Submission *s, int k, const char *im
         alike = diagnose_choose_alike(like, mistake_count);
     }
     size_t used = strlen(res->message);
-    if (best >= 0)
+    if (best >= 0 && psnr[best] >= DIAGNOSE_EQUAL)
+        snprintf(res->message + used, sizeof res->message - used,
+                 "; closest to: %s (equal to that mistake's render; %.0f dB to the reference)",
+                 mistakes[best].title, to_reference);
+    else if (best >= 0)
         snprintf(res->message + used, sizeof res->message - used,
                  "; closest to: %s (%.0f dB to that mistake's render, %.0f dB to the "
                  "reference)",

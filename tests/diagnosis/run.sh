@@ -15,7 +15,8 @@
 # the message names ("closest to: TITLE (") or its abstention ("no known mistake matches").
 # Prints a row a program and the totals over the held-out ones: the right mistake named, a
 # wrong one named. Exit status 1 when the held-out figures miss the bar (right named at
-# least 80 %, a wrong one named at most 5 % of their failing scenes), when a correct program
+# least 80 %, when some have a known mistake; a wrong one named at most 5 % of their
+# failing scenes), when a correct program
 # fails or gets a hint, or when a gallery mistake is not named on every scene it fails.
 set -u
 [ $# -ge 3 ] || { echo "usage: $0 GRADE PART PROGRAMS [TABLE]" >&2; exit 2; }
@@ -102,7 +103,7 @@ END {
     printf "\n| held-out programs | scenes | share |\n|---|---|---|\n" >>table
     printf "| right mistake named (of the scenes of a known mistake) | %d of %d | %.0f %% |\n", right, known, r >>table
     printf "| a wrong mistake named (of all their failing scenes) | %d of %d | %.0f %% |\n", wrong, all, w >>table
-    exit !(known > 0 && r >= 80 && w <= 5)
+    exit !((known == 0 || r >= 80) && w <= 5)
 }' "$tmp/totals" || { echo "FAIL the held-out figures miss the bar (right >= 80 %, wrong <= 5 %)"; failed=1; }
 cat "$tmp/table"
 [ -z "$table" ] || cp "$tmp/table" "$table" || exit 2
