@@ -26,7 +26,7 @@ trap 'exit 130' INT TERM
 #   part 1.4 does not grade it (part 1.3 does). That ties-last passes demo-mode-0 and
 #   torus-mode-0 shows that no two surfaces tie for a pixel of those scenes.
 #   no-swap fails demo-mode-2 with the words of its
-#   #? line (renders.txt) that name box_hit_face, which centroid-boxes's leaf boxes do not.
+#   #? line (renders.txt) that say the boxes are drawn wrong (box_hit_face).
 expectations="median-one:pass sah-ties:pass bins-8:pass ties-first:pass ties-last:pass
 first-hit:demo-mode-0:does_not_find_the_closest_hit first-hit:torus:pixels_differ
 first-hit:torus-mode-0:does_not_find_the_closest_hit
@@ -34,7 +34,7 @@ centroid-boxes:demo:pixels_differ centroid-boxes:demo-mode-2:leaf_box
 centroid-boxes:demo-mode-0:does_not_find_the_closest_hit centroid-boxes:torus:pixels_differ
 centroid-boxes:torus-mode-0:does_not_find_the_closest_hit
 no-swap:demo-mode-1:pixels_differ no-swap:torus-mode-1:pixels_differ
-no-swap:demo-mode-2:box_hit_face_draws_boxes_wrong
+no-swap:demo-mode-2:draws_boxes_wrong
 unpadded:torus-mode-1:pixels_differ
 two-corners:demo:differ two-corners:demo-mode-1:differ two-corners:demo-mode-0:differ
 two-corners:torus:differ two-corners:torus-mode-1:differ two-corners:torus-mode-0:differ"
