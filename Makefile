@@ -37,6 +37,9 @@
 #                    mutant graded against the part's scenes: the mutation score, and no
 #                    survivor unexplained (tests/mutation; MUTANTS=N grades N a part,
 #                    PARTS_MUTATED= the parts; all of them, an hour or more)
+#   make check-diagnosis  the grader's naming of the known mistake a failing image resembles,
+#                    measured on mistakes kept out of its catalogue (tests/diagnosis; renders
+#                    the mistakes first, make -C grader mistakes; ten minutes or more)
 #   make check-slurm  grade a made-up class through platforms/slurm/grade-slurm on a Slurm cluster
 #                    of one node it starts (as root; installs slurm-wlm and munge, or skips)
 #   make gradescope PART=1.3 [OUT=file.zip]  write the part's Gradescope autograder, by
@@ -75,7 +78,7 @@ FUZZ_SECONDS ?= 1800
 .PHONY: all test test-others demo check-demo check-chromium references docs check-docs check-slides check-figures check-links check-layout check-course clean \
         check-robust check-fuzz-regressions check-bad-input check-interrupt check-nonfinite \
         check-course-render check-renders valgrind fuzz fuzz-run bench mistakes starter check-starter check-starter-chapter check-starters \
-        check-exercises check-statistics calibrate-statistics check-bvh-variants check-mutation statistics-figure gradescope \
+        check-exercises check-statistics calibrate-statistics check-bvh-variants check-mutation check-diagnosis statistics-figure gradescope \
         check-gradescope check-platforms check-slurm check-contain check-debian11 install uninstall check-help check-install
 
 # Each folder is built by its own Makefile once what it links is built: common/ first, then
@@ -292,6 +295,21 @@ check-mutation:
 	$(DEPS_STEP)
 	+@$(SUBMAKE) all
 	@tests/mutation/run.sh --sample $(MUTANTS) $(PARTS_MUTATED)
+# The grader's diagnosis (grader/docs/diagnosis.md): each part's known mistakes rendered, then
+# a class of the catalogue's mistakes, mistakes kept out of it, and correct programs graded;
+# the table of what was named goes to DIAGNOSIS_TABLE when given.
+check-diagnosis:
+	$(DEPS_STEP)
+	+@$(SUBMAKE) all
+	+@$(SUBMAKE) -C grader mistakes
+	+@$(SUBMAKE) -C tests/bvh-variants VARIANT_DIR=../diagnosis/held-out-1.4 \
+	    VARIANT_OUT=../diagnosis/$(BUILD)/held-out-1.4
+	@failed=0; \
+	tests/diagnosis/run.sh $(GRADER_DIR)/$(BUILD)/grade 1.4-bvh tests/diagnosis/1.4-bvh.txt \
+	    $(DIAGNOSIS_TABLE) || failed=1; \
+	tests/diagnosis/run.sh $(GRADER_DIR)/$(BUILD)/grade 1.6-monte-carlo \
+	    tests/diagnosis/1.6-monte-carlo.txt || failed=1; \
+	exit $$failed
 
 # The false-fail rate of the statistical grading, measured: MC_COUNT seeds (default 350)
 # of each of the six right programs and graded scene, in PNG, PFM and EXR (an hour or so).

@@ -43,10 +43,12 @@ done
 limit=
 command -v timeout >/dev/null 2>&1 && limit="timeout ${RENDER_SECONDS:-120}"
 echo "== images: renders and heat maps go to $out/"
-images=0 images_failed=0
+images=0 images_failed=0 hint=''
 while read -r image scene options; do
+    # "#? TEXT" says what a failure of the next line means; it is told with the failure.
+    case $image in '#?') hint="$scene $options" && continue ;; esac
     # An illustration (!IMAGE, grader/docs/references.md) is raytra's own picture, not graded.
-    case $image in '' | '#'* | '!'*) continue ;; esac
+    case $image in '' | '#'*) continue ;; '!'*) hint='' && continue ;; esac
     # ~IMAGE: a Monte Carlo render, judged against its statistical reference
     # (grader/docs/statistics.md).
     ref=$refdir/$image
@@ -72,9 +74,11 @@ while read -r image scene options; do
         echo "ok   $image"
     else
         echo "FAIL $image: $(tail -n 1 "$out/$name.diff.txt" | sed 's/^FAIL: //')${own:+" (it must equal this program's own ${own##*/} pixel for pixel)"}"
+        [ -n "$hint" ] && echo "     what it means: $hint"
         [ -f "$out/$name.heat.png" ] && echo "     heat map: $out/$name.heat.png"
         images_failed=$((images_failed + 1))
     fi
+    hint=''
 done <"$refdir/renders.txt"
 
 echo "unit tests: $((tests - tests_failed)) of $tests programs pass"

@@ -3,6 +3,7 @@
 
 #include <math.h>
 #include <stdio.h>
+#include <string.h>
 
 #include "imgmap.h"
 
@@ -91,6 +92,13 @@ static void print_figures(const Diff *d, int width, int height, double top, cons
         printf("non-finite pixels: %ld (NaN or infinite in either image)\n", d->nonfinite);
 }
 
+/* Returns the name of the file at path, without its folders. */
+static const char *file_name(const char *path)
+{
+    const char *slash = strrchr(path, '/');
+    return slash != NULL ? slash + 1 : path;
+}
+
 /* Prints the verdict line; returns the exit status it means. */
 static int print_verdict(const Diff *d, long pixels, const DiffOptions *o)
 {
@@ -102,10 +110,11 @@ static int print_verdict(const Diff *d, long pixels, const DiffOptions *o)
         printf("FAIL: %ld pixel%s not finite (NaN or infinite)\n", d->nonfinite,
                d->nonfinite == 1 ? " is" : "s are");
     else if (o->cover)
-        printf("%s: %.3g%% of the pixels are drawn in A and not in B (black, at most %.3g/255), "
-               "%s the %.3g%% allowed\n",
-               pass ? "PASS" : "FAIL", 100.0 * d->differing / pixels, o->threshold * 255,
-               pass ? "within" : "more than", o->allow * 100);
+        printf("%s: %.3g%% of the pixels are drawn in %s (A) and not in %s (B: black, at most "
+               "%.3g/255), %s the %.3g%% allowed\n",
+               pass ? "PASS" : "FAIL", 100.0 * d->differing / pixels, file_name(o->paths[0]),
+               file_name(o->paths[1]), o->threshold * 255, pass ? "within" : "more than",
+               o->allow * 100);
     else if (d->max[0] == 0 && d->max[1] == 0 && d->max[2] == 0)
         printf("PASS: the images are identical\n");
     else if (d->differing == 0)

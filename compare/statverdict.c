@@ -84,28 +84,33 @@ bool statverdict_decide(const StatDiff *d, const McRef *ref, int width, int heig
         strcpy(test, "smooth");
         snprintf(text, size,
                  "smooth: too little noise for P %d S %d: %.2f times raytra's over the image's "
-                 "noisy squares (at least %.2f): more samples than asked, a denoiser, or an "
-                 "average of renders?",
+                 "noisy squares (at least %.2f): neighbouring pixels err alike, as when every "
+                 "pixel takes the same random offsets (its own numbers not drawn for each "
+                 "pixel); or more samples than asked, a denoiser, an average of renders?",
                  ref->p, ref->s, d->noise.ratio, STATDIFF_NOISE_LOW);
     } else if (n != NULL && d->noise.ratio > most_image) {
         strcpy(test, "noise");
         snprintf(text, size,
                  "noise: unbiased, but %.2f times as noisy as raytra's at P %d S %d over the "
                  "image's noisy squares, more than the \"%s\" standard allows (%.2f): fewer "
-                 "samples than asked, or %s?",
+                 "samples than asked, a pixel's samples spread beyond it (a filter wider than "
+                 "the pixel), or %s?",
                  d->noise.ratio, ref->p, ref->s, statstandard_name(d->standard), most_image,
-                 d->standard == STATDIFF_OK ? "pixels not stratified"
-                                            : "light samples not stratified");
+                 d->standard == STATDIFF_OK
+                     ? "a pixel's samples not stratified"
+                     : "a pixel's samples, or an area light's if the scene has one, not stratified");
     } else if (n != NULL && n->ratio > most_square) {
         strcpy(test, "noise");
         statverdict_square_text(n, width, height, where, sizeof where);
         snprintf(text, size,
                  "noise: unbiased, but the square %s, %c, is %.2f times as noisy as raytra's at "
-                 "P %d S %d, more than the \"%s\" standard allows (%.2f): %s?",
+                 "P %d S %d, more than the \"%s\" standard allows (%.2f): a pixel's samples "
+                 "spread beyond it (a filter wider than the pixel), or %s?",
                  where, "RGB"[n->c], n -> ratio, ref -> p, ref -> s,
                  statstandard_name(d->standard), most_square,
-                 d -> standard == STATDIFF_OK ? "pixels not stratified"
-                                              : "pixels or light samples not stratified");
+                 d -> standard == STATDIFF_OK
+                     ? "a pixel's samples not stratified"
+                     : "a pixel's samples, or an area light's if the scene has one, not stratified");
     } else {
         snprintf(text, size,
                  "converges to the reference: no block biased (largest |z| %.2f, critical %.2f), "

@@ -6,6 +6,7 @@
 #include <unistd.h>
 
 #include "grade_base.h"
+#include "grade_diagnose.h"
 #include "grade_path.h"
 #include "grade_run.h"
 #include "grade_verdict.h"
@@ -180,6 +181,7 @@ static void compare_image(const Grading *g, const Submission *s, int k, const ch
     else if (d.run.end != RUN_INTERRUPTED)
         verdict_set(res, VERDICT_UNREADABLE, "imgdiff could not compare the file (%s)",
                     run_describe(&d.run));
+    diagnose_scene(g, s, k, other != NULL ? judge_image_path(g, s, r->same_as) : image);
 }
 
 /* Judges the file at path as the image of render k, with lstat first so that a FIFO or a

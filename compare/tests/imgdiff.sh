@@ -132,10 +132,10 @@ run 0 --allow=1/12 a.pfm one.pfm
 # black; B drawn where A is black, or drawn otherwise, is no difference. step4.pfm is drawn
 # at (3,0) only (3.98/255), step2.pfm nowhere (1.99/255 is within 2/255).
 run 0 --cover --allow 0 black.pfm a.pfm
-has "PASS: 0% of the pixels are drawn in A and not in B (black, at most 2/255), within the 0% allowed"
+has "PASS: 0% of the pixels are drawn in black.pfm (A) and not in a.pfm (B: black, at most 2/255), within the 0% allowed"
 run 0 --cover --allow 0 a.pfm one.pfm
 run 1 --cover --allow 0 step4.pfm step2.pfm
-has "FAIL: 8.33% of the pixels are drawn in A and not in B (black, at most 2/255), more than the 0% allowed"
+has "FAIL: 8.33% of the pixels are drawn in step4.pfm (A) and not in step2.pfm (B: black, at most 2/255), more than the 0% allowed"
 run 1 --cover --machine a.pfm black.pfm
 has "differing 12 12"
 has "box 0 0 3 2"

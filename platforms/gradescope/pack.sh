@@ -66,6 +66,17 @@ while IFS= read -r file; do
 done <"$stage/files"
 cp "$top/platforms/gradescope/setup.sh" "$top/platforms/gradescope/run_autograder" "$stage/root/" || exit 2
 
+# The part's known mistakes and their renders (make -C grader mistakes), when made: the
+# grader names the one a failing image resembles (grader/docs/diagnosis.md). The zip holds
+# no model answer to render them from.
+mistakes=$top/grader/build/mistakes/$part
+if [ -f "$top/grader/mistakes/$part.txt" ] && [ -d "$mistakes" ]; then
+    mkdir -p "$stage/root/grader/mistakes" "$stage/root/grader/build/mistakes" &&
+        cp "$top/grader/mistakes/$part.txt" "$stage/root/grader/mistakes/" &&
+        cp -R "$mistakes" "$stage/root/grader/build/mistakes/" &&
+        find "$stage/root/grader/build/mistakes" -name '*.log' -exec rm -f {} + || exit 2
+fi
+
 # The instructor's controls, and the hidden scenes with their references, rendered now.
 conf=${GRADING_CONF:-$top/milestones/$part/references/grading.conf}
 hidden=${HIDDEN:-}

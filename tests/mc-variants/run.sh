@@ -26,13 +26,14 @@ trap 'exit 130' INT TERM
 # solution), or fail by a test (biased: bias or exact; tests joined by +: any of them)
 # where it fails, on one scene at least; untold: a mistake one image cannot tell, shown
 # for what it is judged. A mistake that one image cannot show passes some scenes
-# (grader/docs/statistics.md).
+# (grader/docs/statistics.md). same-offsets and wide-filter are also known mistakes of the
+# part, which the grader names when an image resembles theirs (grader/docs/diagnosis.md).
 expectations="rv-first:good:pass own-rng:good:pass xorshift:good:pass drand48:good:pass
 transposed:good:pass shift:good:pass random-light:ok:pass random-light:good:noise
 no-cosine:good:biased one-over-s:good:biased flipped:good:biased half-pixel:good:biased
 no-falloff:good:biased bright-2:good:biased bright-1:good:biased checker:good:biased
 denoise:good:biased more-samples:good:smooth hard-shadow:good:smooth+biased no-jitter:good:smooth
-not-stratified:good:untold"
+not-stratified:good:untold same-offsets:good:biased wide-filter:good:biased"
 
 # The statistical references: NAME SCENE OPTIONS..., a line each.
 sed -n 's/^~\([^[:space:]]*\)\.[a-z]*[[:space:]]/\1 /p' "$refdir/renders.txt" >"$tmp/scenes"

@@ -303,3 +303,36 @@ void montecarlo_light_point(const MonteCarlo *mc, const Sample *sample, int q, d
     *rv = (stratum / n + 0.5) / n;
 }
 #endif
+
+#ifdef VARIANT_same_offsets
+#include "rng.h"
+
+/* Wrong: the light's points drawn from numbers made afresh from the seed and q alone, the
+ * same for every pixel: each pixel's shadow is sampled at the same points, so the noise of
+ * neighbouring pixels is one, and a soft shadow turns to bands. */
+void montecarlo_light_point(const MonteCarlo *mc, const Sample *sample, int q, double *ru,
+                            double *rv)
+{
+    Rng same = rng_make(mc->seed, (uint64_t)q);
+    if (mc->light_side == 1 && sample->strata_side > 1)
+        strata_point(SAMPLING_JITTERED, &same, sample->stratum, sample->strata_side, ru, rv);
+    else
+        strata_point(mc->sampling, &same, q, mc->light_side, ru, rv);
+}
+#endif
+
+#ifdef VARIANT_wide_filter
+/* Wrong: the pixel's points spread over a square 2 pixels wide round its centre, a box
+ * filter twice the pixel: the image is blurred, and noisier than raytra's where it is. */
+void montecarlo_point(const MonteCarlo *mc, Rng *rng, int i, int j, int k, double *x, double *y)
+{
+    *x = i + 0.5;
+    *y = j + 0.5;
+    if (mc->pixel_side > 1) {
+        double du, dv;
+        strata_point(mc->sampling, rng, k, mc->pixel_side, &du, &dv);
+        *x = i + 0.5 + 2 * (du - 0.5);
+        *y = j + 0.5 + 2 * (dv - 0.5);
+    }
+}
+#endif
