@@ -1,13 +1,9 @@
 /* containment.c: the containment started and chosen (--sandbox): bubblewrap's namespaces where they work here, or the fallback. */
 #include "containment.h"
 
-#include <errno.h>
-#include <poll.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-#include <sys/wait.h>
-#include <time.h>
 #include <unistd.h>
 
 #include "cgroup.h"
@@ -29,35 +25,28 @@ static bool find_on_path(const char *name, char *path, size_t size)
     return false;
 }
 
-/* Runs argv as spawn_start does (a student's with view) for at most a minute; puts what it
- * printed, its first bytes, in said, or how it ended when it did not exit 0; tells whether it
- * exited 0. */
+/* Tells that a run is never asked to stop early. */
+static bool never(void)
+{
+    return false;
+}
+
+/* Runs argv as spawn_run does (a student's with view) for at most a minute; puts the first
+ * line it printed in said, or how it ended when it printed none; tells whether it exited 0. */
 static bool try_run(char *const argv[], const SandboxView *view, char *said, size_t size)
 {
-    int fds[2], status = 0;
-    Spawn s;
-    said[0] = '\0';
-    if (pipe(fds) != 0 || !spawn_start(&s, argv, NULL, fds[1], 60, 0, view)) {
-        snprintf(said, size, "not started: %s", strerror(errno));
-        return false;
-    }
-    close(fds[1]);
-    size_t n = 0;
-    ssize_t got = 1;
-    for (time_t end = time(NULL) + 60; got > 0 && n + 1 < size && time(NULL) < end;) {
-        if (poll(&(struct pollfd){.fd = fds[0], .events = POLLIN}, 1, 1000) > 0 &&
-            (got = read(fds[0], said + n, size - 1 - n)) > 0)
-            n += (size_t)got;
-    }
-    said[n] = '\0';
-    close(fds[0]);
-    bool ran = spawn_end(&s, got != 0, &status);
-    bool ok = ran && WIFEXITED(status) && WEXITSTATUS(status) == 0;
-    if (!ok && (n == 0 || strspn(said, " \t\r\n") == n))
-        snprintf(said, size, ran && WIFEXITED(status) ? "exit status %d" : "killed by signal %d",
-                 WIFEXITED(status) ? WEXITSTATUS(status) : WTERMSIG(status));
-    said[strcspn(said, "\r\n")] = '\0';
-    return ok;
+    RunResult r = spawn_run(argv, NULL, 60, 0, view, never);
+    const char *line = r.output + strspn(r.output, " \t\r\n");
+    if (r.ok || line[0] != '\0')
+        snprintf(said, size, "%.*s", (int)strcspn(line, "\r\n"), line);
+    else if (r.end == RUN_NOT_RUN)
+        snprintf(said, size, "not started: %s", strerror(r.status));
+    else
+        snprintf(said, size, r.end == RUN_EXITED   ? "exit status %d"
+                             : r.end == RUN_KILLED ? "killed by signal %d"
+                                                   : "still running after 60 s (%d)",
+                 r.status);
+    return r.ok;
 }
 
 /* Starts the containment: a cgroup v2 of the program's where it may make one, and with run_as

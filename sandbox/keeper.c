@@ -58,10 +58,10 @@ static int keeper_share(User u, const char *path)
 }
 
 /* In a slot's keeper: runs what request q asks for (the words of text: the folder, then
- * argv; its output to out, its answer to the pipe reply) as user u in a cgroup of its own, under the limits, until it ends
- * or another request comes (a kill, taken; a run or the socket's end, left for the next
- * read); then ends every process of u (the cgroup at once, then user_sweep) and answers.
- * False when some would not end. */
+ * argv; its output to out, its answer to the pipe reply) as user u in a cgroup of its own,
+ * under the limits, until it ends or another request comes (a kill, taken; a run or the
+ * socket's end, left for the next read); then ends every process of u (the cgroup at once,
+ * then user_sweep) and answers. False when some would not end. */
 static bool keeper_run(int socket, User u, const Request *q, char *text, size_t len, int out,
                        int reply)
 {
@@ -87,8 +87,9 @@ static bool keeper_run(int socket, User u, const Request *q, char *text, size_t 
     while (pidfd >= 0 && poll(wait_for, 2, -1) < 0 && errno == EINTR)
         continue;
     Request next;
-    if (wait_for[0].revents != 0 && recv(socket, &next, sizeof next, MSG_PEEK | MSG_DONTWAIT) ==
-                                        (ssize_t)sizeof next && next.ask == ASK_KILL)
+    if (wait_for[0].revents != 0 &&
+        recv(socket, &next, sizeof next, MSG_PEEK | MSG_DONTWAIT) == (ssize_t)sizeof next &&
+        next.ask == ASK_KILL)
         recv(socket, &next, sizeof next, 0);
     cgroup_run_kill(g);
     bool ended = user_sweep(u);

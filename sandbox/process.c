@@ -3,7 +3,6 @@
 #include "process.h"
 
 #include <dirent.h>
-#include <signal.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <sys/syscall.h>
@@ -11,7 +10,7 @@
 
 /* Lists every process into *list (of *room, grown as it needs); returns how many. Those of
  * the user `of` keep a pidfd opened before their parent and user were read, so that a pid
- * freed and taken by another process in between is never signalled (process_forget closes
+ * freed and taken by another process in between is never signalled (the caller closes
  * them); the others have none. */
 size_t process_list(Process **list, size_t *room, uid_t of)
 {
@@ -49,21 +48,4 @@ size_t process_list(Process **list, size_t *room, uid_t of)
     if (d != NULL)
         closedir(d);
     return n;
-}
-
-/* Sends signal sig to process p, through its pidfd where it has one, else by its pid. */
-void process_signal(const Process *p, int sig)
-{
-    if (p->pidfd >= 0)
-        syscall(SYS_pidfd_send_signal, p->pidfd, sig, NULL, 0);
-    else
-        kill(p->pid, sig);
-}
-
-/* Closes the pidfds of the `count` processes of list. */
-void process_forget(Process *list, size_t count)
-{
-    for (size_t k = 0; k < count; k++)
-        if (list[k].pidfd >= 0)
-            close(list[k].pidfd);
 }

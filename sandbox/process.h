@@ -16,7 +16,5 @@ typedef struct {
 } Process;
 
 size_t process_list(Process **list, size_t *room, uid_t of);
-void process_signal(const Process *p, int sig);
-void process_forget(Process *list, size_t count);
 
 #endif

@@ -11,12 +11,23 @@
 #include <string.h>
 #include <sys/wait.h>
 #include <time.h>
+#include <sys/types.h>
 #include <unistd.h>
 
 #include "capture.h"
+#include "cgroup.h"
 #include "child.h"
 #include "contain.h"
 #include "reap.h"
+
+/* A child on its way: what it execs, and how its end is known. */
+typedef struct {
+    char **argv;     /* what it execs: the program's words, or bubblewrap's around them */
+    bool wrapped;    /* in bubblewrap, which tells a signal N by exiting with 128 + N */
+    pid_t pid;       /* this process's child, or 0 when the keeper started it (--run-as) */
+    int keeper;      /* the pipe on which the keeper answers, or -1 */
+    RunCgroup group; /* its cgroup v2, where it has one of this process's making */
+} Spawn;
 
 /* Returns the seconds of a clock that no change of the date moves. */
 static double now(void)
@@ -41,7 +52,7 @@ static void wait_for_signal(double seconds)
  * student's, time_limit seconds of CPU on every core; a student's (view not NULL) in the
  * sandbox (sandbox_wrap) and a cgroup of its own where there may be one, through the keeper
  * as the student's user with --run-as (contain.c). False (errno set) when it cannot. */
-bool spawn_start(Spawn *s, char *const argv[], const char *dir, int out, double time_limit,
+static bool spawn_start(Spawn *s, char *const argv[], const char *dir, int out, double time_limit,
                  long long memory_limit, const SandboxView *view)
 {
     bool student = view != NULL, kept = student && contain_users() > 0;
@@ -74,7 +85,7 @@ bool spawn_start(Spawn *s, char *const argv[], const char *dir, int out, double 
 }
 
 /* Tells whether the child, or the run the keeper started, has ended. */
-bool spawn_ended(const Spawn *s)
+static bool spawn_ended(const Spawn *s)
 {
     siginfo_t info = {0};
     /* WNOWAIT leaves the child a zombie: its pid, its group's id, stays reserved. */
@@ -87,7 +98,7 @@ bool spawn_ended(const Spawn *s)
  * through the keeper, which sweeps its user's processes, or as this process's child, its
  * session killed and its strays swept. True with its wait status; false with an errno when
  * the keeper could not start it. */
-bool spawn_end(Spawn *s, bool stop, int *status)
+static bool spawn_end(Spawn *s, bool stop, int *status)
 {
     bool ran = true;
     *status = 0;
