@@ -1,5 +1,5 @@
 # Makefile: builds, tests and demonstrates raytra: the library, every part of the course, and
-# the instructor's wings (compare/, grader/, platforms/, book/).
+# the instructor's wings (compare/, sandbox/, grader/, platforms/, book/).
 #
 #   make             build everything
 #   make test        run every test (unit tests, reference images, docs, layout)
@@ -82,9 +82,9 @@ FUZZ_SECONDS ?= 1800
         check-gradescope check-platforms check-slurm check-contain check-debian11 install uninstall check-help check-install
 
 # Each folder is built by its own Makefile once what it links is built: common/ first, then
-# compare/, the grader, the book's scripts and the parts (each after the parts it USES),
-# side by side under make -j.
-FOLDERS := common compare grader book $(PARTS:%=milestones/%)
+# compare/, the sandbox, the grader (which links both), the book's scripts and the parts (each
+# after the parts it USES), side by side under make -j.
+FOLDERS := common compare sandbox grader book $(PARTS:%=milestones/%)
 .PHONY: deps $(FOLDERS)
 all: $(FOLDERS)
 	@:
@@ -93,7 +93,7 @@ deps:
 $(FOLDERS): deps
 	+@$(SUBMAKE) -C $@
 compare book $(PARTS:%=milestones/%): common
-grader: compare
+grader: compare sandbox
 $(foreach part,$(PARTS),$(eval milestones/$(part): \
     $(addprefix milestones/,$(shell sed -n 's/^USES *:= *//p' milestones/$(part)/Makefile))))
 
@@ -109,6 +109,7 @@ test:
 test-others:
 	+@$(SUBMAKE) -C tests test
 	+@$(SUBMAKE) -C compare test
+	+@$(SUBMAKE) -C sandbox test
 	+@$(SUBMAKE) -C book test
 	+@for part in $(PARTS); do $(SUBMAKE) -C milestones/$$part test || exit 1; done
 	+@$(SUBMAKE) -C book/mistakes
@@ -413,6 +414,7 @@ clean:
 	+@$(SUBMAKE) -C tests clean
 	+@$(SUBMAKE) -C tests/fuzz clean
 	+@$(SUBMAKE) -C compare clean
+	+@$(SUBMAKE) -C sandbox clean
 	+@$(SUBMAKE) -C grader clean
 	+@$(SUBMAKE) -C book clean
 	+@$(SUBMAKE) -C bench clean

@@ -55,6 +55,8 @@ COMMON_DIR := $(TOP)/common
 COMMON_LIB := $(COMMON_DIR)/$(BUILD)/libraytra.a
 COMPARE_DIR := $(TOP)/compare
 GRADER_DIR  := $(TOP)/grader
+SANDBOX_DIR := $(TOP)/sandbox
+SANDBOX_LIB := $(SANDBOX_DIR)/$(BUILD)/libsandbox.a
 BOOK_DIR    := $(TOP)/book
 IMGDIFF     := $(COMPARE_DIR)/$(BUILD)/imgdiff
 

@@ -6,11 +6,9 @@
 #include <time.h>
 #include <unistd.h>
 
+#include "containment.h"
 #include "grade_base.h"
-#include "grade_cgroup.h"
 #include "grade_conf.h"
-#include "grade_contain.h"
-#include "grade_containment.h"
 #include "grade_gradescope.h"
 #include "grade_handin.h"
 #include "grade_jobs.h"
@@ -31,6 +29,7 @@
 #include "grading.h"
 #include "imgdiff.h"
 #include "progress.h"
+#include "sandbox.h"
 #include "stop.h"
 #include "toolopt.h"
 
@@ -205,8 +204,8 @@ int main(int argc, char **argv)
     time_t now = time(NULL);
     strftime(g.started, sizeof g.started, "%Y-%m-%d %H:%M", localtime(&now));
     run_init();
-    cgroup_start();
-    bool ok = contain_start(g.run_as, g.grader_user, g.jobs) && containment_choose(&g) &&
+    sandbox_tell_as("grade");
+    bool ok = (g.sandbox = containment_start(g.run_as, g.grader_user, g.jobs, g.sandbox)) != NULL &&
               part_find_top(&g) && part_find(&g, argv[optind]) && shard_parse(&g) &&
               regrade_parse(&g) &&
               (path_kind(g.submissions) == S_IFDIR ||
@@ -222,7 +221,7 @@ int main(int argc, char **argv)
               (g.shard_n > 0 || g.self || (shard_write(&g) && regrade_finish(&g))) &&
               (g.junit == NULL || junit_export(&g, g.junit)) &&
               (g.gradescope == NULL || gradescope_export(&g, g.gradescope));
-    cgroup_finish();
+    containment_finish();
     if (stop_requested()) {
         grade_fail(g.shard_n > 0 ? "interrupted: the shard's results (shard.txt) were not "
                                    "written: grade the shard again"

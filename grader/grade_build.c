@@ -10,7 +10,7 @@
 #include "grade_base.h"
 #include "grade_path.h"
 #include "grade_run.h"
-#include "grade_sandbox.h"
+#include "sandbox.h"
 
 /* Removes, in the folder it runs in, the build outputs a submission may carry from
  * another machine, which make would take as up to date: folders of builds (pruned,
@@ -33,7 +33,7 @@ static const char remove_outputs[] =
 static char *remove_build_outputs(const char *copy, bool *trouble)
 {
     char *argv[] = {"sh", "-c", (char *)remove_outputs, NULL};
-    RunResult r = run_student(argv, copy, NULL, 600, 0, &(View){{copy, NULL}, NULL, 0});
+    RunResult r = run_student(argv, copy, NULL, 600, 0, &(SandboxView){{copy, NULL}, NULL, 0});
     *trouble = !r.ok || strstr(r.output, "!failed") != NULL;
     size_t n = strlen(r.output);
     while (n > 0 && r.output[n - 1] == '\n')
@@ -58,7 +58,7 @@ static int plant_canary(const char *path, const struct stat *st, int type, struc
             !path_same_bytes(path, r->shipped))
             continue;
         char *cp[] = {"cp", "-f", "--", r->canary, (char *)path, NULL}, *canary[] = {r->canary, NULL};
-        run_student(cp, NULL, NULL, 60, 0, &(View){{planting_in, NULL}, canary, 0});
+        run_student(cp, NULL, NULL, 60, 0, &(SandboxView){{planting_in, NULL}, canary, 0});
         break;
     }
     return 0;
@@ -70,7 +70,7 @@ static int plant_canary(const char *path, const struct stat *st, int type, struc
 static void plant_canaries(const Grading *g, const char *copy)
 {
     char *let[] = {"chmod", "-R", "u+rwX,g+rX", "--", ".", NULL};
-    run_student(let, copy, NULL, 60, 0, &(View){{copy, NULL}, NULL, 0});
+    run_student(let, copy, NULL, 60, 0, &(SandboxView){{copy, NULL}, NULL, 0});
     planting = g;
     planting_in = copy;
     nftw(copy, plant_canary, 16, FTW_PHYS);
@@ -90,9 +90,9 @@ char *build_submission(const Grading *g, Submission *s)
     char *cp[] = {"cp", "-R", "-P", "--", grade_format("%s/.", from), copy, NULL};
     char *make[] = {"make", NULL};
     bool trouble = false;
-    View own = {{copy, NULL}, NULL, g->disk_limit};
+    SandboxView own = {{copy, NULL}, NULL, g->disk_limit};
     struct stat st;
-    RunResult r = run_student(cp, NULL, log, 600, 0, &(View){{copy, NULL}, source, g->disk_limit});
+    RunResult r = run_student(cp, NULL, log, 600, 0, &(SandboxView){{copy, NULL}, source, g->disk_limit});
     if (r.ok) {
         s->removed = remove_build_outputs(copy, &trouble);
         plant_canaries(g, copy);

@@ -11,15 +11,15 @@
 #include <sys/prctl.h>
 #endif
 
+#include "contain.h"
 #include "grade_base.h"
-#include "grade_contain.h"
 #include "grade_eta.h"
-#include "grade_reap.h"
 #include "grade_results.h"
 #include "grade_submission.h"
 #include "grade_verdict.h"
 #include "outfile.h"
 #include "progress.h"
+#include "reap.h"
 #include "stop.h"
 
 /* Exit statuses of a worker: its results written, or a stop asked for. */

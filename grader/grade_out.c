@@ -10,11 +10,11 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
+#include "contain.h"
 #include "grade_base.h"
-#include "grade_contain.h"
 #include "grade_path.h"
 #include "grade_run.h"
-#include "grade_sandbox.h"
+#include "sandbox.h"
 
 /* Returns why the output folder, at `out` (its real path), cannot serve: it is the
  * submissions folder, or inside a submission (which is copied to be built, and would copy
@@ -84,7 +84,7 @@ void out_release(const char *folder)
     char *chmod[] = {"chmod", "-R", "a+rwX", "--", (char *)folder, NULL};
     for (int k = 0; k < users; k++) {
         contain_use_slot(k);
-        run_student(chmod, NULL, NULL, 600, 0, &(View){{folder, NULL}, NULL, 0});
+        run_student(chmod, NULL, NULL, 600, 0, &(SandboxView){{folder, NULL}, NULL, 0});
     }
     contain_use_slot(0);
 }
@@ -150,7 +150,7 @@ bool out_prepare(Grading *g)
     if (g->only == NULL && !make_work(g))
         return false;
     /* With --run-as, the students' users cross both to their folders, whatever the umask. */
-    return !contain_active() ||
+    return contain_users() == 0 ||
            ((stat(real, &st) == 0 && chmod(real, (st.st_mode & 07777) | 0111) == 0 &&
              chmod(g->work, 0711) == 0) ||
             grade_fail("cannot let the students' users cross %s: %s", real, strerror(errno)));

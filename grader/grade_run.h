@@ -2,8 +2,8 @@
 #ifndef RAYTRA_GRADE_RUN_H
 #define RAYTRA_GRADE_RUN_H
 
-#include "grade_sandbox.h"
 #include "grading.h"
+#include "sandbox.h"
 
 /* The memory limit of imgdiff, which reads students' files: none under AddressSanitizer,
  * whose shadow memory no limit leaves room for. */
@@ -17,7 +17,7 @@ void run_init(void);
 RunResult run_program(char *const argv[], const char *dir, const char *log, double time_limit,
                       long long memory_limit);
 RunResult run_student(char *const argv[], const char *dir, const char *log, double time_limit,
-                      long long memory_limit, const View *view);
+                      long long memory_limit, const SandboxView *view);
 char *run_describe(const RunResult *r);
 char *run_command_line(char *const argv[], const char *dir);
 char *run_quote(const char *word);

@@ -12,15 +12,15 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
+#include "contain.h"
 #include "grade_base.h"
 #include "grade_build.h"
 #include "grade_bvh.h"
-#include "grade_contain.h"
 #include "grade_judge.h"
 #include "grade_path.h"
 #include "grade_run.h"
-#include "grade_sandbox.h"
 #include "grade_verdict.h"
+#include "sandbox.h"
 #include "stop.h"
 
 /* Grades render k of a submission of images: finds the image (judge_image_path) and judges it. */
@@ -55,6 +55,61 @@ static void show_hidden(const Grading *g, char **files, mode_t mode)
             chmod(*f, mode);
 }
 
+/* Returns the real path of the regular file at path, or NULL. */
+static char *real_file(const char *path)
+{
+    char real[PATH_MAX];
+    return realpath(path, real) != NULL && path_kind(real) == S_IFREG
+               ? grade_format("%s", real)
+               : NULL;
+}
+
+/* Returns what a render of the scene at `scene` (from the folder run_dir) reads, which its
+ * sandbox shows read-only, NULL-ended: `also` (the program's folder), the scene, and each
+ * mesh it names on a `w` line, found as raytra finds it (docs/scene-format.md): beside the
+ * scene, in each folder above, then in run_dir. A mesh found nowhere is left out: raytra
+ * then says it is missing. */
+static char **scene_files(const char *scene, const char *run_dir, char *also)
+{
+    const char *at = scene[0] == '/' ? scene : grade_format("%s/%s", run_dir, scene);
+    char *real = real_file(at);
+    size_t n = 0, room = 8;
+    char **files = grade_alloc(room * sizeof *files);
+    files[n++] = also;
+    if (real == NULL)
+        return files;
+    files[n++] = real;
+    FILE *f = fopen(real, "r");
+    char line[4096];
+    while (f != NULL && fgets(line, sizeof line, f) != NULL) {
+        char *p = line + strspn(line, " \t");
+        if (p[0] != 'w' || (p[1] != ' ' && p[1] != '\t'))
+            continue;
+        p += 1 + strspn(p + 1, " \t");
+        p[strcspn(p, "\r\n")] = '\0';
+        for (size_t end = strlen(p); end > 0 && (p[end - 1] == ' ' || p[end - 1] == '\t');)
+            p[--end] = '\0';
+        char *dir = grade_format("%s", real), *found = p[0] == '/' ? real_file(p) : NULL;
+        for (char *slash; p[0] != '/' && found == NULL && (slash = strrchr(dir, '/')) != NULL;) {
+            *slash = '\0';
+            found = real_file(grade_format("%s/%s", dir, p));
+        }
+        if (found == NULL && p[0] != '/')
+            found = real_file(grade_format("%s/%s", run_dir, p));
+        if (found != NULL && n + 2 > room) {
+            char **grown = grade_alloc((room *= 2) * sizeof *grown);
+            memcpy(grown, files, n * sizeof *files);
+            files = grown;
+        }
+        if (found != NULL)
+            files[n++] = found;
+    }
+    if (f != NULL)
+        fclose(f);
+    files[n] = NULL;
+    return files;
+}
+
 /* Grades render k of a submission that is a program: runs it on the scene under the
  * limits, in a scratch folder, and judges how it ended and what it wrote. */
 static void run_scene(const Grading *g, Submission *s, int k)
@@ -69,8 +124,8 @@ static void run_scene(const Grading *g, Submission *s, int k)
     r->argv[2] = grade_format("../images/%s", r->image);
     char *dir = grade_format("%s/run", s->work);
     /* The sandbox: the run and images folders to write; the build and the scene to read. */
-    char **files = sandbox_scene_files(r->argv[1], dir, grade_format("%s/build", s->work));
-    View view = {{dir, grade_format("%s/images", s->work), NULL}, files, g->disk_limit};
+    char **files = scene_files(r->argv[1], dir, grade_format("%s/build", s->work));
+    SandboxView view = {{dir, grade_format("%s/images", s->work), NULL}, files, g->disk_limit};
     /* A hidden scene's files are the grader's alone but while they are rendered. */
     show_hidden(g, files, 0644);
     RunResult run = run_student(r->argv, dir, log, g->time_limit, g->memory_limit, &view);
@@ -126,7 +181,7 @@ static const char *make_work(const Submission *s, FILE *f)
     if (trouble == NULL && s->program && s->link == NULL)
         trouble = path_fresh_folder(grade_format("%s/build", s->work), f);
     /* Its users must reach the three: the folder is crossed, not read (whatever the umask). */
-    if (trouble == NULL && contain_active() && chmod(s->work, 0711) != 0)
+    if (trouble == NULL && contain_users() > 0 && chmod(s->work, 0711) != 0)
         trouble = grade_format("cannot open %s to the student's user: %s", s->work,
                                strerror(errno));
     static const char *const shared[] = {"images", "run", "build"};
@@ -201,7 +256,7 @@ bool submission_grade(const Grading *g, Submission *s, FILE *f)
     fprintf(f, " (%s): %s", s->program ? "program" : "images", s->program ? "building... " : "");
     bool graded = grade_one(g, s, trouble, f);
     /* Graded: with --run-as, closed to the students' users, who may be the next one's too. */
-    if (contain_active())
+    if (contain_users() > 0)
         chmod(s->work, 0700);
     return graded;
 }

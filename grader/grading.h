@@ -164,24 +164,5 @@ typedef struct {
                                * in (Gradescope's time), in place of its files'; or NULL */
 } Grading;
 
-/* How a child ended: status is the exit status (RUN_EXITED), the signal (RUN_KILLED) or the
- * errno (RUN_NOT_RUN: fork or pipe failed); ok when it exited with status 0; output what it
- * printed, its head and tail when it printed more than the grader keeps (never NULL; it lasts
- * until the next run_program). */
-typedef enum {
-    RUN_EXITED, RUN_KILLED, RUN_TIMED_OUT, RUN_NOT_RUN, RUN_INTERRUPTED,
-    RUN_OVER_DISK /* a student's run stopped: it wrote past its disk limit, or filled the disk */
-} RunEnd;
-
-typedef struct {
-    RunEnd end;
-    int status;
-    double seconds;
-    bool ok;
-    char *output;
-} RunResult;
-
-/* The exit status of a child that could not exec its program (as the shell's). */
-#define RUN_EXEC_FAILED 127
 
 #endif

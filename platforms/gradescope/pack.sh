@@ -6,12 +6,12 @@
 #   ZIP   the file to write; default out/gradescope-<part>.zip at the top
 #
 # The zip holds what the grader needs to build and run on a fresh machine, from the files
-# git tracks: common/, the files of compare/ and grader/ (not their subfolders), scenes/, the part's
-# references, and of every part its headers and its table of options (*_options.c), which
-# the grader compiles in to know each part's arguments; no part's other sources, so that
-# no model answer lies where a student's program could read it. At the root: setup.sh,
-# run_autograder and gradescope.conf (the part, and the time budget: BUDGET seconds for
-# the whole grading, default 540, and BUILD_TIME_LIMIT, default 120).
+# git tracks: common/, the files of compare/, sandbox/ and grader/ (not their subfolders),
+# scenes/, the part's references, and of every part its headers and its table of options
+# (*_options.c), which the grader compiles in to know each part's arguments; no part's other
+# sources, so that no model answer lies where a student's program could read it. At the
+# root: setup.sh, run_autograder and gradescope.conf (the part, and the time budget: BUDGET
+# seconds for the whole grading, default 540, and BUILD_TIME_LIMIT, default 120).
 # grader/docs/gradescope.md says how to upload it. The zip is written to a temporary and
 # renamed.
 #
@@ -59,7 +59,8 @@ mkdir "$stage/root" || exit 2
 
 # The tracked files the grader needs, copied from the working tree.
 (cd "$top" && git ls-files -- common scenes "milestones/$part/references" 'milestones/*/*.h' \
-    'milestones/*/*_options.c' && git ls-files -- compare grader | grep -E '^(compare|grader)/[^/]*$') >"$stage/files" ||
+    'milestones/*/*_options.c' && git ls-files -- compare sandbox grader |
+    grep -E '^(compare|sandbox|grader)/[^/]*$') >"$stage/files" ||
     die "git ls-files failed"
 while IFS= read -r file; do
     mkdir -p "$stage/root/$(dirname "$file")" && cp -p "$top/$file" "$stage/root/$file" || exit 2

@@ -1,6 +1,6 @@
-/* grade_child.h: a new child made ready to exec. */
-#ifndef RAYTRA_GRADE_CHILD_H
-#define RAYTRA_GRADE_CHILD_H
+/* child.h: a new child made ready to exec. */
+#ifndef RAYTRA_CHILD_H
+#define RAYTRA_CHILD_H
 
 #include <stdbool.h>
 

@@ -1,6 +1,6 @@
-/* grade_user.h: a student's user (--run-as): found, become, its processes counted, limited and swept. */
-#ifndef RAYTRA_GRADE_USER_H
-#define RAYTRA_GRADE_USER_H
+/* user.h: a student's user (--run-as): found, become, its processes counted, limited and swept. */
+#ifndef RAYTRA_USER_H
+#define RAYTRA_USER_H
 
 #include <stdbool.h>
 #include <sys/types.h>
@@ -18,6 +18,6 @@ bool user_find(const char *text, User *u);
 bool user_become(User u);
 int user_processes(uid_t uid, bool end);
 void user_limit_processes(void);
-pid_t user_sweep(User u);
+bool user_sweep(User u);
 
 #endif

@@ -1,15 +1,16 @@
-/* grade_cgroup.c: a cgroup v2 a student's run, where the grader may make them: limits on the whole run, and its end in one write. */
+/* cgroup.c: a cgroup v2 a student's run, where the grader may make them: limits on the whole run, and its end in one write. */
 #define _GNU_SOURCE /* O_DIRECTORY, usleep */
-#include "grade_cgroup.h"
+#include "cgroup.h"
 
 #include <errno.h>
 #include <fcntl.h>
+#include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 #include <sys/stat.h>
 #include <unistd.h>
 
-#include "grading.h"
+#include "sandbox.h"
 
 /* The processes a run may have at once in its cgroup: make, a compiler's few, a program's. */
 #define CGROUP_PROCESSES 256
@@ -124,7 +125,7 @@ RunCgroup cgroup_run_open(long long memory_limit)
 void cgroup_enter(RunCgroup g)
 {
     if (g.dir >= 0 && !put(g.dir, "cgroup.procs", "0"))
-        _exit(RUN_EXEC_FAILED);
+        _exit(SANDBOX_EXEC_FAILED);
 }
 
 /* Kills every process of the run's cgroup g at once, without waiting (cgroup_run_end waits). */

@@ -1,23 +1,20 @@
-/* grade_child.c: a new child made ready to exec: a session, signals, descriptors, environment, limits, folder. */
-#include "grade_child.h"
+/* child.c: a new child made ready to exec: a session, signals, descriptors, environment, limits, folder. */
+#include "child.h"
 
 #include <dirent.h>
 #include <errno.h>
 #include <fcntl.h>
 #include <signal.h>
+#include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 #include <sys/resource.h>
+#include <sys/prctl.h>
 #include <sys/stat.h>
 #include <unistd.h>
-#ifdef __linux__
-#include <sys/prctl.h>
 
-#include "grade_base.h"
-#include "grade_sandbox.h"
-#include "grade_user.h"
-#include "grading.h"
-#endif
+#include "sandbox.h"
+#include "user.h"
 
 /* The largest file a child may write: an image, or whatever else it writes in its folder. */
 #define FILE_LIMIT (1LL << 30)
@@ -26,22 +23,20 @@
  * the signals as they were (those caught go back to their defaults at exec), stdin from
  * /dev/null, stdout and stderr to the pipe `out`, the limits, the folder (NULL: the
  * grader's); a student's build or run also gets the sandbox's clean environment and a limit
- * on CPU time, the time limit on every core; exits with RUN_EXEC_FAILED when it cannot. */
+ * on CPU time, the time limit on every core; exits with SANDBOX_EXEC_FAILED when it cannot. */
 void child_setup(const char *dir, int out, long long memory_limit, double time_limit,
                  bool student)
 {
     setsid();
-#ifdef __linux__
     /* Should the grader itself be killed, the child dies with it rather than run on. */
     prctl(PR_SET_PDEATHSIG, SIGKILL, 0, 0, 0);
-#endif
     signal(SIGPIPE, SIG_DFL);
     sigset_t none;
     sigemptyset(&none);
     sigprocmask(SIG_SETMASK, &none, NULL);
     int in = open("/dev/null", O_RDONLY);
     if (in < 0 || dup2(in, 0) < 0 || dup2(out, 1) < 0 || dup2(out, 2) < 0)
-        _exit(RUN_EXEC_FAILED);
+        _exit(SANDBOX_EXEC_FAILED);
     /* The child keeps neither the grader's files (the pipe's reading end, the output
      * folder's lock) nor the jobserver pipes of a make that runs the grader: every
      * descriptor above stderr is closed. */
@@ -50,7 +45,7 @@ void child_setup(const char *dir, int out, long long memory_limit, double time_l
         if (atoi(e->d_name) > 2 && atoi(e->d_name) != dirfd(fds))
             close(atoi(e->d_name));
     if (fds == NULL || closedir(fds) != 0)
-        _exit(RUN_EXEC_FAILED);
+        _exit(SANDBOX_EXEC_FAILED);
     /* Before the limits, which leave a grader built with AddressSanitizer no room to allocate. */
     if (student)
         sandbox_environment(dir);
@@ -70,14 +65,8 @@ void child_setup(const char *dir, int out, long long memory_limit, double time_l
         umask(027);
         setpriority(PRIO_PROCESS, 0, 10);
     }
-    /* make hands its flags and jobserver to sub-makes through these: a student's make is
-     * not a sub-make of the one that may be running the grader. */
-    static const char *const make_vars[] = {"MAKEFLAGS", "MFLAGS",    "GNUMAKEFLAGS",
-                                            "MAKELEVEL", "MAKEFILES", "MAKEOVERRIDES"};
-    for (size_t k = 0; k < sizeof make_vars / sizeof make_vars[0]; k++)
-        unsetenv(make_vars[k]);
     if (dir != NULL && chdir(dir) != 0) {
-        grade_fail("cannot enter '%s': %s", dir, strerror(errno));
-        _exit(RUN_EXEC_FAILED);
+        sandbox_fail("cannot enter '%s': %s", dir, strerror(errno));
+        _exit(SANDBOX_EXEC_FAILED);
     }
 }

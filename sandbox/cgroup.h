@@ -1,6 +1,6 @@
-/* grade_cgroup.h: a cgroup v2 a student's run, where the grader may make them (grade_cgroup.c). */
-#ifndef GRADE_CGROUP_H
-#define GRADE_CGROUP_H
+/* cgroup.h: a cgroup v2 a student's run, where the grader may make them (cgroup.c). */
+#ifndef RAYTRA_CGROUP_H
+#define RAYTRA_CGROUP_H
 
 #include <stdbool.h>
 

@@ -1,18 +1,19 @@
-/* grade_sandbox.c: a student's build or run in namespaces of its own (bubblewrap), or the fallback's walls. */
+/* sandbox.c: a student's build or run in namespaces of its own (bubblewrap), or the fallback's walls; the sandbox's messages. */
 #define _GNU_SOURCE /* environ */
-#include "grade_sandbox.h"
+#include "sandbox.h"
 
-#include <errno.h>
 #include <ftw.h>
 #include <limits.h>
+#include <stdarg.h>
+#include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 #include <sys/stat.h>
 #include <sys/statvfs.h>
 #include <unistd.h>
 
-#include "grade_base.h"
-#include "grade_path.h"
+/* The program whose messages the sandbox's are: "NAME: what went wrong". */
+static const char *teller = "sandbox";
 
 /* The containment in force: namespaces (bubblewrap found and working) or the fallback. */
 static bool namespaces;
@@ -29,6 +30,31 @@ static const char *const toolchain[] = {"/usr", "/bin", "/sbin", "/lib", "/lib32
 /* The free space below which a student's run is stopped, so that the report can be written. */
 #define DISK_RESERVE (256LL << 20)
 
+/* Makes the sandbox's messages of trouble the program's: "program: what went wrong". */
+void sandbox_tell_as(const char *program)
+{
+    teller = program;
+}
+
+/* Returns the name of the program whose messages the sandbox's are. */
+const char *sandbox_teller(void)
+{
+    return teller;
+}
+
+/* Prints the program's name and a message made as printf makes it; returns false, to end a
+ * chain. */
+bool sandbox_fail(const char *fmt, ...)
+{
+    va_list ap;
+    va_start(ap, fmt);
+    fprintf(stderr, "%s: ", teller);
+    vfprintf(stderr, fmt, ap);
+    fputc('\n', stderr);
+    va_end(ap);
+    return false;
+}
+
 /* Puts students' builds and runs in namespaces of bubblewrap, the program at bwrap_path
  * (closes: it has --disable-userns), or with NULL in the fallback's walls. */
 void sandbox_use(char *bwrap_path, bool closes)
@@ -38,11 +64,17 @@ void sandbox_use(char *bwrap_path, bool closes)
     namespaces = bwrap_path != NULL;
 }
 
+/* Tells whether students' builds and runs are in bubblewrap's namespaces. */
+bool sandbox_namespaces(void)
+{
+    return namespaces;
+}
+
 /* Returns argv, run in folder dir (NULL: /), as the sandbox runs it: inside bubblewrap,
  * which sees view's folders writable, its reads read-only, the toolchain read-only, and
  * nothing else, without capabilities, and as a user of its own when own_user (--run-as);
- * with the fallback, argv itself. */
-char **sandbox_wrap(char *const argv[], const char *dir, const View *view, bool own_user)
+ * with the fallback, argv itself. What it returns otherwise is the caller's to free. */
+char **sandbox_wrap(char *const argv[], const char *dir, const SandboxView *view, bool own_user)
 {
     if (!namespaces)
         return (char **)argv;
@@ -56,7 +88,11 @@ char **sandbox_wrap(char *const argv[], const char *dir, const View *view, bool 
         room += 3;
     for (char *const *a = argv; *a != NULL; a++)
         room++;
-    char **w = grade_alloc(room * sizeof *w);
+    /* The targets of the toolchain's links, read once. */
+    static char targets[sizeof toolchain / sizeof *toolchain][PATH_MAX];
+    char **w = malloc(room * sizeof *w);
+    if (w == NULL)
+        return NULL;
     w[n++] = bwrap;
     for (char *const *o = opening; *o != NULL; o++)
         w[n++] = *o;
@@ -70,10 +106,11 @@ char **sandbox_wrap(char *const argv[], const char *dir, const View *view, bool 
     }
     for (size_t k = 0; k < sizeof toolchain / sizeof *toolchain; k++) {
         const char *p = toolchain[k];
-        char target[4096];
-        ssize_t len = strchr(p + 1, '/') == NULL ? readlink(p, target, sizeof target - 1) : -1;
-        w[n++] = len > 0 ? "--symlink" : "--ro-bind-try";
-        w[n++] = len > 0 ? grade_format("%.*s", (int)len, target) : (char *)p;
+        if (targets[k][0] == '\0' && strchr(p + 1, '/') == NULL &&
+            readlink(p, targets[k], sizeof targets[k] - 1) <= 0)
+            targets[k][0] = '\0';
+        w[n++] = targets[k][0] != '\0' ? "--symlink" : "--ro-bind-try";
+        w[n++] = targets[k][0] != '\0' ? targets[k] : (char *)p;
         w[n++] = (char *)p;
     }
     for (char **r = view->read; r != NULL && *r != NULL; r++) {
@@ -120,7 +157,7 @@ static int count_bytes(const char *path, const struct stat *st, int type, struct
 
 /* Tells whether a student's build or run has written more than view's disk limit into its
  * folders (a million files count as more), or left the disk less than DISK_RESERVE free. */
-bool sandbox_over_disk(const View *view)
+bool sandbox_over_disk(const SandboxView *view)
 {
     struct statvfs fs;
     if (view == NULL || view->write[0] == NULL || view->disk_limit <= 0)
@@ -133,59 +170,4 @@ bool sandbox_over_disk(const View *view)
         if (nftw(view->write[k], count_bytes, 16, FTW_PHYS) > 0)
             return true;
     return counted_bytes > view->disk_limit;
-}
-
-/* Returns the real path of the regular file at path, or NULL. */
-static char *real_file(const char *path)
-{
-    char real[PATH_MAX];
-    return realpath(path, real) != NULL && path_kind(real) == S_IFREG
-               ? grade_format("%s", real)
-               : NULL;
-}
-
-/* Returns what a render of the scene at `scene` (from the folder run_dir) reads, which its
- * sandbox shows read-only, NULL-ended: `also` (the program's folder), the scene, and each
- * mesh it names on a `w` line, found as raytra finds it (docs/scene-format.md): beside the
- * scene, in each folder above, then in run_dir. A mesh found nowhere is left out: raytra
- * then says it is missing. */
-char **sandbox_scene_files(const char *scene, const char *run_dir, char *also)
-{
-    const char *at = scene[0] == '/' ? scene : grade_format("%s/%s", run_dir, scene);
-    char *real = real_file(at);
-    size_t n = 0, room = 8;
-    char **files = grade_alloc(room * sizeof *files);
-    files[n++] = also;
-    if (real == NULL)
-        return files;
-    files[n++] = real;
-    FILE *f = fopen(real, "r");
-    char line[4096];
-    while (f != NULL && fgets(line, sizeof line, f) != NULL) {
-        char *p = line + strspn(line, " \t");
-        if (p[0] != 'w' || (p[1] != ' ' && p[1] != '\t'))
-            continue;
-        p += 1 + strspn(p + 1, " \t");
-        p[strcspn(p, "\r\n")] = '\0';
-        for (size_t end = strlen(p); end > 0 && (p[end - 1] == ' ' || p[end - 1] == '\t');)
-            p[--end] = '\0';
-        char *dir = grade_format("%s", real), *found = p[0] == '/' ? real_file(p) : NULL;
-        for (char *slash; p[0] != '/' && found == NULL && (slash = strrchr(dir, '/')) != NULL;) {
-            *slash = '\0';
-            found = real_file(grade_format("%s/%s", dir, p));
-        }
-        if (found == NULL && p[0] != '/')
-            found = real_file(grade_format("%s/%s", run_dir, p));
-        if (found != NULL && n + 2 > room) {
-            char **grown = grade_alloc((room *= 2) * sizeof *grown);
-            memcpy(grown, files, n * sizeof *files);
-            files = grown;
-        }
-        if (found != NULL)
-            files[n++] = found;
-    }
-    if (f != NULL)
-        fclose(f);
-    files[n] = NULL;
-    return files;
 }

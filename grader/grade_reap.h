@@ -1,9 +1,0 @@
-/* grade_reap.h: ending every process a run left below the grader (a subreaper). */
-#ifndef RAYTRA_GRADE_REAP_H
-#define RAYTRA_GRADE_REAP_H
-
-#include <sys/types.h>
-
-void reap_strays(const pid_t *keep, int keep_count);
-
-#endif
