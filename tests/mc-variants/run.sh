@@ -29,11 +29,11 @@ trap 'exit 130' INT TERM
 # (grader/docs/statistics.md).
 expectations="rv-first:good:pass own-rng:good:pass xorshift:good:pass drand48:good:pass
 transposed:good:pass shift:good:pass multi-jitter:good:pass latin-hypercube:good:pass
-hashed:good:pass random-light:ok:pass random-light:good:noise
+hashed:good:pass random-light:ok:pass random-light:good:noise+biased
 no-cosine:good:biased one-over-s:good:biased flipped:good:biased half-pixel:good:biased
 no-falloff:good:biased bright-2:good:biased bright-1:good:biased light-1pct:good:biased
 light-small:good:biased checker:good:biased
-denoise:good:biased more-samples:good:smooth hard-shadow:good:smooth+biased no-jitter:good:smooth
+denoise:good:biased more-samples:good:smooth hard-shadow:good:smooth+biased no-jitter:good:smooth+biased
 not-stratified:good:untold"
 
 # The statistical references: NAME SCENE OPTIONS..., a line each.
