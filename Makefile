@@ -28,8 +28,8 @@
 #   make check-statistics  part 1.6's grading by statistics: right programs with 2 seeds pass,
 #                    right and wrong solutions pass and fail (tests/mc-variants, a few minutes)
 #   make calibrate-statistics  the statistical grading's false-fail rate over 350 seeds a
-#                    scene and right program, 2,100 renders a scene (MC_COUNT, MC_OUT=DIR
-#                    keeps the verdicts; about an hour on two idle cores)
+#                    scene and right program, 3,150 renders a scene (MC_COUNT, MC_OUT=DIR
+#                    keeps the verdicts; some three hours on two idle cores)
 #   make statistics-figure  draw the z-score heat maps grader/docs/statistics.md shows
 #   make check-bvh-variants  part 1.4's grading: correct BVHs unlike raytra's pass every scene,
 #                    wrong ones fail, saying why (tests/bvh-variants, a few minutes)
@@ -313,7 +313,7 @@ check-diagnosis:
 	exit $$failed
 
 # The false-fail rate of the statistical grading, measured: MC_COUNT seeds (default 350)
-# of each of the six right programs and graded scene, in PNG, PFM and EXR (an hour or so).
+# of each of the nine right programs and graded scene, in PNG, PFM and EXR (hours).
 MC_COUNT ?= 350
 calibrate-statistics:
 	$(DEPS_STEP)

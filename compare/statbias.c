@@ -4,6 +4,8 @@
 #include <math.h>
 #include <stdlib.h>
 
+#include "statt.h"
+
 /* Returns the variance floor of a pixel whose reference value is m: in codes, a uniform
  * rounding error, 1/12 code^2; linear, the rounding of a half-float file (2^-11 relative,
  * doubled for safety), (2^-10 (|m| + 1/64))^2 / 12. */
@@ -14,25 +16,13 @@ double statbias_floor_variance(bool codes, double m)
 }
 
 /* Returns the rounding allowance of a block whose reference mean is m: the systematic
- * difference no test counts, one code (rounding, or a PNG written by truncation), or
- * 2^-10 (1 + |m|) linear. */
+ * difference the file's quantisation may make and no test counts. In codes, half a code:
+ * the references' code values are rounded, and a writer that rounds otherwise (such as
+ * truncation) moves a noisy pixel's mean by half a code; linear, one unit in the last place
+ * of a half float, 2^-10 |m| (an EXR rounded either way; a PFM's floats are closer still). */
 double statbias_allowance(bool codes, double m)
 {
-    return codes ? 1.0 : ldexp(1 + fabs(m), -10);
-}
-
-/* Returns the |z| whose two-sided p-value is p: the normal quantile, by bisection. */
-static double z_of_p(double p)
-{
-    double lo = 0, hi = 40;
-    for (int k = 0; k < 200; k++) {
-        double mid = (lo + hi) / 2;
-        if (erfc(mid / sqrt(2)) > p)
-            lo = mid;
-        else
-            hi = mid;
-    }
-    return (lo + hi) / 2;
+    return codes ? 0.5 : ldexp(fabs(m), -10);
 }
 
 /* Returns Bernstein's bound on the chance that a sum of independent deviations of total
@@ -63,36 +53,37 @@ void statbias_add(BlockTest *t, bool codes, double s, double m, double v, double
 }
 
 /* Completes test t from its sums: the mean difference beyond the rounding allowance over
- * its standard error, and its two-sided p-value; by the normal law, or with bounded
- * Bernstein's inequality over the range of a code value. The variance is the larger of
- * the reference's and the one the image's differences show (n / (n - 1) times their sum
- * of squares about their mean), so that an unbiased image noisier than raytra's (the
- * "ok" standard) is not called biased. */
-void statbias_finish(BlockTest *t, bool codes, bool bounded)
+ * its standard error, and its two-sided p-value. By the "good" standard the variance is
+ * the references' alone (with the floors): the block's own differences never widen it, so
+ * that an error that varies inside the block (an edge moved or blurred) is not taken for
+ * noise. Their variances are estimates of pixel_df degrees of freedom each: the ratio is
+ * Student's t of Satterthwaite's degrees of freedom for their sum, and its p-value the t
+ * law's tail. By the "ok" standard (own), whose random points on the light make noise the
+ * references do not show, the variance is the larger of theirs and the one the image's
+ * differences show (n / (n - 1) times their sum of squares about their mean), of n - 1
+ * degrees of freedom. At P = 1 (bounded), Bernstein's inequality over the range of a code
+ * value. */
+void statbias_finish(BlockTest *t, bool codes, bool bounded, double pixel_df, bool own)
 {
     if (t->n == 0) {
         t->p = 1;
         return;
     }
     t->diff = t->sum_d / t->n;
-    double spread = t->sum_d2 - t->sum_d * t->diff;
-    double v = t->n > 1 ? fmax(t->sum_v, spread * t->n / (t->n - 1)) : t->sum_v;
+    /* Satterthwaite: the sum of the variances, of which the floors are known, has
+     * pixel_df (sum v)^2 / sum v_i^2 degrees of freedom. */
+    double v = t->sum_v, df = t->noise2 > 0 ? pixel_df * v * v / t->noise2 : INFINITY;
+    double spread = t->n > 1 ? (t->sum_d2 - t->sum_d * t->diff) * t->n / (t->n - 1) : 0;
+    if (own && spread > v)
+        v = spread, df = t->n - 1;
     t->se = sqrt(v) / t->n;
     double excess = fmax(0, fabs(t->diff) - statbias_allowance(codes, t->sum_m / t->n));
     if (bounded) {
         double tail = excess * t->n;
         t->p = fmin(1, bernstein(tail, v, t->up) + bernstein(tail, v, t->down));
-        t->z = copysign(t->p < 1 ? z_of_p(t->p) : 0, t->diff);
-    } else {
-        t->z = t->se > 0 ? excess / t->se : 0;
-        /* With the image's own variance the ratio is Student's t of n - 1 degrees of
-         * freedom: its normal equivalent, by Bailey's approximation. */
-        double df = t->n - 1;
-        if (v > t->sum_v && df >= 2)
-            t->z = t->z * (1 - 1 / (4 * df)) / sqrt(1 + t->z * t->z / (2 * df));
-        t->z = copysign(t->z, t->diff);
-        t->p = erfc(fabs(t->z) / sqrt(2));
-    }
+    } else
+        t->p = t->se > 0 ? statt_two_sided(excess / t->se, df) : 1;
+    t->z = copysign(t->p < 1 ? statt_normal_z(t->p) : 0, t->diff);
 }
 
 /* Rejects the biased among the count tests of order (which it sorts by p-value) at the
@@ -112,5 +103,5 @@ int statbias_holm(BlockTest **order, int count)
  * alpha / count, as a z-score. */
 double statbias_critical(int count)
 {
-    return z_of_p(STATDIFF_ALPHA / count);
+    return statt_normal_z(STATDIFF_ALPHA / count);
 }

@@ -29,7 +29,7 @@ typedef struct {
 double statbias_floor_variance(bool codes, double m);
 double statbias_allowance(bool codes, double m);
 void statbias_add(BlockTest *t, bool codes, double s, double m, double v, double q);
-void statbias_finish(BlockTest *t, bool codes, bool bounded);
+void statbias_finish(BlockTest *t, bool codes, bool bounded, double pixel_df, bool own);
 int statbias_holm(BlockTest **order, int count);
 double statbias_critical(int count);
 

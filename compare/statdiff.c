@@ -116,9 +116,9 @@ static void print_figures(const StatDiff *d, const McRef *ref, const Image *img,
                d->nx * d->ny, STATDIFF_BLOCK, STATDIFF_BLOCK, d->count + 3, STATDIFF_ALPHA,
                d->z_critical,
                d->bounded ? "p-values by Bernstein's bound on the codes' range"
-                          : "p-values by the normal law");
+                          : "p-values by Student's t law, as normal z-scores");
         printf("    largest |z|: %.2f at %s, %c: mean difference %+.3g %s (standard "
-               "error %.3g; %.3g allowed for rounding); %d tests fail\n",
+               "error %.3g; %.3g allowed for quantisation); %d tests fail\n",
                fabs(w->z), where, "RGB"[w->c], w -> diff, d -> codes ? "codes" : "", w->se,
                statbias_allowance(d->codes, w->n > 0 ? w->sum_m / w->n : 0), d->rejected);
         printf("noise test: the residual's RMS is %.2f times the expected one over the noisy "

@@ -10,7 +10,7 @@
  * noise says, such as more samples than asked, a denoiser or the mean image), and at
  * most the standard's bound over the image and in any one square (calibrated,
  * docs/grading.md). */
-#define STATDIFF_NOISE_LOW 0.75
+#define STATDIFF_NOISE_LOW 0.65
 #define STATDIFF_GOOD_IMAGE 1.6
 #define STATDIFF_GOOD_BLOCK 3.5
 #define STATDIFF_OK_IMAGE 3.0

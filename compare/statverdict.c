@@ -66,6 +66,14 @@ bool statverdict_decide(const StatDiff *d, const McRef *ref, int width, int heig
                  "%g); the worst, %s, %c: %s by %.3g %s, z = %.1f",
                  d->rejected, d->count + 3, STATDIFF_ALPHA, where, "RGB"[w->c],
                  w -> diff > 0 ? "brighter" : "darker", fabs(w->diff), unit, w->z);
+        /* The references' variance is the standard's: an image noisier than it allows,
+         * biased or not, differs beyond chance; say so, for an unbiased one. */
+        size_t used = strlen(text);
+        if (n != NULL && d->noise.ratio > most_image && used < size)
+            snprintf(text + used, size - used,
+                     "; the image is also %.2f times as noisy as raytra's, more than the \"%s\" "
+                     "standard allows (%.2f), and an unbiased render that noisy fails here too",
+                     d->noise.ratio, statstandard_name(d->standard), most_image);
     } else if (d->deep > 0 || d->fringe >= d->fringe_limit) {
         strcpy(test, "exact");
         if (d->deep > 0)

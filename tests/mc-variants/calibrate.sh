@@ -7,7 +7,9 @@
 # from 100000 on (the references were made from 1000 to 1063), with each correct
 # program: raytra's part 1.6 and part 1.6 with its random numbers from xorshift64* and
 # from drand48, with the strata counted column by column, with the light's strata
-# correlated by a random cyclic shift (all judged by the "good" standard), and with
+# correlated by a random cyclic shift, with multi-jittered and with Latin hypercube
+# points in the pixel, and with every number a hash of a counter (all judged by the
+# "good" standard), and with
 # random points on the light (judged by the "ok" standard); judges each render as the
 # PNG, the PFM and the EXR the program would write (VARIANTS/mcjudge; raytra's also as a
 # PNG written by truncation, which a student's writer may do), and prints the
@@ -41,6 +43,9 @@ xorshift $variants/raytra-xorshift good
 drand48 $variants/raytra-drand48 good
 transposed $variants/raytra-transposed good
 shift $variants/raytra-shift good
+multi-jitter $variants/raytra-multi-jitter good
+latin-hypercube $variants/raytra-latin-hypercube good
+hashed $variants/raytra-hashed good
 random-light $variants/raytra-random-light ok
 PROGRAMS
 sed -n 's/^~\([^[:space:]]*\)\.[a-z]*[[:space:]]/\1 /p' "$refdir/renders.txt" |

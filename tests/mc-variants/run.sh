@@ -29,10 +29,12 @@ trap 'exit 130' INT TERM
 # (grader/docs/statistics.md). same-offsets and wide-filter are also known mistakes of the
 # part, which the grader names when an image resembles theirs (grader/docs/diagnosis.md).
 expectations="rv-first:good:pass own-rng:good:pass xorshift:good:pass drand48:good:pass
-transposed:good:pass shift:good:pass random-light:ok:pass random-light:good:noise
+transposed:good:pass shift:good:pass multi-jitter:good:pass latin-hypercube:good:pass
+hashed:good:pass random-light:ok:pass random-light:good:noise+biased
 no-cosine:good:biased one-over-s:good:biased flipped:good:biased half-pixel:good:biased
-no-falloff:good:biased bright-2:good:biased bright-1:good:biased checker:good:biased
-denoise:good:biased more-samples:good:smooth hard-shadow:good:smooth+biased no-jitter:good:smooth
+no-falloff:good:biased bright-2:good:biased bright-1:good:biased light-1pct:good:biased
+light-small:good:biased checker:good:biased
+denoise:good:biased more-samples:good:smooth hard-shadow:good:smooth+biased no-jitter:good:smooth+biased
 not-stratified:good:untold same-offsets:good:biased wide-filter:good:biased"
 
 # The statistical references: NAME SCENE OPTIONS..., a line each.

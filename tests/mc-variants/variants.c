@@ -336,3 +336,88 @@ void montecarlo_point(const MonteCarlo *mc, Rng *rng, int i, int j, int k, doubl
     }
 }
 #endif
+
+#if defined VARIANT_multi_jitter || defined VARIANT_latin_hypercube
+/* Fills perm with a permutation of 0 to n - 1 of pixel (i, j)'s own, the number-th of
+ * its kind: the same for every ray of the pixel, which shares it. */
+static void pixel_permutation(const MonteCarlo *mc, int i, int j, int number, int *perm, int n)
+{
+    uint64_t key =
+        rng_hash(mc->seed ^ 0x6d756c74696a6974u) ^ ((uint64_t)(uint32_t)j << 32 | (uint32_t)i);
+    Rng rng = rng_make(rng_hash(key), (uint64_t)number + 1);
+    strata_shuffle(&rng, perm, n);
+}
+#endif
+
+#ifdef VARIANT_multi_jitter
+/* Right: multi-jittered points (Chiu, Shirley and Wang 1994): one in each of the P x P
+ * sub-squares, and one in each of the P^2 columns and rows of width 1/P^2 (n-rooks):
+ * sub-square (a, b) takes fine column a P + sigma_a(b) and fine row b P + tau_b(a),
+ * sigma_a and tau_b the pixel's own permutations. Less noisy than jitter, unbiased. */
+void montecarlo_point(const MonteCarlo *mc, Rng *rng, int i, int j, int k, double *x, double *y)
+{
+    int n = mc->pixel_side, a = k % n, b = k / n;
+    *x = i + 0.5;
+    *y = j + 0.5;
+    if (n == 1)
+        return;
+    int sigma[MONTECARLO_MAX_SIDE], tau[MONTECARLO_MAX_SIDE];
+    pixel_permutation(mc, i, j, a, sigma, n);
+    pixel_permutation(mc, i, j, n + b, tau, n);
+    *x = i + (a + (sigma[b] + rng_uniform(rng)) / n) / n;
+    *y = j + (b + (tau[a] + rng_uniform(rng)) / n) / n;
+}
+#endif
+
+#ifdef VARIANT_latin_hypercube
+/* Right: Latin hypercube points in the pixel: ray k in fine row k of P^2 and in fine
+ * column pi(k), pi the pixel's own permutation (n-rooks, without the sub-squares).
+ * Each point uniform over the pixel: unbiased. */
+void montecarlo_point(const MonteCarlo *mc, Rng *rng, int i, int j, int k, double *x, double *y)
+{
+    int n = mc->pixel_side * mc->pixel_side;
+    *x = i + 0.5;
+    *y = j + 0.5;
+    if (n == 1)
+        return;
+    int pi[MONTECARLO_MAX_SIDE * MONTECARLO_MAX_SIDE];
+    pixel_permutation(mc, i, j, 0, pi, n);
+    *x = i + (pi[k] + rng_uniform(rng)) / n;
+    *y = j + (k + rng_uniform(rng)) / n;
+}
+#endif
+
+#ifdef VARIANT_hashed
+#include "rng.h"
+double __wrap_rng_uniform(Rng *rng);
+
+/* Right: every random number a hash of the sample's stream and a counter (SplitMix64's
+ * finaliser, a counter-based generator), not the steps of a generator's state. */
+double __wrap_rng_uniform(Rng *rng)
+{
+    uint64_t z = rng->inc ^ (rng->state += 0x9e3779b97f4a7c15u);
+    z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9u;
+    z = (z ^ (z >> 27)) * 0x94d049bb133111ebu;
+    z ^= z >> 31;
+    return (double)(z >> 11) / 9007199254740992.0;
+}
+#endif
+
+#if defined VARIANT_light_1pct || defined VARIANT_light_small
+Incident __real_area_incident(const Light *light, Vec3 at, Vec3 point, int count, bool falls_off);
+Incident __wrap_area_incident(const Light *light, Vec3 at, Vec3 point, int count, bool falls_off);
+
+/* Wrong: the area light 1 % too bright (its colour 1.01 times the scene's); or, for the
+ * light's size, its square 0.9 of its side (the points on it drawn from the smaller
+ * square about its centre: a penumbra a tenth narrower, as bright in all). */
+Incident __wrap_area_incident(const Light *light, Vec3 at, Vec3 point, int count, bool falls_off)
+{
+    Light changed = *light;
+#ifdef VARIANT_light_1pct
+    changed.color = color_scale(light->color, 1.01);
+#else
+    at = vec3_add(light->position, vec3_scale(vec3_sub(at, light->position), 0.9));
+#endif
+    return __real_area_incident(&changed, at, point, count, falls_off);
+}
+#endif
