@@ -146,11 +146,11 @@ else
     fail "grading in shards failed: $(cat shards.log)"
 fi
 
-# Without a due date nothing is late, and no time is looked for.
+# Without a due date nothing is late, and no time is looked for (here 4 points a scene).
 printf '* 4\ndemo 4\n' >no-due.conf
 "$grade" -q --grading-conf no-due.conf --time-limit 10 --out no-due 1.1 class >/dev/null 2>&1
 check "without a due date, a row counts lateness: $(sed -n 3p no-due/gradebook.csv)" \
-    test "$(sed -n 3p no-due/gradebook.csv)" = 'bob,,,bob,,16.00,20.00,80.00,,,0,0.00,16.00,copy'
+    test "$(sed -n 3p no-due/gradebook.csv)" = 'bob,,,bob,,24.00,28.00,85.71,,,0,0.00,24.00,copy'
 check "without a due date, the summary has columns of lateness" \
     sh -c '! grep -q "Days late" no-due/report.html'
 
