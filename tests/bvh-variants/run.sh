@@ -40,7 +40,8 @@ no-swap:demo-mode-1:pixels_differ no-swap:torus-mode-1:pixels_differ
 no-swap:demo-mode-2:draws_boxes_wrong
 unpadded:torus-mode-1:pixels_differ
 two-corners:demo:differ two-corners:demo-mode-1:differ two-corners:demo-mode-0:differ
-two-corners:torus:differ two-corners:torus-mode-1:differ two-corners:torus-mode-0:differ"
+two-corners:torus:differ two-corners:torus-mode-1:differ two-corners:torus-mode-0:differ
+two-corners:chain:differ"
 
 mkdir "$tmp/class"
 for program in "$variants"/raytra-*; do
