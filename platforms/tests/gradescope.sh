@@ -284,17 +284,17 @@ sh "$root/source/setup.sh" --build-only >"$tmp/setup.log" 2>&1 || { tail "$tmp/s
 # Gradescope's specification says (a test not shown yet hides it; a "hidden" scene that
 # counts brings a note shown once the grades are published, which does); no advice names
 # a scene file the student does not have.
-summary7="Part 1.3-shadows-mirror: 7 of 7 scenes shown here pass: 26.92 of 26.92 points. \
+summary9="Part 1.3-shadows-mirror: 9 of 9 scenes shown here pass: 30 of 30 points. \
 Gradescope shows your total score later."
 check_unshown() {
-    check "controls: the summary does not speak of the 7 visible scenes alone: $(field .output)" \
-        test "$(field ".output | startswith(\"$summary7\n\")")" = true
+    check "controls: the summary does not speak of the 9 visible scenes alone: $(field .output)" \
+        test "$(field ".output | startswith(\"$summary9\n\")")" = true
     check "controls: the summary names a test that is not visible, or its scene file" \
         test "$(field '. as $r | [$r.tests[] | select(.visibility != "visible" and has("score")) |
             .name | capture("^(?<n>[^ ]+) \\((?<f>.*)\\)$") | [.n, .f][] as $word |
             $r.output | contains($word)] | any')" = false
     check "controls: the summary counts the tests not visible, or all" \
-        test "$(field '.output | test("\\b(3|10) (of|scenes)|of (3|10)\\b|\\b50\\b")')" = false
+        test "$(field '.output | test("\\b(3|12) (of|scenes)|of (3|12)\\b|\\b50\\b")')" = false
     check "controls: a test that counts is not visible, yet none hides the total as the spec says" \
         test "$(field '([.tests[] | select(.visibility != "visible" and .max_score > 0)] |
             length == 0) or ([.tests[].visibility | select(. == "after_due_date" or
@@ -310,12 +310,12 @@ check_unshown() {
 }
 autograde "$correct"
 check "controls: the score is not 50" test "$(field .score)" = 50
-check "controls: not 10 tests and a note" test "$(field '.tests | length')" = 11
+check "controls: not 12 tests and a note" test "$(field '.tests | length')" = 13
 check "controls: the points are not 1 a scene, demo 2, own-shadow 1, own-demo 3, scaled to 50" \
-    test "$(field '[.tests[] | select(has("max_score")) | .max_score * 13 / 50 | round]')" = \
-    '[1,1,1,1,1,1,1,2,1,3]'
+    test "$(field '[.tests[] | select(has("max_score")) | .max_score * 15 / 50 | round]')" = \
+    '[1,1,1,1,1,1,1,1,1,2,1,3]'
 check "controls: the visibilities" test "$(field '[.tests[].visibility]')" = \
-    '["visible","visible","visible","visible","visible","visible","visible","after_published","after_due_date","hidden","after_published"]'
+    '["visible","visible","visible","visible","visible","visible","visible","visible","visible","after_published","after_due_date","hidden","after_published"]'
 check_unshown
 if [ "$(id -u)" -eq 0 ]; then
     check "controls: the student's uid can read a hidden reference" sh -c '! setpriv \
@@ -338,8 +338,8 @@ printf 'raytra: raytra.sh\n\tcp raytra.sh raytra\n\tchmod +x raytra\n' >"$tmp/co
 autograde "$tmp/copier"
 check "controls: the copier passes a hidden scene" test "$(field '[.tests[] |
     select(.status == "failed") | .name | sub(" .*"; "")]')" = '["own-shadow","own-demo"]'
-check "controls: the copier's score is not 9 of 13, scaled to 50" \
-    test "$(field '.score * 13 / 50 | round')" = 9
+check "controls: the copier's score is not 11 of 15, scaled to 50" \
+    test "$(field '.score * 15 / 50 | round')" = 11
 check "controls: the copier's hidden scenes do not fail as ERROR" test "$(field '[.tests[] |
     select(.name | startswith("own-")) | .output | startswith("ERROR: ")] | all')" = true
 check_unshown
