@@ -177,11 +177,12 @@ copy_sources() { # FOLDER MODE
 }
 
 : >"$tmp/todo.txt"
-mkdir -p "$tmp/compare" "$tmp/grader" "$tmp/book" "$tmp/tests" "$tmp/scenes" || exit 2
+mkdir -p "$tmp/compare" "$tmp/grader" "$tmp/sandbox" "$tmp/book" "$tmp/tests" "$tmp/scenes" || exit 2
 copy_sources common solution
 cp "$top/common"/*.mk "$top/common/Makefile" "$top/common/deps.sh" "$tmp/common/" &&
     cp "$top/compare"/*.c "$top/compare"/*.h "$top/compare/Makefile" "$tmp/compare/" &&
     cp "$top/grader"/*.c "$top/grader"/*.h "$top/grader"/*.css "$top/grader/Makefile" "$tmp/grader/" &&
+    cp "$top/sandbox"/*.c "$top/sandbox"/*.h "$top/sandbox/Makefile" "$tmp/sandbox/" &&
     cp "$top/book/docsnip.sh" "$top/book/starter-check.sh" "$tmp/book/" &&
     cp "$top/tests/testing.h" "$top/tests/regress.sh" "$tmp/tests/" || exit 2
 # The parts only write images: without OpenEXR's library (exr_rgba.c), the starter's
