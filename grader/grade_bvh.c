@@ -23,7 +23,8 @@ void bvh_judge(SceneResult *res, const char *output)
         line = p;
     int n, nodes, leaves, empty, depth, most = SAH_MAX_DEPTH;
     if (res->verdict != VERDICT_PASS || line == NULL ||
-        sscanf(line, "BVH of %d primitives: %d interior nodes, %d leaves (%d empty), depth %d",
+        /* at most 9 digits a number: a student's output, never read past an int */
+        sscanf(line, "BVH of %9d primitives: %9d interior nodes, %9d leaves (%9d empty), depth %9d",
                &n, &nodes, &leaves, &empty, &depth) != 5)
         return;
     for (long halves = 1; halves < n && most < BVH_MAX_DEPTH; halves *= 2)
