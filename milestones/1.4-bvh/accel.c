@@ -70,9 +70,7 @@ static bool box_drawn(const Scene *scene, Box b, int s, Ray r, double tmin, doub
         return false;
     int triangle = s - scene->sphere_count - scene->plane_count;
     bool sphere = s < scene->sphere_count;
-    *hit = (Hit){.t = t,
-                 .point = ray_at(r, t),
-                 .normal = normal,
+    *hit = (Hit){.t = t, .point = ray_at(r, t), .normal = normal,
                  .kind = sphere ? SURFACE_SPHERE : SURFACE_TRIANGLE,
                  .index = sphere ? s : triangle,
                  .material =
@@ -118,12 +116,10 @@ static bool boxes_hit(const Accel *accel, Ray r, double tmin, double tmax, Hit *
 static bool accel_hit(const void *data, Ray r, double tmin, double tmax, Hit *hit)
 {
     const Accel *accel = data;
-    if (accel->mode == ACCEL_BOXED)
-        return boxed_search(accel, r, tmin, tmax, hit, false);
     long tests = 0; /* counted for --view box-tests only (accel_tests) */
-    if (accel->mode == ACCEL_BVH)
-        return bvh_hit(&accel->bvh, r, tmin, tmax, hit, &tests);
-    return boxes_hit(accel, r, tmin, tmax, hit);
+    return accel->mode == ACCEL_BOXED ? boxed_search(accel, r, tmin, tmax, hit, false)
+           : accel->mode == ACCEL_BVH ? bvh_hit(&accel->bvh, r, tmin, tmax, hit, &tests)
+                                      : boxes_hit(accel, r, tmin, tmax, hit);
 }
 
 /* Tells whether anything in accel's mode (data) lies on ray r with tmin < t < tmax: in
@@ -132,11 +128,9 @@ static bool accel_blocked(const void *data, Ray r, double tmin, double tmax)
 {
     const Accel *accel = data;
     Hit hit;
-    if (accel->mode == ACCEL_BOXED)
-        return boxed_search(accel, r, tmin, tmax, &hit, true);
-    if (accel->mode == ACCEL_BVH)
-        return bvh_blocked(&accel->bvh, r, tmin, tmax);
-    return boxes_hit(accel, r, tmin, tmax, &hit);
+    return accel->mode == ACCEL_BOXED ? boxed_search(accel, r, tmin, tmax, &hit, true)
+           : accel->mode == ACCEL_BVH ? bvh_blocked(&accel->bvh, r, tmin, tmax)
+                                      : boxes_hit(accel, r, tmin, tmax, &hit);
 }
 
 /* Returns how many boxes and primitives ray r is tested against to find its closest hit

@@ -2,12 +2,8 @@
 #ifndef RAYTRA_ACCEL_H
 #define RAYTRA_ACCEL_H
 
-#include <stdbool.h>
-
+#include "bvh.h" /* and box.h, scene.h, stdbool.h */
 #include "cli.h"
-#include "box.h"
-#include "bvh.h"
-#include "scene.h"
 #include "surfaces.h"
 
 /* The course's third argument, raytra scene_file output_image [0|1|2|3]. */

@@ -31,8 +31,7 @@ static bool setup(const Scene *scene, const Options *opts, void **ctx)
     return true;
 }
 
-/* Counts the BVH's leaves of no primitive, which the grader reads in the report: of the
- * node_count + 1 leaves of a binary tree, those that no reference of count 1 or more names. */
+/* Counts the BVH's leaves of no primitive (the grader reads them): of node_count + 1, the unnamed. */
 static int empty_leaves(const Bvh *b)
 {
     int named = 0;
